@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Columba builds against, only those that are missing.
+set -euo pipefail
+packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
+          libopenexr-dev libpng-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
+          libbenchmark-dev libfmt-dev libtinyobjloader-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "Installing: ${missing[*]}"
+if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,210 @@
+#include "core/spectrum.h"
+
+#include <stdexcept>
+
+namespace columba {
+
+float visibleWavelengthPdf(float lambda) {
+  if (lambda < kLambdaMin || lambda > kLambdaMax) return 0.0f;
+  return 0.003939804229326285f / sqr(std::cosh(0.0072f * (lambda - 538.0f)));
+}
+
+float sampleVisibleWavelength(float u) {
+  return 538.0f - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
+}
+
+Wavelengths Wavelengths::sampleVisible(float u) {
+  Wavelengths wl;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    float ui = u + float(i) / kSpectrumSamples;
+    if (ui >= 1.0f) ui -= 1.0f;
+    wl.lambda[i] = clampf(sampleVisibleWavelength(ui), kLambdaMin, kLambdaMax);
+    wl.pdf[i] = visibleWavelengthPdf(wl.lambda[i]);
+  }
+  return wl;
+}
+
+Wavelengths Wavelengths::fixed(std::array<float, kSpectrumSamples> l) {
+  Wavelengths wl;
+  wl.lambda = l;
+  wl.pdf.fill(1.0f);
+  return wl;
+}
+
+namespace {
+float piecewiseGaussian(float x, float mu, float sigmaLow, float sigmaHigh) {
+  float t = (x - mu) / (x < mu ? sigmaLow : sigmaHigh);
+  return std::exp(-0.5f * t * t);
+}
+
+// Table of the CMFs at 1 nm steps, used for integrals (fitting, normalisation).
+struct CieTable {
+  static constexpr int kCount = int(kLambdaMax - kLambdaMin) + 1;
+  std::array<Vec3, kCount> xyz;
+  float yIntegral = 0.0f;
+  CieTable() {
+    for (int i = 0; i < kCount; ++i) {
+      xyz[i] = cieXYZ(kLambdaMin + float(i));
+      yIntegral += xyz[i].y;
+    }
+  }
+};
+const CieTable& cieTable() {
+  static const CieTable table;
+  return table;
+}
+
+Vec3 xyzToUnbalancedRGB(const Vec3& c) {
+  return {3.2404542f * c.x - 1.5371385f * c.y - 0.4985314f * c.z,
+          -0.9692660f * c.x + 1.8760108f * c.y + 0.0415560f * c.z,
+          0.0556434f * c.x - 0.2040259f * c.y + 1.0572252f * c.z};
+}
+
+// RGB of the flat spectrum before balancing; dividing by it makes that spectrum grey.
+const Vec3& equalEnergyWhite() {
+  static const Vec3 white = [] {
+    Vec3 xyz(0, 0, 0);
+    for (const Vec3& c : cieTable().xyz) xyz += c;
+    return xyzToUnbalancedRGB(xyz / cieTable().yIntegral);
+  }();
+  return white;
+}
+
+float sigmoid(float x) { return 0.5f + x / (2.0f * std::sqrt(1.0f + x * x)); }
+float normalisedLambda(float lambda) { return (lambda - kLambdaMin) / (kLambdaMax - kLambdaMin); }
+
+Vec3 sigmoidPolynomialRGB(const std::array<double, 3>& c) {
+  Vec3 xyz(0, 0, 0);
+  const CieTable& t = cieTable();
+  for (int i = 0; i < CieTable::kCount; ++i) {
+    double x = normalisedLambda(kLambdaMin + float(i));
+    xyz += t.xyz[i] * sigmoid(float((c[0] * x + c[1]) * x + c[2]));
+  }
+  return xyzToLinearRGB(xyz / t.yIntegral);
+}
+
+// Gauss-Newton fit of the sigmoid polynomial's three coefficients to a target colour.
+std::array<float, 3> fitSigmoidPolynomial(const Vec3& target) {
+  std::array<double, 3> c{0.0, 0.0, 0.0};
+  for (int iter = 0; iter < 60; ++iter) {
+    Vec3 rgb = sigmoidPolynomialRGB(c);
+    Vec3 r = rgb - target;
+    if (length(r) < 1e-5f) break;
+    double J[3][3];
+    for (int j = 0; j < 3; ++j) {
+      std::array<double, 3> cp = c;
+      const double h = 1e-3;
+      cp[j] += h;
+      Vec3 d = (sigmoidPolynomialRGB(cp) - rgb) / float(h);
+      for (int i = 0; i < 3; ++i) J[i][j] = d[i];
+    }
+    // Solve (J^T J + damping) dc = -J^T r.
+    double A[3][3], g[3];
+    for (int a = 0; a < 3; ++a) {
+      g[a] = 0;
+      for (int i = 0; i < 3; ++i) g[a] -= J[i][a] * r[i];
+      for (int b = 0; b < 3; ++b) {
+        A[a][b] = 0;
+        for (int i = 0; i < 3; ++i) A[a][b] += J[i][a] * J[i][b];
+      }
+      A[a][a] += 1e-6 + 1e-3 * A[a][a];
+    }
+    // Cramer's rule on the 3x3 system.
+    auto det3 = [](double M[3][3]) {
+      return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+             M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+    };
+    double d = det3(A);
+    if (d == 0.0) break;
+    for (int j = 0; j < 3; ++j) {
+      double Mj[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) Mj[a][b] = (b == j) ? g[a] : A[a][b];
+      c[j] += std::clamp(det3(Mj) / d, -50.0, 50.0);
+    }
+  }
+  return {float(c[0]), float(c[1]), float(c[2])};
+}
+}  // namespace
+
+Vec3 cieXYZ(float l) {
+  float x = 1.056f * piecewiseGaussian(l, 599.8f, 37.9f, 31.0f) + 0.362f * piecewiseGaussian(l, 442.0f, 16.0f, 26.7f) -
+            0.065f * piecewiseGaussian(l, 501.1f, 20.4f, 26.2f);
+  float y = 0.821f * piecewiseGaussian(l, 568.8f, 46.9f, 40.5f) + 0.286f * piecewiseGaussian(l, 530.9f, 16.3f, 31.1f);
+  float z = 1.217f * piecewiseGaussian(l, 437.0f, 11.8f, 36.0f) + 0.681f * piecewiseGaussian(l, 459.0f, 26.0f, 13.8f);
+  return {x, y, z};
+}
+
+float cieYIntegral() { return cieTable().yIntegral; }
+
+Vec3 xyzToLinearRGB(const Vec3& xyz) {
+  Vec3 rgb = xyzToUnbalancedRGB(xyz);
+  const Vec3& w = equalEnergyWhite();
+  return {rgb.x / w.x, rgb.y / w.y, rgb.z / w.z};
+}
+
+Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
+  Vec3 xyz(0, 0, 0);
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (wl.pdf[i] > 0.0f) xyz += cieXYZ(wl[i]) * (s[i] / wl.pdf[i]);
+  return xyzToLinearRGB(xyz / (kSpectrumSamples * cieYIntegral()));
+}
+
+SpectralDistribution SpectralDistribution::constant(float value) {
+  SpectralDistribution d;
+  d.kind_ = Kind::Constant;
+  d.value_ = value;
+  return d;
+}
+
+SpectralDistribution SpectralDistribution::piecewiseLinear(std::vector<float> lambdas, std::vector<float> values) {
+  if (lambdas.empty() || lambdas.size() != values.size())
+    throw std::invalid_argument("a spectrum needs matching, non-empty wavelength and value lists");
+  for (size_t i = 1; i < lambdas.size(); ++i)
+    if (!(lambdas[i] > lambdas[i - 1])) throw std::invalid_argument("spectrum wavelengths must increase");
+  SpectralDistribution d;
+  d.kind_ = Kind::Piecewise;
+  d.lambdas_ = std::move(lambdas);
+  d.values_ = std::move(values);
+  return d;
+}
+
+SpectralDistribution SpectralDistribution::fromRGB(const Vec3& rgbIn, bool unbounded) {
+  Vec3 rgb = unbounded ? maxv(rgbIn, Vec3(0, 0, 0)) : minv(maxv(rgbIn, Vec3(0, 0, 0)), Vec3(1, 1, 1));
+  if (rgb.x == rgb.y && rgb.y == rgb.z) return constant(rgb.x);
+  float m = std::max(rgb.x, std::max(rgb.y, rgb.z));
+  // Unbounded colours are fitted at half their maximum and scaled back (pbrt-v4's approach).
+  float scale = unbounded ? 2.0f * m : 1.0f;
+  SpectralDistribution d;
+  d.kind_ = Kind::Sigmoid;
+  d.value_ = scale;
+  d.coeffs_ = fitSigmoidPolynomial(rgb / scale);
+  return d;
+}
+
+float SpectralDistribution::eval(float lambda) const {
+  switch (kind_) {
+    case Kind::Constant: return value_;
+    case Kind::Piecewise: {
+      if (lambda <= lambdas_.front()) return values_.front();
+      if (lambda >= lambdas_.back()) return values_.back();
+      size_t i = size_t(std::upper_bound(lambdas_.begin(), lambdas_.end(), lambda) - lambdas_.begin()) - 1;
+      float t = (lambda - lambdas_[i]) / (lambdas_[i + 1] - lambdas_[i]);
+      return lerp(t, values_[i], values_[i + 1]);
+    }
+    case Kind::Sigmoid: {
+      float x = normalisedLambda(lambda);
+      return value_ * sigmoid((coeffs_[0] * x + coeffs_[1]) * x + coeffs_[2]);
+    }
+  }
+  return 0.0f;
+}
+
+float SpectralDistribution::meanValue() const {
+  if (kind_ == Kind::Constant) return value_;
+  double s = 0;
+  for (int i = 0; i < CieTable::kCount; ++i) s += eval(kLambdaMin + float(i));
+  return float(s / CieTable::kCount);
+}
+
+}  // namespace columba

@@ -1,0 +1,25 @@
+#pragma once
+// Sample generators. A sampler is cloned per tile and restarted for every pixel sample, with
+// its state derived only from (pixel, sample index, seed): images do not depend on threads.
+#include <cstdint>
+#include <memory>
+#include "core/object.h"
+#include "core/vector.h"
+
+namespace columba {
+
+class Sampler : public Object {
+ public:
+  explicit Sampler(int sampleCount) : sampleCount_(sampleCount) {}
+  int sampleCount() const { return sampleCount_; }
+  virtual std::unique_ptr<Sampler> clone() const = 0;
+  virtual void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) = 0;
+  // The next dimensions of the current sample, in [0, 1).
+  virtual float get1D() = 0;
+  virtual Vec2 get2D() = 0;
+
+ protected:
+  int sampleCount_;
+};
+
+}  // namespace columba

@@ -1,0 +1,92 @@
+#pragma once
+// Parameters of one plug-in element of a scene file, with the source line of each, and its
+// nested plug-ins. Factories read what they understand; anything left unread is an error.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+#include "core/error.h"
+#include "core/object.h"
+#include "core/spectrum.h"
+#include "core/transform.h"
+
+namespace columba {
+
+// How a spectrum parameter is used: reflectances are clamped to [0, 1] when given as RGB,
+// emission may exceed 1.
+enum class SpectrumUse { Reflectance, Emission, Unbounded };
+
+class Properties {
+ public:
+  // Element tag ("bsdf"), plug-in type ("diffuse"), optional id, and where it was declared.
+  std::string tag, type, id;
+  SourceLocation location;
+
+  bool has(const std::string& name) const;
+  // Typed getters: a missing optional value returns `def`; a missing required value or one of
+  // the wrong type throws InputError naming the file, line and parameter.
+  float getFloat(const std::string& name) const;
+  float getFloat(const std::string& name, float def) const;
+  int getInt(const std::string& name) const;
+  int getInt(const std::string& name, int def) const;
+  bool getBool(const std::string& name, bool def) const;
+  std::string getString(const std::string& name) const;
+  std::string getString(const std::string& name, const std::string& def) const;
+  Vec3 getVector(const std::string& name, const Vec3& def) const;  // <point> or <vector>
+  Transform getTransform(const std::string& name, const Transform& def = Transform()) const;
+  // <float>, <spectrum> or <rgb>.
+  SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
+
+  // Nested plug-ins (and <ref>s) of type T, in document order; each returned one counts as used.
+  template <typename T> std::vector<std::shared_ptr<T>> children() const {
+    std::vector<std::shared_ptr<T>> out;
+    for (const Child& c : children_)
+      if (auto p = std::dynamic_pointer_cast<T>(c.object)) { c.used = true; out.push_back(p); }
+    return out;
+  }
+  // At most one nested plug-in of type T; nullptr if none, InputError if several.
+  template <typename T> std::shared_ptr<T> child() const {
+    auto all = children<T>();
+    if (all.size() > 1) throw InputError(location, "'" + type + "' takes at most one nested " + tag + " of this kind");
+    return all.empty() ? nullptr : all.front();
+  }
+
+  // Where a parameter was declared (the element's own location if unknown).
+  SourceLocation locationOf(const std::string& name) const;
+  // An error pointing at parameter `name`.
+  InputError error(const std::string& name, const std::string& message) const;
+  // Throws for the first parameter or nested plug-in no factory read.
+  void checkAllUsed() const;
+
+  // Filled by the scene loader.
+  enum class ValueKind { Float, Integer, Boolean, String, Vector, Spectrum, Transform };
+  struct Value {
+    ValueKind kind;
+    SourceLocation location;
+    double number = 0;
+    bool boolean = false;
+    std::string text;
+    Vec3 vector;
+    SpectralDistribution spectrum;  // for <spectrum>: given value; for <rgb>: see rgb
+    bool isRGB = false;
+    Vec3 rgb;
+    Transform transform;
+    mutable bool used = false;
+  };
+  struct Child {
+    std::string name;  // the `name` attribute, if any
+    std::shared_ptr<Object> object;
+    SourceLocation location;
+    mutable bool used = false;
+  };
+  // Throws InputError if `name` is already set.
+  void set(const std::string& name, Value value);
+  void addChild(Child child) { children_.push_back(std::move(child)); }
+
+ private:
+  const Value* find(const std::string& name, ValueKind kind, const char* kindName) const;
+  std::map<std::string, Value> values_;
+  std::vector<Child> children_;
+};
+
+}  // namespace columba

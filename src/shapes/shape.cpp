@@ -1,0 +1,29 @@
+#include "shapes/shape.h"
+
+#include <stdexcept>
+
+namespace columba {
+
+namespace {
+// Offset scaled to the position's magnitude, so spawned rays clear float round-off.
+Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& d) {
+  float scale = 2e-5f * std::max(1e-2f, std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z))));
+  Vec3 off = ng * scale;
+  return dot(d, ng) < 0.0f ? p - off : p + off;
+}
+}  // namespace
+
+Ray SurfaceInteraction::spawnRay(const Vec3& d) const { return Ray{offsetOrigin(p, ng, d), d}; }
+
+Ray SurfaceInteraction::spawnRayTo(const Vec3& target) const {
+  Vec3 d = target - p;
+  Ray r{offsetOrigin(p, ng, d), d};
+  r.d = target - r.o;
+  r.tmax = 1.0f - 1e-4f;
+  return r;
+}
+
+float Shape::surfaceArea() const { throw std::logic_error("this shape cannot carry an area emitter"); }
+PositionSample Shape::samplePosition(Vec2) const { throw std::logic_error("this shape cannot carry an area emitter"); }
+
+}  // namespace columba

@@ -1,0 +1,60 @@
+#pragma once
+// The shape interface. Every shape puts its geometry into Embree (triangles, or user
+// geometry with its own exact intersector) and turns Embree's hits into interactions.
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "core/frame.h"
+#include "core/ray.h"
+
+namespace columba {
+
+class Emitter;
+class Shape;
+
+// What Embree reports for a hit, in the shape's own terms (u, v and primID are whatever the
+// shape's geometry wrote; ng is the unnormalised geometric normal in world space).
+struct HitRecord {
+  float t = 0.0f;
+  unsigned primID = 0;
+  float u = 0.0f, v = 0.0f;
+  Vec3 ng;
+};
+
+struct SurfaceInteraction {
+  Vec3 p;             // world position
+  Vec3 ng;            // geometric normal (unit, oriented as the shape defines its front)
+  Frame shading;      // shading frame; shading.n is on the same side as ng
+  Vec2 uv;
+  float t = 0.0f;     // ray distance
+  const Shape* shape = nullptr;
+  BSDFContext bsdfContext;  // per-point BSDF parameters from the geometry
+
+  // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
+  Ray spawnRay(const Vec3& d) const;
+  Ray spawnRayTo(const Vec3& target) const;  // tmax stops just short of `target`
+};
+
+struct PositionSample {
+  Vec3 p, n;
+  float pdfArea = 0.0f;
+};
+
+class Shape : public Object {
+ public:
+  // Adds this shape's geometry to `scene` (committed) and returns its geometry ID.
+  virtual unsigned addToEmbree(RTCDevice device, RTCScene scene) const = 0;
+  virtual SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const = 0;
+  // Area sampling, for shapes that carry an area emitter. Defaults throw InputError-free
+  // std::logic_error: only shapes that support emission override them.
+  virtual float surfaceArea() const;
+  virtual PositionSample samplePosition(Vec2 u) const;
+  // Number of Embree primitives (for statistics).
+  virtual size_t primitiveCount() const = 0;
+
+  std::shared_ptr<BSDF> bsdf;
+  std::shared_ptr<Emitter> emitter;  // area emitter, or null
+};
+
+}  // namespace columba
