@@ -1,0 +1,120 @@
+#include "chi_square.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace columba::testing {
+
+namespace {
+// Series for P(a, x), valid for x < a + 1.
+double gammaPSeries(double a, double x) {
+  double term = 1.0 / a, sum = term;
+  for (int n = 1; n < 10000; ++n) {
+    term *= x / (a + n);
+    sum += term;
+    if (std::abs(term) < std::abs(sum) * 1e-15) break;
+  }
+  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
+}
+
+// Continued fraction for Q(a, x) (modified Lentz), valid for x >= a + 1.
+double gammaQContinuedFraction(double a, double x) {
+  const double tiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 10000; ++i) {
+    double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-15) break;
+  }
+  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
+}
+}  // namespace
+
+double regularizedGammaQ(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  return x < a + 1.0 ? 1.0 - gammaPSeries(a, x) : gammaQContinuedFraction(a, x);
+}
+
+ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected,
+                              double minExpected) {
+  ChiSquareResult result;
+  std::ostringstream log;
+  double pooledObserved = 0, pooledExpected = 0, statistic = 0;
+  int bins = 0, pooled = 0;
+  for (size_t i = 0; i < observed.size(); ++i) {
+    if (expected[i] <= 0.0 && observed[i] > 0.0) {
+      log << "bin " << i << " holds " << observed[i] << " samples where the density is zero";
+      result.message = log.str();
+      result.pValue = 0.0;
+      result.statistic = INFINITY;
+      return result;
+    }
+    if (expected[i] < minExpected) {
+      pooledObserved += observed[i];
+      pooledExpected += expected[i];
+      ++pooled;
+    } else {
+      statistic += sqr(observed[i] - expected[i]) / expected[i];
+      ++bins;
+    }
+  }
+  if (pooledExpected >= minExpected) {
+    statistic += sqr(pooledObserved - pooledExpected) / pooledExpected;
+    ++bins;
+  } else if (pooledObserved > 0) {
+    // Too little mass to test on its own: merge into the statistic conservatively as one bin.
+    statistic += sqr(pooledObserved - pooledExpected) / std::max(pooledExpected, 1.0);
+    ++bins;
+  }
+  result.statistic = statistic;
+  result.degreesOfFreedom = std::max(bins - 1, 1);
+  result.pValue = regularizedGammaQ(0.5 * result.degreesOfFreedom, 0.5 * statistic);
+  log << "chi2 = " << statistic << ", dof = " << result.degreesOfFreedom << " (" << pooled
+      << " sparse bins pooled), p = " << result.pValue;
+  result.message = log.str();
+  return result;
+}
+
+ChiSquareResult chiSquareDirectionTest(const std::function<std::optional<Vec3>(PCG32&)>& sample,
+                                       const std::function<double(const Vec3&)>& pdf, int sampleCount,
+                                       int thetaBins, int phiBins, int quadrature, uint64_t seed) {
+  auto binOf = [&](const Vec3& w) {
+    double z = std::clamp(double(w.z), -1.0, 1.0);
+    // Directions exactly on a bin boundary (e.g. the horizon) count in the upper bin.
+    int ti = std::clamp(int(std::ceil((1.0 - z) * 0.5 * thetaBins)) - 1, 0, thetaBins - 1);
+    double phi = std::atan2(double(w.y), double(w.x));
+    if (phi < 0) phi += 2.0 * M_PI;
+    int pi = std::min(int(phi / (2.0 * M_PI) * phiBins), phiBins - 1);
+    return ti * phiBins + pi;
+  };
+  std::vector<double> observed(size_t(thetaBins) * phiBins, 0.0), expected(observed.size(), 0.0);
+  PCG32 rng(seed, 0x5eed);
+  for (int i = 0; i < sampleCount; ++i)
+    if (auto w = sample(rng); w && isFinite(*w)) observed[binOf(normalize(*w))] += 1.0;
+
+  // Bins are equal-area cells in (z = cos theta, phi): dw = dz dphi.
+  const double dz = 2.0 / thetaBins, dphi = 2.0 * M_PI / phiBins;
+  const double cellArea = dz * dphi / (double(quadrature) * quadrature);
+  for (int ti = 0; ti < thetaBins; ++ti)
+    for (int pi = 0; pi < phiBins; ++pi) {
+      double integral = 0;
+      for (int a = 0; a < quadrature; ++a)
+        for (int b = 0; b < quadrature; ++b) {
+          double z = 1.0 - (ti + (a + 0.5) / quadrature) * dz;
+          double phi = (pi + (b + 0.5) / quadrature) * dphi;
+          double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+          integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+        }
+      expected[size_t(ti) * phiBins + pi] = integral * cellArea * sampleCount;
+    }
+  return chiSquareTest(observed, expected);
+}
+
+}  // namespace columba::testing
