@@ -1,0 +1,42 @@
+#include "render/samplers/multijitter_sampler.h"
+
+#include <cmath>
+#include "render/samplers/hashed_permutation.h"
+#include "render/samplers/sampler_parameters.h"
+
+namespace columba {
+
+void MultijitterSampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
+  state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+}
+
+float MultijitterSampler::get1D() {
+  uint32_t n = uint32_t(sampleCount_);
+  uint32_t stratum = permutationElement(state_.index, n, uint32_t(state_.nextDimensionHash()));
+  return clampToUnitInterval((stratum + double(offset())) / n);
+}
+
+Vec2 MultijitterSampler::get2D() {
+  uint64_t hash = state_.nextDimensionHash(), hash2 = mixBits(hash);
+  uint32_t m = uint32_t(columns_), n = uint32_t(rows_);
+  // Cell (column, row) of the coarse grid; inside it, the sub-column is a permutation of the
+  // row and the sub-row a permutation of the column, shared by all cells ("correlated"), which
+  // puts exactly one sample in each thin stratum along x and along y.
+  uint32_t s = permutationElement(state_.index, m * n, uint32_t(hash));
+  uint32_t column = s % m, row = s / m;
+  uint32_t subColumn = permutationElement(row, n, uint32_t(hash >> 32));
+  uint32_t subRow = permutationElement(column, m, uint32_t(hash2));
+  double dx = offset(), dy = offset();
+  return {clampToUnitInterval((column + (subColumn + dx) / n) / m),
+          clampToUnitInterval((row + (subRow + dy) / m) / n)};
+}
+
+std::shared_ptr<Object> makeMultijitterSampler(const Properties& props) {
+  SamplerParameters p = readSamplerParameters(props);
+  bool jitter = props.getBool("jitter", true);
+  int rows = std::max(1, int(std::sqrt(double(p.sampleCount))));
+  int columns = (p.sampleCount + rows - 1) / rows;
+  return std::make_shared<MultijitterSampler>(columns, rows, jitter, p.seed);
+}
+
+}  // namespace columba

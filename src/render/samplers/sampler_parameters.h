@@ -1,0 +1,23 @@
+#pragma once
+// The parameters every sampler plug-in shares (Mitsuba 3 names and defaults).
+#include <cstdint>
+#include "scene/properties.h"
+
+namespace columba {
+
+struct SamplerParameters {
+  int sampleCount = 4;
+  // Mixed into the seed of every pixel sample, so renders with different seeds are independent.
+  uint64_t seed = 0;
+};
+
+inline SamplerParameters readSamplerParameters(const Properties& props) {
+  SamplerParameters p;
+  p.sampleCount = props.getInt("sample_count", 4);
+  if (p.sampleCount < 1 || p.sampleCount > (1 << 24))
+    throw props.error("sample_count", "must be between 1 and 2^24, got " + std::to_string(p.sampleCount));
+  p.seed = uint64_t(int64_t(props.getInt("seed", 0)));
+  return p;
+}
+
+}  // namespace columba

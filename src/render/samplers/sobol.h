@@ -1,0 +1,46 @@
+#pragma once
+// The first two dimensions of the Sobol sequence, which together form a (0, 2)-sequence in
+// base 2, and hash-based Owen scrambling that keeps that structure.
+#include <cstdint>
+
+namespace columba {
+
+inline uint32_t reverseBits(uint32_t v) {
+  v = (v << 16) | (v >> 16);
+  v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
+  v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
+  v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
+  v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
+  return v;
+}
+
+// Dimension 0: the van der Corput radical inverse, as a 0.32 fixed-point fraction.
+inline uint32_t sobolDimension0(uint32_t index) { return reverseBits(index); }
+
+// Dimension 1: generator columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's
+// triangle mod 2), xor-ed together for the set bits of the index.
+inline uint32_t sobolDimension1(uint32_t index) {
+  uint32_t result = 0;
+  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+    if (index & 1u) result ^= v;
+  return result;
+}
+
+// Nested uniform (Owen) scrambling of a 0.32 fraction (Burley 2020, "Practical Hash-based Owen
+// Scrambling", after Laine and Karras 2011). With the bits reversed, each step below changes a
+// bit only as a function of the bits below it, so after reversing back every digit is flipped
+// depending only on the digits before it: elementary intervals map onto elementary intervals.
+inline uint32_t owenScramble(uint32_t v, uint32_t seed) {
+  v = reverseBits(v);
+  v ^= v * 0x3d20adeau;
+  v += seed;
+  v *= (seed >> 16) | 1u;
+  v ^= v * 0x05526c56u;
+  v ^= v * 0x53a22864u;
+  return reverseBits(v);
+}
+
+// A 0.32 fraction as a float in [0, 1), truncated to the float's 24 bits so it never rounds to 1.
+inline float fractionToFloat(uint32_t v) { return float(v >> 8) * 0x1p-24f; }
+
+}  // namespace columba

@@ -1,0 +1,33 @@
+#include "render/samplers/stratified_sampler.h"
+
+#include "render/samplers/hashed_permutation.h"
+#include "render/samplers/sampler_parameters.h"
+
+namespace columba {
+
+void StratifiedSampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
+  state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+}
+
+float StratifiedSampler::get1D() {
+  uint32_t n = uint32_t(sampleCount_);
+  uint32_t stratum = permutationElement(state_.index, n, uint32_t(state_.nextDimensionHash()));
+  return clampToUnitInterval((stratum + double(offset())) / n);
+}
+
+Vec2 StratifiedSampler::get2D() {
+  uint32_t n = uint32_t(sampleCount_), res = uint32_t(resolution_);
+  uint32_t stratum = permutationElement(state_.index, n, uint32_t(state_.nextDimensionHash()));
+  double dx = offset(), dy = offset();
+  return {clampToUnitInterval((stratum % res + dx) / res), clampToUnitInterval((stratum / res + dy) / res)};
+}
+
+std::shared_ptr<Object> makeStratifiedSampler(const Properties& props) {
+  SamplerParameters p = readSamplerParameters(props);
+  bool jitter = props.getBool("jitter", true);
+  int resolution = 1;
+  while (resolution * resolution < p.sampleCount) ++resolution;
+  return std::make_shared<StratifiedSampler>(resolution, jitter, p.seed);
+}
+
+}  // namespace columba

@@ -1,0 +1,316 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+#include "chi_square.h"
+#include "render/samplers/independent_sampler.h"
+#include "render/samplers/low_discrepancy_sampler.h"
+#include "render/samplers/multijitter_sampler.h"
+#include "render/samplers/stratified_sampler.h"
+#include "scene/properties.h"
+
+using namespace columba;
+
+namespace {
+
+const std::vector<std::string> kAllSamplers = {"independent", "stratified", "ldsampler", "multijitter"};
+const std::vector<std::string> kStratifiedSamplers = {"stratified", "ldsampler", "multijitter"};
+
+Properties::Value integerValue(int v) {
+  Properties::Value value;
+  value.kind = Properties::ValueKind::Integer;
+  value.number = v;
+  return value;
+}
+
+Properties::Value booleanValue(bool b) {
+  Properties::Value value;
+  value.kind = Properties::ValueKind::Boolean;
+  value.boolean = b;
+  return value;
+}
+
+Properties samplerProperties(const std::string& type, int sampleCount) {
+  Properties props;
+  props.tag = "sampler";
+  props.type = type;
+  props.set("sample_count", integerValue(sampleCount));
+  return props;
+}
+
+std::shared_ptr<Object> build(const Properties& props) {
+  static const std::map<std::string, std::shared_ptr<Object> (*)(const Properties&)> factories = {
+      {"independent", makeIndependentSampler},
+      {"stratified", makeStratifiedSampler},
+      {"ldsampler", makeLowDiscrepancySampler},
+      {"multijitter", makeMultijitterSampler}};
+  return factories.at(props.type)(props);
+}
+
+std::unique_ptr<Sampler> makeSampler(const std::string& type, int sampleCount) {
+  auto sampler = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, sampleCount)));
+  EXPECT_TRUE(sampler);
+  EXPECT_EQ(sampler->sampleCount(), sampleCount) << type;
+  return sampler->clone();
+}
+
+// The first `dimensions` values of one pixel sample, drawing 1D and 2D dimensions alternately.
+std::vector<float> drawSample(Sampler& sampler, int px, int py, int index, uint64_t seed, int dimensions) {
+  sampler.startPixelSample(px, py, index, seed);
+  std::vector<float> values;
+  for (int d = 0; d < dimensions; ++d) {
+    if (d % 2 == 0) {
+      values.push_back(sampler.get1D());
+    } else {
+      Vec2 u = sampler.get2D();
+      values.push_back(u.x);
+      values.push_back(u.y);
+    }
+  }
+  return values;
+}
+
+// Whether each of the `count` cells gets exactly one of the points.
+bool oneInEachCell(const std::vector<int>& cells, int count) {
+  std::vector<int> hits(count, 0);
+  for (int c : cells) {
+    if (c < 0 || c >= count) return false;
+    ++hits[c];
+  }
+  for (int h : hits)
+    if (h != 1) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST(SamplerFactories, RoundSampleCountsAsMitsubaDoes) {
+  const std::map<std::string, int> rounded = {{"independent", 5}, {"stratified", 9}, {"ldsampler", 8}, {"multijitter", 6}};
+  for (const auto& [type, expected] : rounded) {
+    auto sampler = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 5)));
+    EXPECT_EQ(sampler->sampleCount(), expected) << type;
+  }
+  for (const std::string& type : kAllSamplers)
+    EXPECT_EQ(std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 16)))->sampleCount(), 16) << type;
+}
+
+TEST(SamplerFactories, ReadTheirParametersAndRejectBadCounts) {
+  for (const std::string& type : kAllSamplers) {
+    Properties props = samplerProperties(type, 16);
+    props.set("seed", integerValue(7));
+    if (type == "stratified" || type == "multijitter") props.set("jitter", booleanValue(false));
+    build(props);
+    EXPECT_NO_THROW(props.checkAllUsed()) << type;
+    EXPECT_THROW(build(samplerProperties(type, 0)), InputError) << type;
+    Properties defaults;
+    defaults.type = type;
+    EXPECT_EQ(std::dynamic_pointer_cast<Sampler>(build(defaults))->sampleCount(), 4) << type;
+  }
+}
+
+TEST(SamplerValues, StayInTheUnitInterval) {
+  for (const std::string& type : kAllSamplers) {
+    auto sampler = makeSampler(type, 16);
+    for (int p = 0; p < 64; ++p)
+      for (int i = 0; i < 32; ++i)  // past sampleCount too
+        for (float v : drawSample(*sampler, p % 8, p / 8, i, 3, 12)) {
+          ASSERT_GE(v, 0.0f) << type;
+          ASSERT_LT(v, 1.0f) << type;
+        }
+  }
+}
+
+TEST(SamplerValues, UnjitteredStrataUseTheirCentres) {
+  for (const char* type : {"stratified", "multijitter"}) {
+    Properties props = samplerProperties(type, 4);
+    props.set("jitter", booleanValue(false));
+    auto sampler = std::dynamic_pointer_cast<Sampler>(build(props));
+    std::set<float> values;
+    for (int i = 0; i < 4; ++i) {
+      sampler->startPixelSample(1, 2, i, 0);
+      values.insert(sampler->get1D());
+    }
+    EXPECT_EQ(values, (std::set<float>{0.125f, 0.375f, 0.625f, 0.875f})) << type;
+  }
+}
+
+TEST(SamplerDeterminism, DependsOnlyOnPixelSampleIndexAndSeed) {
+  for (const std::string& type : kAllSamplers) {
+    auto a = makeSampler(type, 16);
+    auto b = a->clone();
+    // a visits pixels row by row, b in reverse order with its sample indices interleaved.
+    std::map<std::tuple<int, int, int>, std::vector<float>> first;
+    for (int py = 0; py < 4; ++py)
+      for (int px = 0; px < 4; ++px)
+        for (int i = 0; i < 16; ++i) first[{px, py, i}] = drawSample(*a, px, py, i, 42, 8);
+    for (int i = 15; i >= 0; --i)
+      for (int p = 15; p >= 0; --p)
+        EXPECT_EQ(drawSample(*b, p % 4, p / 4, i, 42, 8), (first[{p % 4, p / 4, i}])) << type;
+    // The sequence does change with the pixel, the sample index and the seed.
+    EXPECT_NE(drawSample(*b, 1, 0, 0, 42, 8), (first[{0, 0, 0}])) << type;
+    EXPECT_NE(drawSample(*b, 0, 1, 0, 42, 8), (first[{0, 0, 0}])) << type;
+    EXPECT_NE(drawSample(*b, 0, 0, 1, 42, 8), (first[{0, 0, 0}])) << type;
+    EXPECT_NE(drawSample(*b, 0, 0, 0, 43, 8), (first[{0, 0, 0}])) << type;
+    // Past sampleCount a fresh pattern starts.
+    EXPECT_NE(drawSample(*b, 0, 0, 16, 42, 8), (first[{0, 0, 0}])) << type;
+  }
+}
+
+TEST(SamplerDeterminism, SceneSeedChangesTheSequence) {
+  for (const std::string& type : kAllSamplers) {
+    Properties seeded = samplerProperties(type, 16);
+    seeded.set("seed", integerValue(1));
+    auto a = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 16)));
+    auto b = std::dynamic_pointer_cast<Sampler>(build(seeded));
+    EXPECT_NE(drawSample(*a, 3, 4, 5, 0, 6), drawSample(*b, 3, 4, 5, 0, 6)) << type;
+  }
+}
+
+TEST(SamplerStratification, EveryOneDimensionalStratumGetsOneSample) {
+  for (const std::string& type : kStratifiedSamplers)
+    for (int n : {16, 64}) {
+      auto sampler = makeSampler(type, n);
+      for (int pixel = 0; pixel < 20; ++pixel)
+        for (int round = 0; round < 2; ++round) {
+          // Dimension 0, and a later 1D dimension after a 2D one.
+          std::vector<int> first, later;
+          for (int i = 0; i < n; ++i) {
+            sampler->startPixelSample(pixel, 7, round * n + i, 5);
+            first.push_back(int(sampler->get1D() * n));
+            sampler->get2D();
+            later.push_back(int(sampler->get1D() * n));
+          }
+          EXPECT_TRUE(oneInEachCell(first, n)) << type << " n=" << n << " pixel " << pixel;
+          EXPECT_TRUE(oneInEachCell(later, n)) << type << " n=" << n << " pixel " << pixel;
+        }
+    }
+}
+
+TEST(SamplerStratification, TwoDimensionalGridCellsGetOneSampleEach) {
+  for (const std::string& type : kStratifiedSamplers)
+    for (int n : {16, 64}) {
+      const int res = int(std::lround(std::sqrt(n)));
+      auto sampler = makeSampler(type, n);
+      for (int pixel = 0; pixel < 20; ++pixel) {
+        std::vector<int> cells;
+        for (int i = 0; i < n; ++i) {
+          sampler->startPixelSample(pixel, 1, i, 0);
+          Vec2 u = sampler->get2D();
+          cells.push_back(int(u.y * res) * res + int(u.x * res));
+        }
+        EXPECT_TRUE(oneInEachCell(cells, n)) << type << " n=" << n << " pixel " << pixel;
+      }
+    }
+}
+
+TEST(SamplerStratification, LowDiscrepancyFillsAllElementaryIntervals) {
+  for (int log2n : {4, 6}) {
+    const int n = 1 << log2n;
+    auto sampler = makeSampler("ldsampler", n);
+    for (int pixel = 0; pixel < 20; ++pixel)
+      for (int dimension = 0; dimension < 3; ++dimension) {
+        std::vector<Vec2> points;
+        for (int i = 0; i < n; ++i) {
+          sampler->startPixelSample(pixel, 2, i, 9);
+          for (int d = 0; d < dimension; ++d) sampler->get2D();
+          points.push_back(sampler->get2D());
+        }
+        // Intervals of 2^a x 2^b cells with a + b = log2 n.
+        for (int a = 0; a <= log2n; ++a) {
+          const int nx = 1 << a, ny = n / nx;
+          std::vector<int> cells;
+          for (Vec2 u : points) cells.push_back(int(u.y * ny) * nx + int(u.x * nx));
+          EXPECT_TRUE(oneInEachCell(cells, n)) << nx << " x " << ny << ", pixel " << pixel << ", dim " << dimension;
+        }
+      }
+  }
+}
+
+TEST(SamplerStratification, MultijitterProjectionsAreStratifiedInBothAxes) {
+  const int n = 64;
+  auto sampler = makeSampler("multijitter", n);
+  for (int pixel = 0; pixel < 20; ++pixel) {
+    std::vector<int> xs, ys;
+    for (int i = 0; i < n; ++i) {
+      sampler->startPixelSample(pixel, 3, i, 0);
+      sampler->get1D();
+      Vec2 u = sampler->get2D();
+      xs.push_back(int(u.x * n));
+      ys.push_back(int(u.y * n));
+    }
+    EXPECT_TRUE(oneInEachCell(xs, n)) << "pixel " << pixel;
+    EXPECT_TRUE(oneInEachCell(ys, n)) << "pixel " << pixel;
+  }
+}
+
+TEST(SamplerStratification, DimensionsAreNotCorrelated) {
+  for (const std::string& type : kAllSamplers) {
+    auto sampler = makeSampler(type, 16);
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+    int count = 0;
+    for (int pixel = 0; pixel < 500; ++pixel)
+      for (int i = 0; i < 16; ++i) {
+        sampler->startPixelSample(pixel, 0, i, 0);
+        double x = sampler->get1D(), y = sampler->get1D();
+        sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
+        ++count;
+      }
+    double cov = sxy / count - sx / count * sy / count;
+    double r = cov / std::sqrt((sxx / count - sqr(sx / count)) * (syy / count - sqr(sy / count)));
+    EXPECT_LT(std::abs(r), 0.05) << type;
+  }
+}
+
+TEST(SamplerUniformity, ChiSquareAgainstUniform) {
+  const int bins = 12;  // not aligned with any stratum
+  for (const std::string& type : kAllSamplers) {
+    auto sampler = makeSampler(type, 16);
+    std::vector<double> observed(bins * bins, 0.0);
+    int count = 0;
+    for (int pixel = 0; pixel < 4000; ++pixel)
+      for (int i = 0; i < 16; ++i) {
+        sampler->startPixelSample(pixel % 64, pixel / 64, i, 11);
+        sampler->get1D();
+        Vec2 u = sampler->get2D();
+        observed[int(u.y * bins) * bins + int(u.x * bins)] += 1.0;
+        ++count;
+      }
+    std::vector<double> expected(observed.size(), double(count) / observed.size());
+    auto result = columba::testing::chiSquareTest(observed, expected);
+    EXPECT_GT(result.pValue, 0.01) << type << ": " << result.message;
+  }
+}
+
+TEST(SamplerIntegration, LowDiscrepancyBeatsIndependent) {
+  // A smooth bump whose integral over the unit square is known in closed form.
+  const double a = 4.0, cx = 0.3, cy = 0.6;
+  auto f = [&](Vec2 u) { return std::exp(-a * (sqr(u.x - cx) + sqr(u.y - cy))); };
+  auto axisIntegral = [&](double c) {
+    return 0.5 * std::sqrt(M_PI / a) * (std::erf(std::sqrt(a) * (1.0 - c)) + std::erf(std::sqrt(a) * c));
+  };
+  const double exact = axisIntegral(cx) * axisIntegral(cy);
+  const int n = 256, pixels = 200;
+  std::map<std::string, double> rmsError;
+  for (const std::string& type : kAllSamplers) {
+    auto sampler = makeSampler(type, n);
+    double squaredError = 0;
+    for (int pixel = 0; pixel < pixels; ++pixel) {
+      double sum = 0;
+      for (int i = 0; i < n; ++i) {
+        sampler->startPixelSample(pixel, 0, i, 0);
+        sum += f(sampler->get2D());
+      }
+      squaredError += sqr(sum / n - exact);
+    }
+    rmsError[type] = std::sqrt(squaredError / pixels);
+  }
+  for (const std::string& type : kStratifiedSamplers)
+    EXPECT_LT(rmsError[type], 0.2 * rmsError["independent"]) << type << " " << rmsError[type] << " vs independent "
+                                                            << rmsError["independent"];
+  // Independent sampling itself is unbiased with the expected O(1/sqrt(n)) error.
+  EXPECT_LT(rmsError["independent"], 0.05);
+}
