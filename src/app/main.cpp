@@ -1,1 +1,21 @@
-int main() { return 0; }
+// columba: the command-line front end.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+
+#include "app/render_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Columba: a spectral renderer for iridescent bird feathers"};
+  app.require_subcommand(1);
+  columba::addRenderCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,23 @@
+#pragma once
+// `area`: uniform radiance leaving the front side of a shape.
+#include "emitters/emitter.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class AreaEmitter : public Emitter {
+ public:
+  explicit AreaEmitter(SpectralDistribution radiance) : radiance_(std::move(radiance)) {}
+  std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  float pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const override;
+  Spectrum radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const override;
+  void attachTo(const Shape* shape) override;
+
+ private:
+  SpectralDistribution radiance_;
+  const Shape* shape_ = nullptr;
+};
+
+std::shared_ptr<Object> makeAreaEmitter(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,22 @@
+#pragma once
+// `constant`: the same radiance from every direction at infinity.
+#include "emitters/emitter.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class ConstantEmitter : public Emitter {
+ public:
+  explicit ConstantEmitter(SpectralDistribution radiance) : radiance_(std::move(radiance)) {}
+  std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override { return radiance_.sample(wl); }
+  float pdfDirection(const Vec3& d) const override;
+  bool isInfinite() const override { return true; }
+
+ private:
+  SpectralDistribution radiance_;
+};
+
+std::shared_ptr<Object> makeConstantEmitter(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,38 @@
+#pragma once
+// The emitter interface: light sources sampled from a reference point (next-event estimation)
+// and evaluated where paths hit them.
+#include <optional>
+#include "core/object.h"
+#include "core/spectrum.h"
+#include "shapes/shape.h"
+
+namespace columba {
+
+struct EmitterSample {
+  Vec3 direction;         // unit, from the reference point toward the light
+  float distance = 0.0f;  // to the sampled point; infinity for lights at infinity
+  Spectrum radiance;      // radiance arriving along -direction (not divided by the pdf)
+  float pdf = 0.0f;       // solid-angle density; 1 for delta lights
+};
+
+class Emitter : public Object {
+ public:
+  virtual std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const = 0;
+  // Density of `sample` choosing the direction toward `hit` (a point on this emitter's shape).
+  virtual float pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const { return 0.0f; }
+  // Radiance leaving `hit` (on this emitter's shape) toward `toViewer`.
+  virtual Spectrum radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const {
+    return Spectrum(0.0f);
+  }
+  // Lights at infinity: radiance arriving along a ray that escapes in direction `d`, and the
+  // density of `sample` choosing `d`.
+  virtual Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const { return Spectrum(0.0f); }
+  virtual float pdfDirection(const Vec3& d) const { return 0.0f; }
+
+  virtual bool isDelta() const { return false; }
+  virtual bool isInfinite() const { return false; }
+  // Area emitters learn their shape when the shape is built.
+  virtual void attachTo(const Shape* shape) {}
+};
+
+}  // namespace columba

@@ -1,0 +1,38 @@
+#pragma once
+// `envmap`: radiance at infinity from a latitude-longitude EXR image (Mitsuba's layout: +y up),
+// importance-sampled by pixel luminance.
+#include <array>
+#include "core/distribution.h"
+#include "core/transform.h"
+#include "emitters/emitter.h"
+#include "render/image.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class EnvmapEmitter : public Emitter {
+ public:
+  EnvmapEmitter(Image image, float scale, const Transform& toWorld);
+  std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override;
+  float pdfDirection(const Vec3& d) const override;
+  bool isInfinite() const override { return true; }
+
+ private:
+  Vec2 directionToUV(const Vec3& worldDir) const;
+  Vec3 uvToDirection(Vec2 uv) const;
+  Spectrum lookup(Vec2 uv, const Wavelengths& wl) const;
+
+  Image image_;
+  float scale_;
+  Transform toWorld_;
+  Distribution2D distribution_;
+  // Pixel colours become spectra as combinations of three smooth basis spectra (one per
+  // primary), solved once: per-pixel fitting would be far too slow for large maps.
+  std::array<SpectralDistribution, 3> basis_;
+  std::array<Vec3, 3> rgbToBasis_;  // rows of the inverse of the basis' RGB matrix
+};
+
+std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props);
+
+}  // namespace columba

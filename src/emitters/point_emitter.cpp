@@ -1,0 +1,23 @@
+#include "emitters/point_emitter.h"
+
+namespace columba {
+
+std::optional<EmitterSample> PointEmitter::sample(const Vec3& ref, Vec2, const Wavelengths& wl) const {
+  Vec3 d = position_ - ref;
+  float dist2 = lengthSquared(d);
+  if (dist2 == 0.0f) return std::nullopt;
+  EmitterSample s;
+  s.distance = std::sqrt(dist2);
+  s.direction = d / s.distance;
+  s.radiance = intensity_.sample(wl) / dist2;
+  s.pdf = 1.0f;
+  return s;
+}
+
+std::shared_ptr<Object> makePointEmitter(const Properties& props) {
+  Vec3 position = props.getVector("position", Vec3(0, 0, 0));
+  if (props.has("to_world")) position = props.getTransform("to_world").point(position);
+  return std::make_shared<PointEmitter>(position, props.getSpectrum("intensity", 1.0f, SpectrumUse::Emission));
+}
+
+}  // namespace columba

@@ -1,0 +1,21 @@
+#pragma once
+// `point`: an isotropic point light of radiant intensity `intensity` (W/sr/nm).
+#include "emitters/emitter.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class PointEmitter : public Emitter {
+ public:
+  PointEmitter(Vec3 position, SpectralDistribution intensity) : position_(position), intensity_(std::move(intensity)) {}
+  std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  bool isDelta() const override { return true; }
+
+ private:
+  Vec3 position_;
+  SpectralDistribution intensity_;
+};
+
+std::shared_ptr<Object> makePointEmitter(const Properties& props);
+
+}  // namespace columba

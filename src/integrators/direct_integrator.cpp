@@ -1,0 +1,67 @@
+#include "integrators/direct_integrator.h"
+
+#include "core/sampling.h"
+#include "integrators/direct_light.h"
+
+namespace columba {
+
+namespace {
+constexpr int kMaxPassThroughLayers = 256;
+}  // namespace
+
+Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sampler& sampler, const Wavelengths& wl,
+                                    uint64_t& rays) const {
+  Spectrum L(0.0f), beta(1.0f);
+  Ray ray = cameraRay;
+  const float nE = float(emitterSamples_), nB = float(bsdfSamples_);
+  for (int layer = 0; layer < kMaxPassThroughLayers; ++layer) {
+    ++rays;
+    std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+    Vec3 dir = normalize(ray.d);
+    if (!hideEmitters_) L += beta * emitterSeenAlong(scene, ray.o, dir, hit, wl).radiance;
+    if (!hit) break;
+    const BSDF& bsdf = *hit->shape->bsdf;
+    Vec3 wi = hit->shading.toLocal(-dir);
+
+    for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
+      float uEmitter = sampler.get1D();
+      Vec2 uLight = sampler.get2D();
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, rays)) {
+        float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
+        L += beta * ds->value * (w / nE);
+      }
+    }
+    for (int i = 0; i < bsdfSamples_; ++i) {
+      float uComponent = sampler.get1D();
+      auto bs = bsdf.sample(hit->bsdfContext, wi, wl, uComponent, sampler.get2D());
+      // Pass-through is covered by continuing the camera ray below.
+      if (!bs || bs->passThrough) continue;
+      Vec3 woWorld = hit->shading.toWorld(bs->wo);
+      std::optional<SurfaceInteraction> next;
+      Spectrum tr = scene.traceThrough(hit->spawnRay(woWorld), wl, rays, next);
+      if (tr.isZero()) continue;
+      EmitterHit seen = emitterSeenAlong(scene, hit->p, woWorld, next, wl);
+      if (seen.radiance.isZero()) continue;
+      float w = (bs->delta || emitterSamples_ == 0) ? 1.0f : powerHeuristic(nB * bs->pdf, nE * seen.lightPdf);
+      L += beta * bs->weight * tr * seen.radiance * (w / nB);
+    }
+
+    if (!bsdf.hasPassThrough()) break;
+    beta *= bsdf.passThrough(hit->bsdfContext, wi, wl);
+    if (beta.isZero()) break;
+    ray = hit->spawnRay(dir);
+  }
+  return L;
+}
+
+std::shared_ptr<Object> makeDirectIntegrator(const Properties& props) {
+  int shading = props.getInt("shading_samples", 1);
+  int emitterSamples = props.getInt("emitter_samples", shading), bsdfSamples = props.getInt("bsdf_samples", shading);
+  if (emitterSamples < 0) throw props.error("emitter_samples", "emitter_samples must not be negative");
+  if (bsdfSamples < 0) throw props.error("bsdf_samples", "bsdf_samples must not be negative");
+  // Accepted for compatibility with Mitsuba 2 scenes; Columba renders all samples in one pass.
+  props.getInt("samples_per_pass", -1);
+  return std::make_shared<DirectIntegrator>(emitterSamples, bsdfSamples, props.getBool("hide_emitters", false));
+}
+
+}  // namespace columba

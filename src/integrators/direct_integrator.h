@@ -1,0 +1,24 @@
+#pragma once
+// `direct`: direct illumination only, from `emitter_samples` emitter samples and `bsdf_samples`
+// BSDF samples per hit, combined by MIS when both are used. Camera rays continue through
+// pass-through surfaces with their transmitted weight.
+#include "integrators/integrator.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class DirectIntegrator : public Integrator {
+ public:
+  DirectIntegrator(int emitterSamples, int bsdfSamples, bool hideEmitters)
+      : emitterSamples_(emitterSamples), bsdfSamples_(bsdfSamples), hideEmitters_(hideEmitters) {}
+  Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
+                    uint64_t& rays) const override;
+
+ private:
+  int emitterSamples_, bsdfSamples_;
+  bool hideEmitters_;
+};
+
+std::shared_ptr<Object> makeDirectIntegrator(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,29 @@
+#pragma once
+// Next-event estimation shared by the integrators: one emitter sample from a surface point.
+#include <optional>
+#include "scene/scene.h"
+
+namespace columba {
+
+struct DirectLightSample {
+  Spectrum value;        // f * Le * transmittance / lightPdf, before any MIS weight
+  float lightPdf = 0.0f; // solid-angle density including the emitter choice
+  float bsdfPdf = 0.0f;  // density of BSDF sampling producing the same direction
+  bool deltaLight = false;
+};
+
+// nullopt when nothing was sampled or the contribution is zero (e.g. occluded).
+std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
+                                                   const Vec3& wiLocal, const Wavelengths& wl, float uEmitter,
+                                                   Vec2 uPosition, uint64_t& rays);
+
+// Radiance of the emitters a ray that left `from` sees at `hit` (or at infinity if there is no
+// hit), with the density emitter sampling from `from` would have chosen that direction.
+struct EmitterHit {
+  Spectrum radiance;
+  float lightPdf = 0.0f;
+};
+EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,
+                            const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl);
+
+}  // namespace columba

@@ -1,0 +1,74 @@
+#include "integrators/path_integrator.h"
+
+#include "core/sampling.h"
+#include "integrators/direct_light.h"
+
+namespace columba {
+
+namespace {
+// Bounds the pass-through steps of one path (a ray crossing a whole feather coat).
+constexpr int kMaxPassThroughSteps = 1024;
+}  // namespace
+
+Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sampler& sampler, const Wavelengths& wl,
+                                  uint64_t& rays) const {
+  Spectrum L(0.0f), beta(1.0f);
+  Ray ray = cameraRay;
+  int depth = 0, passThroughSteps = 0;
+  bool deltaBounce = true;  // the camera, like a delta vertex, takes no MIS weight
+  float prevBsdfPdf = 0.0f;
+  Vec3 prevP;
+  while (true) {
+    ++rays;
+    std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+    Vec3 dir = normalize(ray.d);
+    if (!(depth == 0 && hideEmitters_)) {
+      EmitterHit seen = emitterSeenAlong(scene, prevP, dir, hit, wl);
+      if (!seen.radiance.isZero())
+        L += beta * seen.radiance * (deltaBounce ? 1.0f : powerHeuristic(prevBsdfPdf, seen.lightPdf));
+    }
+    if (!hit) break;
+    if (maxDepth_ >= 0 && depth + 1 >= maxDepth_) break;
+
+    const BSDF& bsdf = *hit->shape->bsdf;
+    Vec3 wi = hit->shading.toLocal(-dir);
+    float uEmitter = sampler.get1D();
+    Vec2 uLight = sampler.get2D();
+    if (!bsdf.isDeltaOnly()) {
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, rays))
+        L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
+    }
+
+    float uComponent = sampler.get1D();
+    auto bs = bsdf.sample(hit->bsdfContext, wi, wl, uComponent, sampler.get2D());
+    if (!bs) break;
+    beta *= bs->weight;
+    if (beta.isZero() || !beta.isFinite()) break;
+    Vec3 woWorld = hit->shading.toWorld(bs->wo);
+    ray = hit->spawnRay(woWorld);
+    if (bs->passThrough) {
+      // The ray goes on as if the surface were not there: same MIS state, no bounce.
+      if (++passThroughSteps > kMaxPassThroughSteps) break;
+      continue;
+    }
+    deltaBounce = bs->delta;
+    prevBsdfPdf = bs->pdf;
+    prevP = hit->p;
+    ++depth;
+    if (depth >= rrDepth_) {
+      float q = std::min(beta.maxValue(), 0.95f);
+      if (sampler.get1D() >= q) break;
+      beta /= q;
+    }
+  }
+  return L;
+}
+
+std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
+  int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
+  if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
+  if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
+  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false));
+}
+
+}  // namespace columba

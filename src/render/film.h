@@ -1,0 +1,24 @@
+#pragma once
+// `hdrfilm`: the image size and the reconstruction filter. Pixels are accumulated by the renderer.
+#include <memory>
+#include "render/reconstruction_filter.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class Film : public Object {
+ public:
+  Film(int width, int height, std::shared_ptr<ReconstructionFilter> filter)
+      : width_(width), height_(height), filter_(std::move(filter)) {}
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const ReconstructionFilter& filter() const { return *filter_; }
+
+ private:
+  int width_, height_;
+  std::shared_ptr<ReconstructionFilter> filter_;
+};
+
+std::shared_ptr<Object> makeHDRFilm(const Properties& props);
+
+}  // namespace columba

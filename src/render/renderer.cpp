@@ -1,0 +1,76 @@
+#include "render/renderer.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <memory>
+
+#include "integrators/integrator.h"
+
+namespace columba {
+
+namespace {
+constexpr int kTileSize = 16;
+}  // namespace
+
+Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
+  const Sensor& sensor = scene.sensor();
+  const Film& film = sensor.film();
+  const Integrator& integrator = scene.integrator();
+  const int width = film.width(), height = film.height();
+  const int spp = settings.samplesPerPixel > 0 ? settings.samplesPerPixel : sensor.sampler().sampleCount();
+  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+  const int tileCount = tilesX * tilesY;
+
+  Image image(width, height);
+  std::atomic<uint64_t> rays{0}, samples{0};
+  std::atomic<int> tilesDone{0};
+  std::atomic<bool> cancelled{false};
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (settings.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
+
+  auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
+    std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
+    for (int tile = range.begin(); tile != range.end(); ++tile) {
+      if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
+        cancelled = true;
+        return;
+      }
+      uint64_t tileRays = 0;
+      const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+      for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+        for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+          double sum[3] = {0, 0, 0};
+          for (int s = 0; s < spp; ++s) {
+            sampler->startPixelSample(x, y, s, settings.seed);
+            Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
+            Vec2 offset = film.filter().sample(sampler->get2D());
+            std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
+            if (!ray) continue;
+            Spectrum L = integrator.radiance(scene, *ray, *sampler, wl, tileRays);
+            if (!L.isFinite()) continue;  // a numerical failure must not poison the pixel
+            Vec3 rgb = spectrumToRGB(L, wl);
+            sum[0] += rgb.x;
+            sum[1] += rgb.y;
+            sum[2] += rgb.z;
+          }
+          float* p = image.pixel(x, y);
+          for (int c = 0; c < 3; ++c) p[c] = float(sum[c] / spp);
+        }
+      rays += tileRays;
+      samples += uint64_t(spp) * uint64_t(std::min(kTileSize, width - x0)) * uint64_t(std::min(kTileSize, height - y0));
+      int done = ++tilesDone;
+      if (settings.onTileDone) settings.onTileDone(done, tileCount);
+    }
+  });
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.rays = rays;
+  stats.samples = samples;
+  stats.complete = !cancelled && tilesDone == tileCount;
+  return image;
+}
+
+}  // namespace columba

@@ -1,0 +1,30 @@
+#pragma once
+// Renders a scene's image: tiles in parallel (oneTBB), every pixel's samples drawn from a
+// sampler seeded by (pixel, sample index, seed) only, so the image is bit-identical for any
+// thread count.
+#include <atomic>
+#include <functional>
+#include "render/image.h"
+#include "scene/scene.h"
+
+namespace columba {
+
+struct RenderSettings {
+  int samplesPerPixel = 0;  // 0: the scene sampler's sample_count
+  uint64_t seed = 0;
+  int threads = 0;          // 0: all hardware threads
+  const std::atomic<bool>* cancel = nullptr;  // set to stop early; finished tiles are kept
+  // Called from worker threads as tiles finish (done, total); must be thread-safe.
+  std::function<void(int, int)> onTileDone;
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t samples = 0;
+  uint64_t rays = 0;
+  bool complete = true;  // false when cancelled
+};
+
+Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats);
+
+}  // namespace columba

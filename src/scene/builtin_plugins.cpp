@@ -1,0 +1,68 @@
+// The table of every plug-in Columba ships, by scene element and type name.
+#include "bsdfs/dielectric.h"
+#include "bsdfs/diffuse.h"
+#include "bsdfs/plastic.h"
+#include "bsdfs/roughconductor.h"
+#include "bsdfs/roughplastic.h"
+#include "bsdfs/twosided.h"
+#include "emitters/area_emitter.h"
+#include "emitters/constant_emitter.h"
+#include "emitters/directional_emitter.h"
+#include "emitters/envmap_emitter.h"
+#include "emitters/point_emitter.h"
+#include "integrators/direct_integrator.h"
+#include "integrators/path_integrator.h"
+#include "render/film.h"
+#include "render/filters/box_filter.h"
+#include "render/filters/gaussian_filter.h"
+#include "render/samplers/independent_sampler.h"
+#include "render/samplers/low_discrepancy_sampler.h"
+#include "render/samplers/multijitter_sampler.h"
+#include "render/samplers/stratified_sampler.h"
+#include "scene/plugin_registry.h"
+#include "sensors/bsdf_visualizer_sensor.h"
+#include "sensors/perspective_sensor.h"
+#include "shapes/disk_shape.h"
+#include "shapes/feather_shape.h"
+#include "shapes/sphere_shape.h"
+#include "shapes/triangle_mesh.h"
+
+namespace columba {
+
+const PluginRegistry& PluginRegistry::builtin() {
+  static const PluginRegistry registry = [] {
+    PluginRegistry r;
+    r.add("integrator", "path", makePathIntegrator);
+    r.add("integrator", "direct", makeDirectIntegrator);
+    r.add("sensor", "perspective", makePerspectiveSensor);
+    r.add("sensor", "bsdfvisualizer", makeBSDFVisualizerSensor);
+    r.add("film", "hdrfilm", makeHDRFilm);
+    r.add("rfilter", "box", makeBoxFilter);
+    r.add("rfilter", "gaussian", makeGaussianFilter);
+    r.add("sampler", "independent", makeIndependentSampler);
+    r.add("sampler", "stratified", makeStratifiedSampler);
+    r.add("sampler", "ldsampler", makeLowDiscrepancySampler);
+    r.add("sampler", "multijitter", makeMultijitterSampler);
+    r.add("emitter", "area", makeAreaEmitter);
+    r.add("emitter", "constant", makeConstantEmitter);
+    r.add("emitter", "point", makePointEmitter);
+    r.add("emitter", "directional", makeDirectionalEmitter);
+    r.add("emitter", "envmap", makeEnvmapEmitter);
+    r.add("bsdf", "diffuse", makeDiffuseBSDF);
+    r.add("bsdf", "roughplastic", makeRoughPlasticBSDF);
+    r.add("bsdf", "plastic", makePlasticBSDF);
+    r.add("bsdf", "dielectric", makeDielectricBSDF);
+    r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
+    r.add("bsdf", "twosided", makeTwoSidedBSDF);
+    r.add("shape", "obj", makeObjShape);
+    r.add("shape", "rectangle", makeRectangleShape);
+    r.add("shape", "disk", makeDiskShape);
+    r.add("shape", "sphere", makeSphereShape);
+    r.add("shape", "cube", makeCubeShape);
+    r.add("shape", "feather", makeFeatherShape);
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace columba

@@ -1,0 +1,128 @@
+#include "scene/scene.h"
+
+#include <stdexcept>
+
+#include "integrators/integrator.h"
+#include "scene/plugin_registry.h"
+
+namespace columba {
+
+namespace {
+// A ray can cross at most this many pass-through layers: bounds the work of a shadow ray in a
+// dense feather coat and guarantees termination.
+constexpr int kMaxPassThroughLayers = 256;
+
+void throwOnEmbreeError(RTCDevice device) {
+  RTCError code = rtcGetDeviceError(device);
+  if (code != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene (error " + std::to_string(int(code)) + ")");
+}
+}  // namespace
+
+Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
+  for (const auto& object : parsed.objects) {
+    if (auto shape = std::dynamic_pointer_cast<Shape>(object)) {
+      shapes_.push_back(shape);
+      if (shape->emitter) emitters_.push_back(shape->emitter);
+    } else if (auto emitter = std::dynamic_pointer_cast<Emitter>(object)) {
+      emitters_.push_back(emitter);
+    } else if (auto sensor = std::dynamic_pointer_cast<Sensor>(object)) {
+      if (sensor_) throw InputError(source, "the scene has more than one sensor");
+      sensor_ = sensor;
+    } else if (auto integrator = std::dynamic_pointer_cast<Integrator>(object)) {
+      if (integrator_) throw InputError(source, "the scene has more than one integrator");
+      integrator_ = integrator;
+    } else if (!std::dynamic_pointer_cast<BSDF>(object)) {
+      throw InputError(source, "the scene has a top-level object that is not a shape, emitter, sensor, integrator or bsdf");
+    }
+  }
+  for (const auto& e : emitters_)
+    if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
+  if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>("sensor", "perspective", source);
+  if (!integrator_) integrator_ = makeDefaultPlugin<Integrator>("integrator", "path", source);
+
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw std::runtime_error("cannot create an Embree device");
+  scene_ = rtcNewScene(device_);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  for (size_t i = 0; i < shapes_.size(); ++i) {
+    unsigned id = shapes_[i]->addToEmbree(device_, scene_);
+    if (id != i) throw std::logic_error("Embree geometry IDs are expected in insertion order");
+  }
+  rtcCommitScene(scene_);
+  throwOnEmbreeError(device_);
+}
+
+Scene::~Scene() {
+  if (scene_) rtcReleaseScene(scene_);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
+  rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
+  rh.ray.tnear = ray.tmin;
+  rh.ray.tfar = ray.tmax;
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  HitRecord hit{rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z)};
+  return shapes_[rh.hit.geomID]->interaction(ray, hit);
+}
+
+Spectrum Scene::traceThrough(Ray ray, const Wavelengths& wl, uint64_t& rays,
+                             std::optional<SurfaceInteraction>& blocker) const {
+  Spectrum result(1.0f);
+  blocker.reset();
+  for (int layer = 0; layer < kMaxPassThroughLayers; ++layer) {
+    ++rays;
+    auto hit = intersect(ray);
+    if (!hit) return result;
+    const BSDF& bsdf = *hit->shape->bsdf;
+    if (!bsdf.hasPassThrough() || hit->shape->emitter) {
+      blocker = hit;
+      return result;
+    }
+    Vec3 dir = normalize(ray.d);
+    result *= bsdf.passThrough(hit->bsdfContext, hit->shading.toLocal(-dir), wl);
+    if (result.isZero()) return result;
+    // Continue from just beyond the surface, keeping the same end point.
+    Ray next = hit->spawnRay(dir);
+    if (std::isfinite(ray.tmax)) {
+      Vec3 end = ray.at(ray.tmax);
+      next.d = end - next.o;
+      next.tmax = 1.0f;
+      if (dot(next.d, dir) <= 0.0f) return result;
+    }
+    ray = next;
+  }
+  return Spectrum(0.0f);
+}
+
+Spectrum Scene::transmittance(const Ray& ray, const Wavelengths& wl, uint64_t& rays) const {
+  std::optional<SurfaceInteraction> blocker;
+  Spectrum result = traceThrough(ray, wl, rays, blocker);
+  return blocker ? Spectrum(0.0f) : result;
+}
+
+const Emitter* Scene::sampleEmitter(float u, float* pmf) const {
+  if (emitters_.empty()) return nullptr;
+  size_t i = std::min(size_t(u * float(emitters_.size())), emitters_.size() - 1);
+  *pmf = emitterPmf();
+  return emitters_[i].get();
+}
+
+size_t Scene::primitiveCount() const {
+  size_t n = 0;
+  for (const auto& s : shapes_) n += s->primitiveCount();
+  return n;
+}
+
+}  // namespace columba

@@ -1,0 +1,56 @@
+#pragma once
+// A loaded scene: shapes in an Embree BVH, emitters, the sensor and the integrator.
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+#include "emitters/emitter.h"
+#include "scene/scene_loader.h"
+#include "sensors/sensor.h"
+#include "shapes/shape.h"
+
+namespace columba {
+
+class Integrator;
+
+class Scene {
+ public:
+  // Takes the parsed plug-ins; missing sensor/integrator get Mitsuba's defaults. Throws
+  // InputError for a scene it cannot render (e.g. several sensors).
+  explicit Scene(const ParsedScene& parsed, const SourceLocation& source);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
+  // Follows `ray` through pass-through surfaces (such as the gaps between barbules) up to
+  // ray.tmax: returns the fraction of light that gets through them and, in `blocker`, the first
+  // surface that does not let light pass (none if the ray escapes). Counts the rays it traces.
+  Spectrum traceThrough(Ray ray, const Wavelengths& wl, uint64_t& rays,
+                        std::optional<SurfaceInteraction>& blocker) const;
+  // Fraction of light that travels along `ray`; 0 when an opaque surface is in the way.
+  Spectrum transmittance(const Ray& ray, const Wavelengths& wl, uint64_t& rays) const;
+
+  const std::vector<std::shared_ptr<Emitter>>& emitters() const { return emitters_; }
+  const std::vector<const Emitter*>& infiniteEmitters() const { return infiniteEmitters_; }
+  // Emitter choice for next-event estimation (uniform over emitters).
+  const Emitter* sampleEmitter(float u, float* pmf) const;
+  float emitterPmf() const { return emitters_.empty() ? 0.0f : 1.0f / float(emitters_.size()); }
+
+  const Sensor& sensor() const { return *sensor_; }
+  const Integrator& integrator() const { return *integrator_; }
+  size_t primitiveCount() const;
+  size_t shapeCount() const { return shapes_.size(); }
+
+ private:
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::vector<std::shared_ptr<Shape>> shapes_;  // indexed by Embree geometry ID
+  std::vector<std::shared_ptr<Emitter>> emitters_;
+  std::vector<const Emitter*> infiniteEmitters_;
+  std::shared_ptr<Sensor> sensor_;
+  std::shared_ptr<Integrator> integrator_;
+};
+
+}  // namespace columba

@@ -1,0 +1,29 @@
+#pragma once
+// The sensor interface: camera rays for positions on the film.
+#include <memory>
+#include <optional>
+#include "core/ray.h"
+#include "render/film.h"
+#include "render/sampler.h"
+
+namespace columba {
+
+class Sensor : public Object {
+ public:
+  Sensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler)
+      : film_(std::move(film)), sampler_(std::move(sampler)) {}
+  // `filmPosition` in pixels, (0, 0) the top-left corner of the image. nullopt: no ray (black).
+  virtual std::optional<Ray> generateRay(Vec2 filmPosition) const = 0;
+  const Film& film() const { return *film_; }
+  const Sampler& sampler() const { return *sampler_; }
+
+ private:
+  std::shared_ptr<Film> film_;
+  std::shared_ptr<Sampler> sampler_;
+};
+
+// The nested film and sampler of a sensor element, or the defaults (hdrfilm, independent).
+std::shared_ptr<Film> sensorFilm(const Properties& props);
+std::shared_ptr<Sampler> sensorSampler(const Properties& props);
+
+}  // namespace columba

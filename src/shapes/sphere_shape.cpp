@@ -1,0 +1,61 @@
+#include "shapes/sphere_shape.h"
+
+#include "core/sampling.h"
+#include "shapes/triangle_mesh.h"
+
+namespace columba {
+
+SphereShape::SphereShape(const Transform& toWorld, bool flipNormals) : AnalyticShape(toWorld), flip_(flipNormals) {
+  float radius = length(toWorld_.vector(Vec3(1, 0, 0)));
+  area_ = 4.0f * kPi * radius * radius;
+}
+
+std::optional<float> SphereShape::intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
+  // Solve |o + t d|^2 = 1 in double precision: grazing and distant rays stay accurate.
+  double a = double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
+  double b = 2.0 * (double(o.x) * d.x + double(o.y) * d.y + double(o.z) * d.z);
+  double c = double(o.x) * o.x + double(o.y) * o.y + double(o.z) * o.z - 1.0;
+  double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0 || a == 0.0) return std::nullopt;
+  double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  if (t0 > tmin && t0 < tmax) return float(t0);
+  if (t1 > tmin && t1 < tmax) return float(t1);
+  return std::nullopt;
+}
+
+SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit) const {
+  SurfaceInteraction si;
+  si.t = hit.t;
+  si.shape = this;
+  Vec3 local = normalize(toLocalPoint(ray.at(hit.t)));
+  si.p = toWorldPoint(local);  // re-projected onto the surface
+  si.ng = toWorldNormal(localNormal(local));
+  float phi = std::atan2(local.y, local.x);
+  si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
+  si.shading = Frame::fromNormalTangent(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));
+  return si;
+}
+
+PositionSample SphereShape::samplePosition(Vec2 u) const {
+  Vec3 local = sampleUniformSphere(u);
+  PositionSample ps;
+  ps.p = toWorldPoint(local);
+  ps.n = toWorldNormal(localNormal(local));
+  ps.pdfArea = 1.0f / area_;
+  return ps;
+}
+
+std::shared_ptr<Object> makeSphereShape(const Properties& props) {
+  Vec3 center = props.getVector("center", Vec3(0, 0, 0));
+  float radius = props.getFloat("radius", 1.0f);
+  if (!(radius > 0.0f)) throw props.error("radius", "the radius must be positive");
+  Transform toWorld = props.getTransform("to_world") * Transform::translate(center) *
+                      Transform::scale(Vec3(radius, radius, radius));
+  auto shape = std::make_shared<SphereShape>(toWorld, props.getBool("flip_normals", false));
+  attachMaterial(props, *shape);
+  return shape;
+}
+
+}  // namespace columba

@@ -1,0 +1,26 @@
+#pragma once
+// `sphere`: a sphere of `radius` around `center`, then `to_world`. Area emission assumes the
+// transform scales uniformly (the sphere stays round).
+#include "scene/properties.h"
+#include "shapes/analytic_shape.h"
+
+namespace columba {
+
+class SphereShape : public AnalyticShape {
+ public:
+  SphereShape(const Transform& toWorld, bool flipNormals);
+  std::optional<float> intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
+  Vec3 localNormal(const Vec3& p) const override { return flip_ ? -p : p; }
+  void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, -1); hi = Vec3(1, 1, 1); }
+  SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
+  float surfaceArea() const override { return area_; }
+  PositionSample samplePosition(Vec2 u) const override;
+
+ private:
+  bool flip_;
+  float area_;
+};
+
+std::shared_ptr<Object> makeSphereShape(const Properties& props);
+
+}  // namespace columba

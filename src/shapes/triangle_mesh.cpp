@@ -1,0 +1,169 @@
+#include "shapes/triangle_mesh.h"
+
+#include <tiny_obj_loader.h>
+
+#include "core/sampling.h"
+#include "emitters/emitter.h"
+#include "scene/plugin_registry.h"
+
+namespace columba {
+
+TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals,
+                           const SourceLocation& where)
+    : mesh_(std::move(mesh)), flip_(flipNormals) {
+  if (mesh_.indices.empty() || mesh_.indices.size() % 3 != 0) throw InputError(where, "the mesh has no triangles");
+  for (uint32_t i : mesh_.indices)
+    if (i >= mesh_.positions.size())
+      throw InputError(where, "triangle index " + std::to_string(i) + " is out of range (" +
+                                  std::to_string(mesh_.positions.size()) + " vertices)");
+  for (Vec3& p : mesh_.positions) {
+    p = toWorld.point(p);
+    if (!isFinite(p)) throw InputError(where, "the mesh has a non-finite vertex position");
+  }
+  if (faceNormals) mesh_.normals.clear();
+  for (Vec3& n : mesh_.normals) {
+    n = toWorld.normal(n);
+    float len = length(n);
+    n = len > 0 ? n / len : Vec3(0, 0, 1);
+  }
+  std::vector<float> areas(primitiveCount());
+  for (size_t t = 0; t < areas.size(); ++t) {
+    const Vec3& a = mesh_.positions[mesh_.indices[3 * t]];
+    areas[t] = 0.5f * length(cross(mesh_.positions[mesh_.indices[3 * t + 1]] - a, mesh_.positions[mesh_.indices[3 * t + 2]] - a));
+    area_ += areas[t];
+  }
+  if (area_ > 0.0f) triangleByArea_ = Distribution1D(std::move(areas));
+}
+
+unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh_.positions.data(), 0,
+                             sizeof(Vec3), mesh_.positions.size());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh_.indices.data(), 0,
+                             3 * sizeof(uint32_t), primitiveCount());
+  rtcCommitGeometry(geom);
+  unsigned id = rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  return id;
+}
+
+Vec3 TriangleMesh::faceNormal(size_t tri) const {
+  const Vec3& a = mesh_.positions[mesh_.indices[3 * tri]];
+  Vec3 n = normalize(cross(mesh_.positions[mesh_.indices[3 * tri + 1]] - a, mesh_.positions[mesh_.indices[3 * tri + 2]] - a));
+  return flip_ ? -n : n;
+}
+
+SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hit) const {
+  const uint32_t* idx = &mesh_.indices[3 * size_t(hit.primID)];
+  float b1 = hit.u, b2 = hit.v, b0 = 1.0f - b1 - b2;
+  SurfaceInteraction si;
+  si.t = hit.t;
+  si.shape = this;
+  si.p = mesh_.positions[idx[0]] * b0 + mesh_.positions[idx[1]] * b1 + mesh_.positions[idx[2]] * b2;
+  si.ng = faceNormal(hit.primID);
+  Vec3 ns = si.ng;
+  if (!mesh_.normals.empty()) {
+    ns = normalize(mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2);
+    if (flip_) ns = -ns;
+    if (dot(ns, si.ng) < 0.0f) ns = -ns;
+  }
+  if (!mesh_.uvs.empty()) si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
+  else si.uv = Vec2(b1, b2);
+  // Tangent along the first edge, so anisotropic BSDFs get a stable direction.
+  si.shading = Frame::fromNormalTangent(ns, mesh_.positions[idx[1]] - mesh_.positions[idx[0]]);
+  return si;
+}
+
+PositionSample TriangleMesh::samplePosition(Vec2 u) const {
+  float reuse;
+  size_t tri = triangleByArea_.sampleDiscrete(u.x, &reuse);
+  Vec2 b = sampleUniformTriangle(Vec2(reuse, u.y));
+  const uint32_t* idx = &mesh_.indices[3 * tri];
+  PositionSample ps;
+  ps.p = mesh_.positions[idx[0]] * (1.0f - b.x - b.y) + mesh_.positions[idx[1]] * b.x + mesh_.positions[idx[2]] * b.y;
+  ps.n = faceNormal(tri);
+  ps.pdfArea = 1.0f / area_;
+  return ps;
+}
+
+void attachMaterial(const Properties& props, Shape& shape) {
+  shape.bsdf = props.child<BSDF>();
+  // Mitsuba's default material: a plain diffuse BSDF with its default reflectance.
+  if (!shape.bsdf) shape.bsdf = makeDefaultPlugin<BSDF>("bsdf", "diffuse", props.location);
+  shape.emitter = props.child<Emitter>();
+  if (shape.emitter) {
+    if (!(shape.surfaceArea() > 0.0f)) throw InputError(props.location, "an area emitter needs a shape with positive area");
+    shape.emitter->attachTo(&shape);
+  }
+}
+
+std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld) {
+  auto shape = std::make_shared<TriangleMesh>(std::move(mesh), toWorld, props.getBool("face_normals", false),
+                                              props.getBool("flip_normals", false), props.location);
+  attachMaterial(props, *shape);
+  return shape;
+}
+
+std::shared_ptr<Object> makeRectangleShape(const Properties& props) {
+  MeshData m;
+  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
+}
+
+std::shared_ptr<Object> makeCubeShape(const Properties& props) {
+  MeshData m;
+  // Six faces, four vertices each, wound counter-clockwise seen from outside.
+  for (int axis = 0; axis < 3; ++axis)
+    for (float sign : {-1.0f, 1.0f}) {
+      Vec3 n(0, 0, 0), a(0, 0, 0), b(0, 0, 0);
+      n[axis] = sign;
+      a[(axis + 1) % 3] = 1;
+      b[(axis + 2) % 3] = 1;
+      if (sign < 0) std::swap(a, b);
+      uint32_t base = uint32_t(m.positions.size());
+      for (Vec2 c : {Vec2(-1, -1), Vec2(1, -1), Vec2(1, 1), Vec2(-1, 1)}) {
+        m.positions.push_back(n + a * c.x + b * c.y);
+        m.normals.push_back(n);
+        m.uvs.push_back(Vec2(0.5f * (c.x + 1), 0.5f * (c.y + 1)));
+      }
+      for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+    }
+  return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
+}
+
+std::shared_ptr<Object> makeObjShape(const Properties& props) {
+  std::string path = props.getPath("filename");
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config))
+    throw props.error("filename", "cannot read OBJ file '" + path + "': " + reader.Error());
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  MeshData m;
+  bool useNormals = true, useUVs = true;
+  for (const auto& shape : reader.GetShapes())
+    for (const auto& idx : shape.mesh.indices) {
+      useNormals &= idx.normal_index >= 0;
+      useUVs &= idx.texcoord_index >= 0;
+    }
+  // OBJ indexes positions, normals and uvs separately: emit one vertex per face corner.
+  for (const auto& shape : reader.GetShapes())
+    for (const auto& idx : shape.mesh.indices) {
+      if (idx.vertex_index < 0) throw props.error("filename", "OBJ file '" + path + "' has a face without positions");
+      m.positions.push_back(Vec3(attrib.vertices[3 * idx.vertex_index], attrib.vertices[3 * idx.vertex_index + 1],
+                                 attrib.vertices[3 * idx.vertex_index + 2]));
+      if (useNormals)
+        m.normals.push_back(Vec3(attrib.normals[3 * idx.normal_index], attrib.normals[3 * idx.normal_index + 1],
+                                 attrib.normals[3 * idx.normal_index + 2]));
+      if (useUVs) m.uvs.push_back(Vec2(attrib.texcoords[2 * idx.texcoord_index], attrib.texcoords[2 * idx.texcoord_index + 1]));
+      m.indices.push_back(uint32_t(m.indices.size()));
+    }
+  if (m.indices.empty()) throw props.error("filename", "OBJ file '" + path + "' has no faces");
+  return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
+}
+
+}  // namespace columba

@@ -1,0 +1,46 @@
+#pragma once
+// Triangle meshes in world space (obj, rectangle, cube, ...), intersected by Embree.
+#include <vector>
+#include "core/distribution.h"
+#include "core/transform.h"
+#include "scene/properties.h"
+#include "shapes/shape.h"
+
+namespace columba {
+
+struct MeshData {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // per vertex, or empty
+  std::vector<Vec2> uvs;      // per vertex, or empty
+  std::vector<uint32_t> indices;  // 3 per triangle
+};
+
+class TriangleMesh : public Shape {
+ public:
+  // Transforms `mesh` by `toWorld`; `faceNormals` ignores vertex normals; `flipNormals` turns
+  // the front side around. Throws InputError (at `where`) for degenerate or invalid input.
+  TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals, const SourceLocation& where);
+  unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
+  SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
+  float surfaceArea() const override { return area_; }
+  PositionSample samplePosition(Vec2 u) const override;
+  size_t primitiveCount() const override { return mesh_.indices.size() / 3; }
+
+ private:
+  Vec3 faceNormal(size_t tri) const;
+  MeshData mesh_;
+  bool flip_;
+  float area_ = 0.0f;
+  Distribution1D triangleByArea_;
+};
+
+// Reads `face_normals` and `flip_normals`, attaches the nested BSDF and area emitter.
+std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld);
+// Attaches a shape's nested BSDF (default: diffuse 0.5, as Mitsuba) and area emitter.
+void attachMaterial(const Properties& props, Shape& shape);
+
+std::shared_ptr<Object> makeRectangleShape(const Properties& props);
+std::shared_ptr<Object> makeCubeShape(const Properties& props);
+std::shared_ptr<Object> makeObjShape(const Properties& props);
+
+}  // namespace columba
