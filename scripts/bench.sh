@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Benchmarks: BSDF micro-benchmarks, then fixed scenes rendered with 1 thread and all threads.
+set -euo pipefail
+build=${1:-build}
+root=$(cd "$(dirname "$0")/.." && pwd)
+columba="$build/columba"
+shared="$root/../shared/reference/scenes"
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+if [ -x "$build/columba_bench" ]; then
+  echo "== BSDF micro-benchmarks"
+  "$build/columba_bench" --benchmark_min_time=0.5
+fi
+
+# name | scene | extra arguments
+scenes=(
+  "spheres|$root/bench/scenes/spheres.xml|"
+)
+[ -f "$shared/simulation1.xml" ] && scenes+=("simulation1 (256x256, 64 spp)|$shared/simulation1.xml|-D res=256 -D spp=64")
+for extra in "$root"/bench/scenes/*.sh; do [ -f "$extra" ] && . "$extra"; done
+
+echo "== Scenes (threads: 1 and $(nproc))"
+printf '%-36s %8s %10s %14s %12s\n' scene threads seconds "Msamples/s" "Mrays/s"
+for entry in "${scenes[@]}"; do
+  IFS='|' read -r name scene args <<< "$entry"
+  for threads in 1 "$(nproc)"; do
+    # shellcheck disable=SC2086
+    line=$("$columba" render "$scene" -o "$out/bench.exr" --threads "$threads" $args 2>/dev/null | tail -1)
+    secs=$(sed -E 's/.*: ([0-9.]+) s,.*/\1/' <<< "$line")
+    sps=$(sed -E 's/.* ([0-9.]+) M samples\/s.*/\1/' <<< "$line")
+    rps=$(sed -E 's/.* ([0-9.]+) M rays\/s.*/\1/' <<< "$line")
+    printf '%-36s %8s %10s %14s %12s\n' "$name" "$threads" "$secs" "$sps" "$rps"
+  done
+done
