@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of one plug-in element of a scene file, with the source line of each, and its
 // nested plug-ins. Factories read what they understand; anything left unread is an error.
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <string>
@@ -21,6 +22,8 @@ class Properties {
   // Element tag ("bsdf"), plug-in type ("diffuse"), optional id, and where it was declared.
   std::string tag, type, id;
   SourceLocation location;
+  // Directory of the declaring scene file; relative paths resolve against it.
+  std::string baseDir;
 
   bool has(const std::string& name) const;
   // Typed getters: a missing optional value returns `def`; a missing required value or one of
@@ -34,6 +37,9 @@ class Properties {
   std::string getString(const std::string& name, const std::string& def) const;
   Vec3 getVector(const std::string& name, const Vec3& def) const;  // <point> or <vector>
   Transform getTransform(const std::string& name, const Transform& def = Transform()) const;
+  // A file path resolved against the directory of the scene file that declared it; throws
+  // InputError (file, line, value) if the file does not exist.
+  std::string getPath(const std::string& name) const;
   // <float>, <spectrum> or <rgb>.
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
 
@@ -77,6 +83,7 @@ class Properties {
     std::string name;  // the `name` attribute, if any
     std::shared_ptr<Object> object;
     SourceLocation location;
+    std::string tag, type;  // of the nested element (or of the referenced one), for messages
     mutable bool used = false;
   };
   // Throws InputError if `name` is already set.
@@ -84,7 +91,11 @@ class Properties {
   void addChild(Child child) { children_.push_back(std::move(child)); }
 
  private:
-  const Value* find(const std::string& name, ValueKind kind, const char* kindName) const;
+  // The value of `name` (marked used), nullptr if absent; InputError if its kind is not one of
+  // `kinds` (`expected` describes them for the message).
+  const Value* find(const std::string& name, std::initializer_list<ValueKind> kinds, const char* expected) const;
+  const Value& require(const std::string& name, std::initializer_list<ValueKind> kinds, const char* expected) const;
+  std::string element() const;  // "<bsdf> 'diffuse'", for messages
   std::map<std::string, Value> values_;
   std::vector<Child> children_;
 };

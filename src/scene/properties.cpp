@@ -1,0 +1,167 @@
+#include "scene/properties.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+
+namespace columba {
+
+namespace {
+
+const char* describe(const Properties::Value& v) {
+  switch (v.kind) {
+    case Properties::ValueKind::Float: return "a <float>";
+    case Properties::ValueKind::Integer: return "an <integer>";
+    case Properties::ValueKind::Boolean: return "a <boolean>";
+    case Properties::ValueKind::String: return "a <string>";
+    case Properties::ValueKind::Vector: return "a <point>/<vector>";
+    case Properties::ValueKind::Spectrum: return v.isRGB ? "an <rgb>" : "a <spectrum>";
+    case Properties::ValueKind::Transform: return "a <transform>";
+  }
+  return "a value";
+}
+
+using Kind = Properties::ValueKind;
+
+}  // namespace
+
+std::string Properties::element() const { return "<" + tag + "> '" + type + "'"; }
+
+const Properties::Value* Properties::find(const std::string& name, std::initializer_list<ValueKind> kinds,
+                                          const char* expected) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) return nullptr;
+  const Value& v = it->second;
+  v.used = true;
+  if (std::find(kinds.begin(), kinds.end(), v.kind) == kinds.end())
+    throw InputError(v.location, "parameter '" + name + "' of " + element() + " must be " + expected + ", not " +
+                                     describe(v));
+  return &v;
+}
+
+const Properties::Value& Properties::require(const std::string& name, std::initializer_list<ValueKind> kinds,
+                                             const char* expected) const {
+  if (const Value* v = find(name, kinds, expected)) return *v;
+  throw InputError(location, element() + " requires parameter '" + name + "' (" + expected + ")");
+}
+
+bool Properties::has(const std::string& name) const { return values_.count(name) > 0; }
+
+namespace {
+
+float toFloat(const Properties::Value& v, const std::string& name) {
+  float f = float(v.number);
+  if (!std::isfinite(f))
+    throw InputError(v.location, "parameter '" + name + "' is out of the range of a float");
+  return f;
+}
+
+int toInt(const Properties::Value& v, const std::string& name) {
+  if (v.number < INT_MIN || v.number > INT_MAX)
+    throw InputError(v.location, "parameter '" + name + "' is out of the range of an integer");
+  return int(v.number);
+}
+
+}  // namespace
+
+float Properties::getFloat(const std::string& name) const {
+  return toFloat(require(name, {Kind::Float, Kind::Integer}, "a <float>"), name);
+}
+
+float Properties::getFloat(const std::string& name, float def) const {
+  const Value* v = find(name, {Kind::Float, Kind::Integer}, "a <float>");
+  return v ? toFloat(*v, name) : def;
+}
+
+int Properties::getInt(const std::string& name) const {
+  return toInt(require(name, {Kind::Integer}, "an <integer>"), name);
+}
+
+int Properties::getInt(const std::string& name, int def) const {
+  const Value* v = find(name, {Kind::Integer}, "an <integer>");
+  return v ? toInt(*v, name) : def;
+}
+
+bool Properties::getBool(const std::string& name, bool def) const {
+  const Value* v = find(name, {Kind::Boolean}, "a <boolean>");
+  return v ? v->boolean : def;
+}
+
+std::string Properties::getString(const std::string& name) const {
+  return require(name, {Kind::String}, "a <string>").text;
+}
+
+std::string Properties::getString(const std::string& name, const std::string& def) const {
+  const Value* v = find(name, {Kind::String}, "a <string>");
+  return v ? v->text : def;
+}
+
+Vec3 Properties::getVector(const std::string& name, const Vec3& def) const {
+  const Value* v = find(name, {Kind::Vector}, "a <point> or <vector>");
+  return v ? v->vector : def;
+}
+
+Transform Properties::getTransform(const std::string& name, const Transform& def) const {
+  const Value* v = find(name, {Kind::Transform}, "a <transform>");
+  return v ? v->transform : def;
+}
+
+std::string Properties::getPath(const std::string& name) const {
+  const Value& v = require(name, {Kind::String}, "a <string> file name");
+  namespace fs = std::filesystem;
+  fs::path path(v.text);
+  if (path.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / path;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(v.location, "parameter '" + name + "': file '" + v.text + "' not found (looked for '" +
+                                     path.string() + "')");
+  return path.string();
+}
+
+SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {
+  const Value* v = find(name, {Kind::Float, Kind::Integer, Kind::Spectrum}, "a <float>, <spectrum> or <rgb>");
+  if (!v) return SpectralDistribution::constant(def);
+  if (v->kind != Kind::Spectrum) return SpectralDistribution::constant(toFloat(*v, name));
+  if (v->isRGB) return SpectralDistribution::fromRGB(v->rgb, use != SpectrumUse::Reflectance);
+  return v->spectrum;
+}
+
+SourceLocation Properties::locationOf(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it != values_.end()) return it->second.location;
+  for (const Child& c : children_)
+    if (!c.name.empty() && c.name == name) return c.location;
+  return location;
+}
+
+InputError Properties::error(const std::string& name, const std::string& message) const {
+  return InputError(locationOf(name), element() + ", parameter '" + name + "': " + message);
+}
+
+void Properties::checkAllUsed() const {
+  // Report the unread item that comes first in the file, whatever its kind.
+  const std::pair<const std::string, Value>* value = nullptr;
+  for (const auto& entry : values_)
+    if (!entry.second.used && (!value || entry.second.location.line < value->second.location.line)) value = &entry;
+  const Child* child = nullptr;
+  for (const Child& c : children_)
+    if (!c.used && (!child || c.location.line < child->location.line)) child = &c;
+
+  if (child && (!value || child->location.line < value->second.location.line)) {
+    std::string what = "<" + child->tag + "> '" + child->type + "'";
+    if (!child->name.empty()) what += " (name '" + child->name + "')";
+    throw InputError(child->location, "unexpected nested " + what + " in " + element());
+  }
+  if (value) throw InputError(value->second.location, "unknown parameter '" + value->first + "' for " + element());
+}
+
+void Properties::set(const std::string& name, Value value) {
+  auto it = values_.find(name);
+  if (it != values_.end())
+    throw InputError(value.location, "duplicate parameter '" + name + "' in " + element() + " (first set at " +
+                                         it->second.location.str() + ")");
+  values_.emplace(name, std::move(value));
+}
+
+}  // namespace columba
