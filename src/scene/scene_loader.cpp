@@ -1,0 +1,240 @@
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include "scene/xml_source.h"
+#include "scene/xml_transform.h"
+#include "scene/xml_values.h"
+
+namespace columba {
+
+namespace {
+
+const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film",  "rfilter",
+                                           "sampler", "integrator", "texture", "medium", "phase"};
+
+struct NamedObject {
+  std::shared_ptr<Object> object;
+  std::string tag, type;
+  SourceLocation location;
+};
+
+// Walks a document depth first, creating each plug-in once its nested plug-ins exist.
+// Objects with an `id` can be referenced by any <ref> that comes after them.
+class SceneBuilder {
+ public:
+  SceneBuilder(const Defines& defines, const PluginRegistry& registry) : vars_(defines), registry_(registry) {}
+
+  void readScene(const XmlDocument& doc, ParsedScene& scene);
+
+ private:
+  void include(const XmlElement& e, ParsedScene& scene);
+  NamedObject instantiate(const XmlElement& e);
+  Properties::Child reference(const XmlElement& e) const;
+  void readParameter(const XmlElement& e, Properties& props) const;
+
+  SceneVariables vars_;
+  const PluginRegistry& registry_;
+  std::map<std::string, NamedObject> ids_;
+  std::vector<std::string> includeStack_;
+};
+
+void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
+  XmlElement root(doc.root(), doc, vars_);
+  if (root.tag() != "scene")
+    throw InputError(root.location(), "the root element must be <scene>, not <" + root.tag() + ">");
+  root.allowAttributes({"version"});
+  std::string version = root.attribute("version");
+  if (version.rfind("2.", 0) != 0 && version.rfind("3.", 0) != 0)
+    throw InputError(root.location(), "unsupported scene version '" + version + "' (expected 2.x or 3.x)");
+
+  for (const XmlElement& e : root.children()) {
+    const std::string tag = e.tag();
+    if (kPluginTags.count(tag)) {
+      scene.objects.push_back(instantiate(e).object);
+    } else if (tag == "default") {
+      e.allowAttributes({"name", "value"});
+      e.requireNoChildren();
+      vars_.addDefault(e.attribute("name"), e.attribute("value"), e.location());
+    } else if (tag == "include") {
+      include(e, scene);
+    } else {
+      throw InputError(e.location(), "<" + tag + "> cannot appear directly inside <scene>");
+    }
+  }
+}
+
+// The included file's <scene> contents are read as if they stood in place of the <include>.
+void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
+  e.allowAttributes({"filename"});
+  e.requireNoChildren();
+  namespace fs = std::filesystem;
+  fs::path path(e.attribute("filename"));
+  if (path.is_relative()) path = fs::path(e.document().baseDir()) / path;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(e.location(), "included file '" + path.string() + "' not found");
+  std::string key = fs::weakly_canonical(path).string();
+  if (std::find(includeStack_.begin(), includeStack_.end(), key) != includeStack_.end())
+    throw InputError(e.location(), "'" + path.string() + "' includes itself");
+  includeStack_.push_back(key);
+  readScene(*XmlDocument::fromFile(path.string()), scene);
+  includeStack_.pop_back();
+}
+
+NamedObject SceneBuilder::instantiate(const XmlElement& e) {
+  e.allowAttributes({"type", "id", "name"});
+  Properties props;
+  props.tag = e.tag();
+  props.type = e.attribute("type");
+  props.id = e.attribute("id", "");
+  props.location = e.location();
+  props.baseDir = e.document().baseDir();
+
+  const PluginFactory* factory = registry_.find(props.tag, props.type);
+  if (!factory) throw InputError(e.location(), "unknown <" + props.tag + "> plug-in type '" + props.type + "'");
+  if (e.has("id")) {
+    if (props.id.empty()) throw InputError(e.location(), "empty id");
+    auto it = ids_.find(props.id);
+    if (it != ids_.end())
+      throw InputError(e.location(),
+                       "duplicate id '" + props.id + "' (first declared at " + it->second.location.str() + ")");
+  }
+
+  for (const XmlElement& c : e.children()) {
+    if (kPluginTags.count(c.tag())) {
+      NamedObject nested = instantiate(c);
+      Properties::Child child;
+      child.name = c.attribute("name", "");
+      child.object = nested.object;
+      child.location = c.location();
+      child.tag = nested.tag;
+      child.type = nested.type;
+      props.addChild(std::move(child));
+    } else if (c.tag() == "ref") {
+      props.addChild(reference(c));
+    } else {
+      readParameter(c, props);
+    }
+  }
+
+  NamedObject result{nullptr, props.tag, props.type, props.location};
+  try {
+    result.object = (*factory)(props);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& ex) {
+    throw InputError(props.location, "cannot create <" + props.tag + "> '" + props.type + "': " + ex.what());
+  }
+  if (!result.object) throw InputError(props.location, "<" + props.tag + "> '" + props.type + "' created nothing");
+  props.checkAllUsed();
+  if (!props.id.empty()) ids_.emplace(props.id, result);
+  return result;
+}
+
+Properties::Child SceneBuilder::reference(const XmlElement& e) const {
+  e.allowAttributes({"id", "name"});
+  e.requireNoChildren();
+  std::string id = e.attribute("id");
+  auto it = ids_.find(id);
+  if (it == ids_.end())
+    throw InputError(e.location(), "<ref> to unknown id '" + id + "' (an id must be declared before it is referenced)");
+  Properties::Child child;
+  child.name = e.attribute("name", "");
+  child.object = it->second.object;
+  child.location = e.location();
+  child.tag = it->second.tag;
+  child.type = it->second.type;
+  return child;
+}
+
+void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
+  using Kind = Properties::ValueKind;
+  const std::string tag = e.tag();
+  const SourceLocation& loc = e.location();
+  Properties::Value v;
+  v.location = loc;
+
+  if (tag == "transform") {
+    e.allowAttributes({"name"});
+    std::string name = e.attribute("name");
+    v.kind = Kind::Transform;
+    v.transform = parseTransform(e);
+    props.set(name, std::move(v));
+    return;
+  }
+  e.requireNoChildren();
+  if (tag == "integer" || tag == "float" || tag == "string" || tag == "boolean" || tag == "rgb") {
+    e.allowAttributes({"name", "value"});
+  } else if (tag == "point" || tag == "vector") {
+    e.allowAttributes({"name", "value", "x", "y", "z"});
+  } else if (tag == "spectrum") {
+    e.allowAttributes({"name", "value", "filename"});
+  } else if (tag == "default" || tag == "include") {
+    throw InputError(loc, "<" + tag + "> is only allowed directly inside <scene>");
+  } else {
+    throw InputError(loc, "unknown element <" + tag + "> in <" + props.tag + "> '" + props.type + "'");
+  }
+  std::string name = e.attribute("name");
+  std::string what = "<" + tag + "> '" + name + "'";
+
+  if (tag == "integer") {
+    v.kind = Kind::Integer;
+    v.number = double(parseInteger(e.attribute("value"), what, loc));
+  } else if (tag == "float") {
+    v.kind = Kind::Float;
+    v.number = parseFloat(e.attribute("value"), what, loc);
+  } else if (tag == "boolean") {
+    v.kind = Kind::Boolean;
+    v.boolean = parseBoolean(e.attribute("value"), what, loc);
+  } else if (tag == "string") {
+    v.kind = Kind::String;
+    v.text = e.attribute("value");
+  } else if (tag == "point" || tag == "vector") {
+    v.kind = Kind::Vector;
+    if (e.has("value")) {
+      if (e.has("x") || e.has("y") || e.has("z"))
+        throw InputError(loc, what + " takes either 'value' or x/y/z, not both");
+      v.vector = parseVec3(e.attribute("value"), what, loc);
+    } else {
+      const char* axes[] = {"x", "y", "z"};
+      for (int i = 0; i < 3; ++i)
+        if (e.has(axes[i])) v.vector[i] = float(parseFloat(e.attribute(axes[i]), what, loc));
+    }
+  } else if (tag == "rgb") {
+    v.kind = Kind::Spectrum;
+    v.isRGB = true;
+    v.rgb = parseVec3(e.attribute("value"), what, loc);
+  } else {
+    v.kind = Kind::Spectrum;
+    if (e.has("value") == e.has("filename"))
+      throw InputError(loc, what + " needs exactly one of 'value' and 'filename'");
+    if (e.has("value")) {
+      v.spectrum = parseSpectrum(e.attribute("value"), what, loc);
+    } else {
+      std::filesystem::path file(e.attribute("filename"));
+      if (file.is_relative()) file = std::filesystem::path(props.baseDir) / file;
+      v.spectrum = readSpectrumFile(file.string(), what, loc);
+    }
+  }
+  props.set(name, std::move(v));
+}
+
+}  // namespace
+
+ParsedScene loadSceneFile(const std::string& path, const Defines& defines, const PluginRegistry& registry) {
+  std::unique_ptr<XmlDocument> doc = XmlDocument::fromFile(path);
+  ParsedScene scene;
+  SceneBuilder(defines, registry).readScene(*doc, scene);
+  return scene;
+}
+
+ParsedScene loadSceneString(const std::string& xml, const std::string& sourceName, const std::string& baseDir,
+                            const Defines& defines, const PluginRegistry& registry) {
+  XmlDocument doc(xml, sourceName, baseDir);
+  ParsedScene scene;
+  SceneBuilder(defines, registry).readScene(doc, scene);
+  return scene;
+}
+
+}  // namespace columba

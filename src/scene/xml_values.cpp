@@ -1,0 +1,129 @@
+#include "scene/xml_values.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+namespace columba {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  size_t b = s.find_first_not_of(" \t\r\n"), e = s.find_last_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+InputError badValue(const std::string& kind, const std::string& text, const std::string& what,
+                    const SourceLocation& loc) {
+  return InputError(loc, "invalid " + kind + " '" + text + "' for " + what);
+}
+
+// std::from_chars accepts neither a leading '+' nor surrounding spaces; the scene format allows both.
+std::string numberBody(const std::string& text) {
+  std::string t = trim(text);
+  if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.erase(0, 1);
+  return t;
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : text) {
+    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+SpectralDistribution fromPairs(std::vector<float> lambdas, std::vector<float> values, const std::string& what,
+                               const SourceLocation& loc) {
+  if (lambdas.empty()) throw InputError(loc, "no wavelength:value pairs for " + what);
+  for (size_t i = 1; i < lambdas.size(); ++i)
+    if (!(lambdas[i] > lambdas[i - 1]))
+      throw InputError(loc, "wavelengths must increase for " + what + " (" + std::to_string(lambdas[i - 1]) +
+                                " is followed by " + std::to_string(lambdas[i]) + ")");
+  return SpectralDistribution::piecewiseLinear(std::move(lambdas), std::move(values));
+}
+
+}  // namespace
+
+double parseFloat(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  std::string t = numberBody(text);
+  double v = 0;
+  auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
+    throw badValue("number", text, what, loc);
+  return v;
+}
+
+long long parseInteger(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  std::string t = numberBody(text);
+  long long v = 0;
+  auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size()) throw badValue("integer", text, what, loc);
+  return v;
+}
+
+bool parseBoolean(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  std::string t = trim(text);
+  for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (t == "true") return true;
+  if (t == "false") return false;
+  throw badValue("boolean (true or false)", text, what, loc);
+}
+
+std::vector<double> parseFloatList(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  std::vector<double> out;
+  for (const std::string& token : splitList(text)) out.push_back(parseFloat(token, what, loc));
+  return out;
+}
+
+Vec3 parseVec3(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  std::vector<double> v = parseFloatList(text, what, loc);
+  if (v.size() == 1) return Vec3(float(v[0]), float(v[0]), float(v[0]));
+  if (v.size() == 3) return Vec3(float(v[0]), float(v[1]), float(v[2]));
+  throw InputError(loc, "expected 1 or 3 numbers for " + what + ", got '" + text + "'");
+}
+
+SpectralDistribution parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc) {
+  if (text.find(':') == std::string::npos) {
+    std::vector<std::string> tokens = splitList(text);
+    if (tokens.size() != 1)
+      throw InputError(loc, "expected one number or wavelength:value pairs for " + what + ", got '" + text + "'");
+    return SpectralDistribution::constant(float(parseFloat(tokens[0], what, loc)));
+  }
+  std::vector<float> lambdas, values;
+  for (const std::string& token : splitList(text)) {
+    size_t colon = token.find(':');
+    if (colon == std::string::npos || token.find(':', colon + 1) != std::string::npos)
+      throw InputError(loc, "expected wavelength:value, got '" + token + "' for " + what);
+    lambdas.push_back(float(parseFloat(token.substr(0, colon), what, loc)));
+    values.push_back(float(parseFloat(token.substr(colon + 1), what, loc)));
+  }
+  return fromPairs(std::move(lambdas), std::move(values), what, loc);
+}
+
+SpectralDistribution readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc) {
+  std::ifstream in(path);
+  if (!in) throw InputError(loc, "cannot open spectrum file '" + path + "' for " + what);
+  std::vector<float> lambdas, values;
+  std::string line;
+  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+    line = line.substr(0, line.find('#'));
+    std::vector<std::string> tokens = splitList(line);
+    if (tokens.empty()) continue;
+    SourceLocation here{path, lineNo};
+    if (tokens.size() != 2) throw InputError(here, "expected 'wavelength value', got '" + trim(line) + "'");
+    lambdas.push_back(float(parseFloat(tokens[0], "the wavelength", here)));
+    values.push_back(float(parseFloat(tokens[1], "the value", here)));
+  }
+  return fromPairs(std::move(lambdas), std::move(values), what + " (file '" + path + "')", loc);
+}
+
+}  // namespace columba
