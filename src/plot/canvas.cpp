@@ -1,0 +1,75 @@
+#include "plot/canvas.h"
+
+#include <stb_easy_font.h>
+
+#include <vector>
+
+namespace columba {
+
+namespace {
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+struct FontVertex {
+  float x, y, z;
+  unsigned char colour[4];
+};
+}  // namespace
+
+Vec3 srgbColour(float r, float g, float b) { return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)}; }
+
+Canvas::Canvas(int width, int height, const Vec3& background) : image_(width, height) {
+  fillRect(0, 0, float(width), float(height), background);
+}
+
+void Canvas::blend(int x, int y, const Vec3& colour, float coverage) {
+  if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0.0f) return;
+  float* p = image_.pixel(x, y);
+  coverage = std::min(coverage, 1.0f);
+  for (int c = 0; c < 3; ++c) p[c] = p[c] * (1.0f - coverage) + colour[c] * coverage;
+}
+
+void Canvas::fillRect(float x0, float y0, float x1, float y1, const Vec3& colour) {
+  for (int y = std::max(0, int(std::floor(y0))); y < std::min(image_.height, int(std::ceil(y1))); ++y)
+    for (int x = std::max(0, int(std::floor(x0))); x < std::min(image_.width, int(std::ceil(x1))); ++x) {
+      // Pixel coverage of the rectangle, so fractional edges are smooth.
+      float cx = std::min(x1, float(x + 1)) - std::max(x0, float(x));
+      float cy = std::min(y1, float(y + 1)) - std::max(y0, float(y));
+      blend(x, y, colour, cx * cy);
+    }
+}
+
+void Canvas::line(Vec2 a, Vec2 b, const Vec3& colour, float thickness) {
+  // Coverage from the distance of each pixel centre to the segment (anti-aliased).
+  float half = 0.5f * thickness;
+  int x0 = int(std::floor(std::min(a.x, b.x) - half - 1)), x1 = int(std::ceil(std::max(a.x, b.x) + half + 1));
+  int y0 = int(std::floor(std::min(a.y, b.y) - half - 1)), y1 = int(std::ceil(std::max(a.y, b.y) + half + 1));
+  Vec2 d = b - a;
+  float len2 = d.x * d.x + d.y * d.y;
+  for (int y = std::max(y0, 0); y <= std::min(y1, image_.height - 1); ++y)
+    for (int x = std::max(x0, 0); x <= std::min(x1, image_.width - 1); ++x) {
+      Vec2 p(x + 0.5f, y + 0.5f);
+      float t = len2 > 0 ? clampf(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0f, 1.0f) : 0.0f;
+      Vec2 q = a + d * t;
+      float dist = std::sqrt((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y));
+      blend(x, y, colour, clampf(half + 0.5f - dist, 0.0f, 1.0f));
+    }
+}
+
+void Canvas::text(float x, float y, const std::string& s, const Vec3& colour, int scale) {
+  std::vector<FontVertex> buffer(4 * 64 * std::max<size_t>(s.size(), 1));
+  std::string copy = s;
+  int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size() * sizeof(FontVertex)));
+  for (int q = 0; q < quads; ++q) {
+    const FontVertex* v = &buffer[size_t(q) * 4];
+    fillRect(x + v[0].x * scale, y + v[0].y * scale, x + v[2].x * scale, y + v[2].y * scale, colour);
+  }
+}
+
+float Canvas::textWidth(const std::string& s, int scale) {
+  std::string copy = s;
+  return float(stb_easy_font_width(copy.data()) * scale);
+}
+
+float Canvas::textHeight(int scale) { return 7.0f * scale; }
+
+}  // namespace columba

@@ -1,0 +1,73 @@
+#include "plot/line_plot.h"
+
+#include <fmt/format.h>
+
+#include "plot/canvas.h"
+
+namespace columba {
+
+std::vector<float> niceTicks(float lo, float hi, int target) {
+  std::vector<float> ticks;
+  if (!(hi > lo) || target < 1) return ticks;
+  float raw = (hi - lo) / float(target);
+  float magnitude = std::pow(10.0f, std::floor(std::log10(raw)));
+  float step = magnitude;
+  for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
+    if (m * magnitude >= raw) { step = m * magnitude; break; }
+  for (float t = std::ceil(lo / step - 1e-4f) * step; t <= hi + 1e-4f * step; t += step)
+    ticks.push_back(std::abs(t) < 1e-6f * step ? 0.0f : t);
+  return ticks;
+}
+
+Image renderLinePlot(const LinePlot& plot, int width, int height) {
+  const Vec3 white(1, 1, 1), black(0, 0, 0), grid = srgbColour(0.88f, 0.88f, 0.88f);
+  Canvas canvas(width, height, white);
+  const float left = 90, right = float(width) - 20, top = 50, bottom = float(height) - 70;
+  auto toPixel = [&](Vec2 p) {
+    return Vec2(left + (p.x - plot.xMin) / (plot.xMax - plot.xMin) * (right - left),
+                bottom - (p.y - plot.yMin) / (plot.yMax - plot.yMin) * (bottom - top));
+  };
+  for (float t : niceTicks(plot.xMin, plot.xMax, 8)) {
+    float x = toPixel(Vec2(t, plot.yMin)).x;
+    canvas.line(Vec2(x, top), Vec2(x, bottom), grid);
+    canvas.line(Vec2(x, bottom), Vec2(x, bottom + 6), black);
+    std::string label = fmt::format("{:g}", t);
+    canvas.text(x - 0.5f * Canvas::textWidth(label), bottom + 12, label, black);
+  }
+  for (float t : niceTicks(plot.yMin, plot.yMax, 6)) {
+    float y = toPixel(Vec2(plot.xMin, t)).y;
+    canvas.line(Vec2(left, y), Vec2(right, y), grid);
+    canvas.line(Vec2(left - 6, y), Vec2(left, y), black);
+    std::string label = fmt::format("{:g}", t);
+    canvas.text(left - 10 - Canvas::textWidth(label), y - 0.5f * Canvas::textHeight(), label, black);
+  }
+  canvas.line(Vec2(left, bottom), Vec2(right, bottom), black, 1.5f);
+  canvas.line(Vec2(left, top), Vec2(left, bottom), black, 1.5f);
+  canvas.text(0.5f * (left + right - Canvas::textWidth(plot.xLabel)), bottom + 40, plot.xLabel, black);
+  canvas.text(10, top - 30, plot.yLabel, black);
+  canvas.text(0.5f * (width - Canvas::textWidth(plot.title, 3)), 10, plot.title, black, 3);
+
+  for (const PlotSeries& s : plot.series)
+    for (size_t i = 1; i < s.points.size(); ++i) {
+      if (s.dashed && i % 4 >= 2) continue;
+      Vec2 a = toPixel(s.points[i - 1]), b = toPixel(s.points[i]);
+      if (a.y < top - 1 && b.y < top - 1) continue;  // off the chart
+      a.y = clampf(a.y, top, bottom);
+      b.y = clampf(b.y, top, bottom);
+      canvas.line(a, b, s.colour, 2.5f);
+    }
+
+  // Legend in the top-right corner.
+  float legendWidth = 0;
+  for (const PlotSeries& s : plot.series) legendWidth = std::max(legendWidth, Canvas::textWidth(s.label));
+  float lx = right - legendWidth - 50, ly = top + 10;
+  canvas.fillRect(lx - 8, ly - 6, right - 4, ly + 22.0f * plot.series.size() - 2, white);
+  for (const PlotSeries& s : plot.series) {
+    canvas.line(Vec2(lx, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
+    canvas.text(lx + 38, ly, s.label, black);
+    ly += 22;
+  }
+  return canvas.image();
+}
+
+}  // namespace columba

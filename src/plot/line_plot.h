@@ -1,0 +1,28 @@
+#pragma once
+// Line charts with labelled axes, ticks and a legend, rendered to an image.
+#include <string>
+#include <vector>
+#include "render/image.h"
+#include "core/vector.h"
+
+namespace columba {
+
+struct PlotSeries {
+  std::string label;
+  std::vector<Vec2> points;  // (x, y) in data units
+  Vec3 colour;               // linear RGB
+  bool dashed = false;
+};
+
+struct LinePlot {
+  std::string title, xLabel, yLabel;
+  float xMin = 0, xMax = 1, yMin = 0, yMax = 1;
+  std::vector<PlotSeries> series;
+};
+
+Image renderLinePlot(const LinePlot& plot, int width, int height);
+
+// Round tick positions covering [lo, hi], about `target` of them.
+std::vector<float> niceTicks(float lo, float hi, int target);
+
+}  // namespace columba

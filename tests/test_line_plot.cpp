@@ -1,0 +1,45 @@
+#include <gtest/gtest.h>
+
+#include "plot/canvas.h"
+#include "plot/line_plot.h"
+
+using namespace columba;
+
+TEST(LinePlot, NiceTicksAreRoundAndCoverTheRange) {
+  std::vector<float> t = niceTicks(360, 830, 8);
+  ASSERT_GE(t.size(), 5u);
+  EXPECT_GE(t.front(), 360.0f);
+  EXPECT_LE(t.back(), 830.0f);
+  EXPECT_LE(t.size(), 16u);
+  EXPECT_FLOAT_EQ(t[1] - t[0], 100.0f);  // 1, 2, 2.5 or 5 times a power of ten
+  EXPECT_EQ(niceTicks(0, 1, 5), (std::vector<float>{0, 0.2f, 0.4f, 0.6f, 0.8f, 1.0f}));
+}
+
+TEST(LinePlot, SeriesAreDrawnInTheirColourInsideThePlotArea) {
+  LinePlot plot;
+  plot.title = "t";
+  plot.xLabel = "x";
+  plot.yLabel = "y";
+  plot.series.push_back({"diag", {Vec2(0, 0), Vec2(1, 1)}, Vec3(1, 0, 0)});
+  Image img = renderLinePlot(plot, 400, 300);
+  // The diagonal runs from the bottom-left (90, 230) to the top-right (380, 50) of the plot area.
+  int redPixels = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const float* p = img.pixel(x, y);
+      if (p[0] > 0.9f && p[1] < 0.1f && p[2] < 0.1f) ++redPixels;
+    }
+  EXPECT_GT(redPixels, 300);
+  const float* mid = img.pixel(235, 140);  // the diagonal's midpoint
+  EXPECT_GT(mid[0], 0.5f);
+  EXPECT_LT(mid[1], 0.5f);
+}
+
+TEST(Canvas, TextMarksPixels) {
+  Canvas c(100, 30, Vec3(1, 1, 1));
+  c.text(2, 2, "Hello", Vec3(0, 0, 0));
+  int dark = 0;
+  for (float v : c.image().rgb) dark += v < 0.5f;
+  EXPECT_GT(dark, 30);
+  EXPECT_GT(Canvas::textWidth("Hello"), Canvas::textWidth("Hi"));
+}
