@@ -81,7 +81,7 @@ TEST_F(CliTest, MalformedScenesFailWithFileLineAndValue) {
        "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n<float name=\"fov\" value=\"$angle\"/>\n</sensor>\n</scene>\n",
        {":3", "angle"}},
       {"unknown_parameter.xml", "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<float name=\"radiancee\" value=\"1\"/>\n</emitter>\n</scene>\n",
-       {":3", "radians"}},
+       {":3", "radiancee"}},
       {"malformed.xml", "<scene version=\"3.0.0\">\n<shape type=\"sphere\">\n</scene>\n", {"malformed.xml"}},
   };
   for (const Case& c : cases) {
