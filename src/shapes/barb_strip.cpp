@@ -1,0 +1,85 @@
+#include "shapes/barb_strip.h"
+
+namespace columba {
+
+namespace {
+float maxAbsComponent(const Vec3& v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); }
+}  // namespace
+
+BarbStrip BarbStrip::fromPolyline(const Vec3* points, int count, int i, const Vec3& n, float radius,
+                                  float halfWidthStart, float halfWidthEnd) {
+  BarbStrip s;
+  s.p0 = points[i];
+  s.axis = segmentDirection(points[i], points[i + 1]);
+  s.length = columba::length(points[i + 1] - points[i]);
+  s.n = n;
+  s.b = cross(s.axis, n);
+  s.startMitre = i > 0 ? mitreNormal(segmentDirection(points[i - 1], points[i]), s.axis) : s.axis;
+  s.endMitre = i + 2 < count ? mitreNormal(s.axis, segmentDirection(points[i + 1], points[i + 2])) : s.axis;
+  s.radius = radius;
+  s.halfWidthStart = halfWidthStart;
+  s.halfWidthEnd = halfWidthEnd;
+  return s;
+}
+
+bool BarbStrip::intersect(const Vec3& o, const Vec3& d, float tmin, float tmax, StripHit& hit) const {
+  // Local coordinates: x along b, y along n with the cylinder axis at y = 0, z along the axis.
+  Vec3 rel = o - p0;
+  float ox = dot(rel, b), oy = dot(rel, n) + radius, oz = dot(rel, axis);
+  float dx = dot(d, b), dy = dot(d, n), dz = dot(d, axis);
+  float a = dx * dx + dy * dy;
+  if (!(a > 1e-12f * lengthSquared(d))) return false;  // parallel to the axis
+  // Solve from the ray's point closest to the axis: this avoids the cancellation of the
+  // textbook discriminant when the ray starts far from a thin cylinder.
+  float tc = -(ox * dx + oy * dy) / a;
+  float cx = ox + tc * dx, cy = oy + tc * dy;
+  float gap = radius * radius - (cx * cx + cy * cy);
+  if (gap < 0.0f) return false;
+  float dt = std::sqrt(gap / a);
+  // Slack for the mitre planes: a few ulps of the coordinates the hit point was computed from.
+  float slack = 1e-6f * (maxAbsComponent(p0) + std::abs(ox) + std::abs(oy) + std::abs(oz) + radius);
+  const float sb = dot(startMitre, b), sn = dot(startMitre, n), sa = dot(startMitre, axis);
+  const float eb = dot(endMitre, b), en = dot(endMitre, n), ea = dot(endMitre, axis);
+  for (float t : {tc - dt, tc + dt}) {
+    if (t <= tmin) continue;
+    if (t >= tmax) return false;
+    float px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
+    if (py <= 0.0f) continue;  // the half of the cylinder away from the strip
+    float axial = pz / length;
+    if (std::abs(px) > halfWidthAt(axial)) continue;
+    float below = py - radius;  // height relative to the top line
+    if (px * sb + below * sn + pz * sa < -slack) continue;
+    if (px * eb + below * en + (pz - length) * ea > slack) continue;
+    hit.t = t;
+    hit.axial = axial;
+    hit.angle = std::atan2(px, py);
+    return true;
+  }
+  return false;
+}
+
+void BarbStrip::bounds(Vec3& lo, Vec3& hi) const {
+  float hw = std::max(halfWidthStart, halfWidthEnd);
+  float sag = radius - safeSqrt(radius * radius - hw * hw);  // depth of the strip's edges below its top line
+  // The mitre cuts reach past the end vertices by at most this much along the axis.
+  float before = (hw * std::abs(dot(startMitre, b)) + sag * std::abs(dot(startMitre, n))) / dot(startMitre, axis);
+  float after = (hw * std::abs(dot(endMitre, b)) + sag * std::abs(dot(endMitre, n))) / dot(endMitre, axis);
+  lo = Vec3(INFINITY, INFINITY, INFINITY);
+  hi = -lo;
+  for (int c = 0; c < 8; ++c) {
+    Vec3 corner = p0 + b * ((c & 1) ? hw : -hw) + n * ((c & 2) ? 0.0f : -sag) +
+                  axis * ((c & 4) ? length + after : -before);
+    lo = minv(lo, corner);
+    hi = maxv(hi, corner);
+  }
+  // Room for the mitre slack of intersect().
+  Vec3 pad = Vec3(1, 1, 1) * (1e-5f * (maxAbsComponent(p0) + radius + length));
+  lo = lo - pad;
+  hi = hi + pad;
+}
+
+Vec3 BarbStrip::point(float axial, float angle) const {
+  return p0 + axis * (axial * length) + n * (radius * (std::cos(angle) - 1.0f)) + b * (radius * std::sin(angle));
+}
+
+}  // namespace columba
