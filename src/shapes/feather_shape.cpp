@@ -1,0 +1,203 @@
+#include "shapes/feather_shape.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+
+namespace columba {
+
+namespace {
+
+// Width of the barb at vertex `i` relative to its base.
+float taper(int i) { return 1.0f - (1.0f - FeatherShape::kTipWidthFraction) * float(i) / float(kBarbSegments); }
+
+// Any unit vector perpendicular to the unit vector `a`, as close as possible to `v`.
+Vec3 perpendicularTo(const Vec3& a, const Vec3& v) {
+  Vec3 p = v - a * dot(v, a);
+  if (lengthSquared(p) > 1e-12f) return normalize(p);
+  return Frame::fromNormal(a).s;
+}
+
+float linearScale(const Transform& t) {
+  const auto& m = t.matrix().m;
+  double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return float(std::cbrt(std::abs(det)));
+}
+
+template <typename T> void gather(std::vector<T>& values, const std::vector<uint32_t>& indices) {
+  if (values.empty()) return;
+  std::vector<T> out(indices.size());
+  tbb::parallel_for(size_t(0), indices.size(), [&](size_t i) { out[i] = values[indices[i]]; });
+  values = std::move(out);
+}
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+  const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
+  Vec3 lo, hi;
+  shape->strip(args->primID).bounds(lo, hi);
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = lo.x; b->lower_y = lo.y; b->lower_z = lo.z;
+  b->upper_x = hi.x; b->upper_y = hi.y; b->upper_z = hi.z;
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+  const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
+  const BarbStrip strip = shape->strip(args->primID);
+  const unsigned N = args->N;
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
+  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, N);
+  for (unsigned i = 0; i < N; ++i) {
+    if (!args->valid[i]) continue;
+    Vec3 o(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i));
+    Vec3 d(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i));
+    StripHit h;
+    if (!strip.intersect(o, d, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), h)) continue;
+    RTCRayN_tfar(ray, N, i) = h.t;
+    Vec3 ng = strip.normal(h.angle);
+    RTCHitN_Ng_x(hit, N, i) = ng.x;
+    RTCHitN_Ng_y(hit, N, i) = ng.y;
+    RTCHitN_Ng_z(hit, N, i) = ng.z;
+    RTCHitN_u(hit, N, i) = h.axial;
+    RTCHitN_v(hit, N, i) = h.angle;
+    RTCHitN_primID(hit, N, i) = args->primID;
+    RTCHitN_geomID(hit, N, i) = args->geomID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l) RTCHitN_instID(hit, N, i, l) = args->context->instID[l];
+  }
+}
+
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+  const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
+  const BarbStrip strip = shape->strip(args->primID);
+  const unsigned N = args->N;
+  for (unsigned i = 0; i < N; ++i) {
+    if (!args->valid[i]) continue;
+    Vec3 o(RTCRayN_org_x(args->ray, N, i), RTCRayN_org_y(args->ray, N, i), RTCRayN_org_z(args->ray, N, i));
+    Vec3 d(RTCRayN_dir_x(args->ray, N, i), RTCRayN_dir_y(args->ray, N, i), RTCRayN_dir_z(args->ray, N, i));
+    StripHit h;
+    if (strip.intersect(o, d, RTCRayN_tnear(args->ray, N, i), RTCRayN_tfar(args->ray, N, i), h))
+      RTCRayN_tfar(args->ray, N, i) = -std::numeric_limits<float>::infinity();
+  }
+}
+
+}  // namespace
+
+FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params) {
+  barbCount_ = ply.barbCount();
+  const Transform& toWorld = params.toWorld;
+  tbb::parallel_for(size_t(0), ply.positions.size(), [&](size_t i) {
+    ply.positions[i] = toWorld.point(ply.positions[i]);
+    ply.normals[i] = normalize(toWorld.normal(ply.normals[i]));
+  });
+  if (!ply.barbsAreSequential()) {
+    // Make every barb's vertices contiguous (files may share or reorder vertices).
+    gather(ply.positions, ply.barbIndices);
+    gather(ply.normals, ply.barbIndices);
+    gather(ply.barbuleH, ply.barbIndices);
+    gather(ply.barbuleMu, ply.barbIndices);
+    gather(ply.barbuleHeight, ply.barbIndices);
+  }
+  positions_ = std::move(ply.positions);
+  barbuleH_ = std::move(ply.barbuleH);
+  barbuleMu_ = std::move(ply.barbuleMu);
+  barbuleHeight_ = std::move(ply.barbuleHeight);
+
+  const float scale = linearScale(toWorld);
+  halfWidth_ = 0.5f * params.barbWidth * scale;
+  radius_ = halfWidth_ / std::sin(params.cover);
+  ramusHalfAngle_ = safeAsin(0.5f * params.ramusWidth * scale / radius_);
+  cover_ = params.cover;
+  cosSpan_ = std::cos(params.span);
+  sinSpan_ = std::sin(params.span);
+
+  stripNormals_.resize(barbCount_ * kBarbSegments);
+  tbb::parallel_for(size_t(0), barbCount_, [&](size_t barb) {
+    const Vec3* p = &positions_[barb * kBarbVertices];
+    const Vec3* vn = &ply.normals[barb * kBarbVertices];
+    auto fail = [&](const std::string& msg) {
+      throw InputError(ply.faceLocation(barb), "face " + std::to_string(barb) + ": " + msg);
+    };
+    Vec3 dir[kBarbSegments];
+    for (int i = 0; i < kBarbSegments; ++i) {
+      if (!(lengthSquared(p[i + 1] - p[i]) > 0.0f))
+        fail("vertices " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide (a zero-length segment)");
+      dir[i] = segmentDirection(p[i], p[i + 1]);
+      // Beyond 120 degrees the mitre cuts reach far past the joint and the strips fold.
+      if (i > 0 && dot(dir[i - 1], dir[i]) < -0.5f)
+        fail("the barb turns by " + std::to_string(int(radToDeg(safeAcos(dot(dir[i - 1], dir[i]))))) +
+             " degrees at vertex " + std::to_string(i) + " (at most 120 can be mitred)");
+    }
+    // Transport a basis (e, cross(dir, e)) of the first segment's normal plane along the barb,
+    // then pick the one transported normal that best matches the vane normals.
+    Vec3 e[kBarbSegments];
+    e[0] = perpendicularTo(dir[0], vn[0] + vn[1]);
+    for (int i = 1; i < kBarbSegments; ++i) e[i] = transportAcrossJoint(e[i - 1], mitreNormal(dir[i - 1], dir[i]));
+    float alongE = 0.0f, alongCross = 0.0f;
+    for (int i = 0; i < kBarbSegments; ++i) {
+      Vec3 target = vn[i] + vn[i + 1];
+      alongE += dot(target, e[i]);
+      alongCross += dot(target, cross(dir[i], e[i]));
+    }
+    float angle = std::atan2(alongCross, alongE);
+    Vec3* n = &stripNormals_[barb * kBarbSegments];
+    n[0] = normalize(e[0] * std::cos(angle) + cross(dir[0], e[0]) * std::sin(angle));
+    for (int i = 1; i < kBarbSegments; ++i) n[i] = transportAcrossJoint(n[i - 1], mitreNormal(dir[i - 1], dir[i]));
+  });
+}
+
+BarbStrip FeatherShape::strip(size_t primID) const {
+  size_t barb = primID / kBarbSegments;
+  int seg = int(primID % kBarbSegments);
+  return BarbStrip::fromPolyline(&positions_[barb * kBarbVertices], kBarbVertices, seg,
+                                 stripNormals_[primID], radius_, halfWidth_ * taper(seg), halfWidth_ * taper(seg + 1));
+}
+
+unsigned FeatherShape::addToEmbree(RTCDevice device, RTCScene scene) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geom, unsigned(primitiveCount()));
+  rtcSetGeometryUserData(geom, const_cast<FeatherShape*>(this));
+  rtcSetGeometryBoundsFunction(geom, boundsCallback, nullptr);
+  rtcSetGeometryIntersectFunction(geom, intersectCallback);
+  rtcSetGeometryOccludedFunction(geom, occludedCallback);
+  rtcCommitGeometry(geom);
+  unsigned id = rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  return id;
+}
+
+SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hit) const {
+  const BarbStrip s = strip(hit.primID);
+  const size_t barb = hit.primID / kBarbSegments;
+  const int seg = int(hit.primID % kBarbSegments);
+  const float angle = hit.v;
+  SurfaceInteraction si;
+  si.p = s.point(hit.u, angle);
+  si.ng = s.normal(angle);
+  si.t = hit.t;
+  si.shape = this;
+  const float along = clampf(hit.u, 0.0f, 1.0f);
+  si.uv = Vec2((float(seg) + along) / float(kBarbSegments), angle / cover_);
+  Vec3 t = s.axis;
+  if (std::abs(angle) >= ramusHalfAngle_) {
+    // Barbules point toward the tip and away from the ramus on either side.
+    Vec3 outward = s.circumferential(angle) * (angle > 0.0f ? 1.0f : -1.0f);
+    t = s.axis * cosSpan_ + outward * sinSpan_;
+  }
+  si.shading = Frame(cross(t, si.ng), t, si.ng);
+  const size_t v0 = barb * kBarbVertices + size_t(seg);
+  auto interpolate = [&](const std::vector<float>& values) {
+    return values.empty() ? std::numeric_limits<float>::quiet_NaN() : lerp(along, values[v0], values[v0 + 1]);
+  };
+  si.bsdfContext.barbuleH = interpolate(barbuleH_);
+  si.bsdfContext.barbuleMu = interpolate(barbuleMu_);
+  si.bsdfContext.barbuleHeight = interpolate(barbuleHeight_);
+  return si;
+}
+
+size_t FeatherShape::memoryBytes() const {
+  return positions_.capacity() * sizeof(Vec3) + stripNormals_.capacity() * sizeof(Vec3) +
+         (barbuleH_.capacity() + barbuleMu_.capacity() + barbuleHeight_.capacity()) * sizeof(float);
+}
+
+}  // namespace columba

@@ -1,0 +1,28 @@
+// The scene-file entry point of the feather shape, apart from the shape itself so that code
+// using FeatherShape directly does not depend on the plug-in registry.
+#include "scene/plugin_registry.h"
+#include "shapes/feather_shape.h"
+
+namespace columba {
+
+std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
+  FeatherShapeParams params;
+  params.barbWidth = props.getFloat("barbwidth", params.barbWidth);
+  params.ramusWidth = props.getFloat("ramuswidth", params.ramusWidth);
+  params.cover = props.getFloat("cover", params.cover);
+  params.span = props.getFloat("span", params.span);
+  params.toWorld = props.getTransform("to_world");
+  if (!(params.barbWidth > 0.0f)) throw props.error("barbwidth", "must be positive");
+  if (!(params.ramusWidth >= 0.0f && params.ramusWidth <= params.barbWidth))
+    throw props.error("ramuswidth", "must be between 0 and barbwidth");
+  if (!(params.cover > 0.0f && params.cover < kHalfPi)) throw props.error("cover", "must be in (0, pi/2) radians");
+  if (!(std::abs(params.span) < kHalfPi)) throw props.error("span", "must be in (-pi/2, pi/2) radians");
+
+  auto shape = std::make_shared<FeatherShape>(readFeatherPly(props.getPath("filename")), params);
+  shape->bsdf = props.child<BSDF>();
+  // Mitsuba's default material when none is nested.
+  if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>("bsdf", "diffuse", props.location);
+  return shape;
+}
+
+}  // namespace columba
