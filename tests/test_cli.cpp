@@ -112,3 +112,20 @@ TEST_F(CliTest, BadCommandLineValuesAreRejected) {
   EXPECT_NE(run("render " + scene + " -D novalue").status, 0);
   EXPECT_NE(run("render " + (dir_ / "absent.xml").string()).status, 0);
 }
+
+TEST_F(CliTest, InterruptWritesThePartialImageAndFails) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  std::string out = (dir_ / "partial.exr").string();
+  // A render far too long to finish; SIGINT after half a second.
+  std::string script = std::string(COLUMBA_BINARY) + " render " + scene + " -D res=64 --spp 1000000 -o " + out +
+                       " >/dev/null 2>&1 & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo status=$?";
+  FILE* pipe = popen(("sh -c '" + script + "'").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[256] = {0};
+  std::string output;
+  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  pclose(pipe);
+  EXPECT_NE(output.find("status=130"), std::string::npos) << output;
+  columba::Image img = columba::readEXR(out);
+  EXPECT_EQ(img.width, 64);
+}

@@ -34,15 +34,17 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   auto start = std::chrono::steady_clock::now();
   tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
+    auto stopRequested = [&] {
+      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
+      cancelled = true;
+      return true;
+    };
     for (int tile = range.begin(); tile != range.end(); ++tile) {
-      if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
-        cancelled = true;
-        return;
-      }
       uint64_t tileRays = 0;
       const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
       for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+          if (stopRequested()) return;  // checked per pixel: Ctrl-C answers quickly at any spp
           double sum[3] = {0, 0, 0};
           for (int s = 0; s < spp; ++s) {
             sampler->startPixelSample(x, y, s, settings.seed);
