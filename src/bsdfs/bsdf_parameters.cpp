@@ -1,0 +1,56 @@
+#include "bsdfs/bsdf_parameters.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include "optics/ior_table.h"
+
+namespace columba {
+
+float readIOR(const Properties& props, const std::string& name, const std::string& defaultName) {
+  std::optional<std::string> material;
+  try {
+    material = props.getString(name, defaultName);
+  } catch (const InputError&) {
+    // Not a string: read as a number below.
+  }
+  float value;
+  if (!material) {
+    value = props.getFloat(name);  // reports kinds that are neither a string nor a number
+  } else {
+    auto named = lookupIOR(*material);
+    if (!named) throw props.error(name, "unknown material '" + *material + "' (give a number or a known name such as 'bk7')");
+    value = *named;
+  }
+  if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");
+  return value;
+}
+
+MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic) {
+  std::string distribution = props.getString("distribution", "beckmann");
+  std::transform(distribution.begin(), distribution.end(), distribution.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  MicrofacetType type;
+  if (distribution == "beckmann") type = MicrofacetType::Beckmann;
+  else if (distribution == "ggx") type = MicrofacetType::GGX;
+  else throw props.error("distribution", "unknown microfacet distribution '" + distribution + "' (use 'beckmann' or 'ggx')");
+
+  props.getBool("sample_visible", true);
+
+  float alphaU, alphaV;
+  if (props.has("alpha_u") || props.has("alpha_v")) {
+    const std::string given = props.has("alpha_u") ? "alpha_u" : "alpha_v";
+    if (!allowAnisotropic) throw props.error(given, "this BSDF supports isotropic roughness only (use 'alpha')");
+    if (props.has("alpha")) throw props.error(given, "give either 'alpha' or 'alpha_u' and 'alpha_v', not both");
+    if (!props.has("alpha_u") || !props.has("alpha_v")) throw props.error(given, "'alpha_u' and 'alpha_v' go together");
+    alphaU = props.getFloat("alpha_u");
+    alphaV = props.getFloat("alpha_v");
+  } else {
+    alphaU = alphaV = props.getFloat("alpha", 0.1f);
+  }
+  if (!(alphaU >= 0.0f && alphaV >= 0.0f))
+    throw props.error(props.has("alpha") ? "alpha" : "alpha_u", "roughness must not be negative");
+  return MicrofacetDistribution(type, alphaU, alphaV);
+}
+
+}  // namespace columba

@@ -1,0 +1,38 @@
+#include "bsdfs/dielectric.h"
+
+#include "bsdfs/bsdf_parameters.h"
+#include "optics/fresnel.h"
+
+namespace columba {
+
+std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl,
+                                                 float uComponent, Vec2) const {
+  const float cosI = cosTheta(wi);
+  // Relative index across the interface as seen from wi's side.
+  const float etaTI = cosI >= 0.0f ? eta_ : 1.0f / eta_;
+  const FresnelAmplitudes a = fresnelAmplitudes(cosI, etaTI);
+  const float reflectance = 0.5f * (a.rs * a.rs + a.rp * a.rp);
+
+  BSDFSample s;
+  s.delta = true;
+  if (uComponent < reflectance) {
+    s.wo = Vec3(-wi.x, -wi.y, wi.z);
+    s.pdf = reflectance;
+    s.weight = specularReflectance_.sample(wl);
+  } else {
+    s.wo = Vec3(-wi.x / etaTI, -wi.y / etaTI, std::copysign(a.cosT, -cosI));
+    s.pdf = 1.0f - reflectance;
+    s.weight = specularTransmittance_.sample(wl) / (etaTI * etaTI);
+  }
+  return s;
+}
+
+std::shared_ptr<Object> makeDielectricBSDF(const Properties& props) {
+  float intIOR = readIOR(props, "int_ior", "bk7");
+  float extIOR = readIOR(props, "ext_ior", "air");
+  return std::make_shared<DielectricBSDF>(intIOR / extIOR,
+                                          props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+                                          props.getSpectrum("specular_transmittance", 1.0f, SpectrumUse::Reflectance));
+}
+
+}  // namespace columba

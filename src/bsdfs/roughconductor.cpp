@@ -1,0 +1,63 @@
+#include "bsdfs/roughconductor.h"
+
+#include "bsdfs/bsdf_parameters.h"
+#include "optics/conductor_fresnel.h"
+
+namespace columba {
+
+RoughConductorBSDF::RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ComplexIOR> ior,
+                                       SpectralDistribution specularReflectance)
+    : distribution_(distribution), ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
+
+Spectrum RoughConductorBSDF::reflectance(float cosI, const Wavelengths& wl) const {
+  Spectrum r = specularReflectance_.sample(wl);
+  if (ior_)
+    for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, ior_->eta.eval(wl[i]), ior_->k.eval(wl[i]));
+  return r;
+}
+
+Spectrum RoughConductorBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
+  Vec3 m = normalize(wi + wo);
+  float value = distribution_.D(m) * distribution_.G(wi, wo, m) / (4.0f * cosTheta(wi));
+  if (value <= 0.0f) return Spectrum(0.0f);
+  return reflectance(dot(wi, m), wl) * value;
+}
+
+float RoughConductorBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+  if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return 0.0f;
+  Vec3 m = normalize(wi + wo);
+  // Visible-normal density times the Jacobian of reflection, dm/dwo = 1 / (4 wo.m).
+  return distribution_.visiblePdf(wi, m) / (4.0f * dot(wo, m));
+}
+
+std::optional<BSDFSample> RoughConductorBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl, float,
+                                                     Vec2 u) const {
+  if (cosTheta(wi) <= 0.0f) return std::nullopt;
+  Vec3 m = distribution_.sampleVisible(wi, u);
+  BSDFSample s;
+  s.wo = reflect(wi, m);
+  if (cosTheta(s.wo) <= 0.0f) return std::nullopt;
+  s.pdf = distribution_.visiblePdf(wi, m) / (4.0f * dot(s.wo, m));
+  if (!(s.pdf > 0.0f)) return std::nullopt;
+  // f cos(wo) / pdf: D, G1(wi) and the Jacobian cancel, leaving the masking of wo.
+  s.weight = reflectance(dot(wi, m), wl) * distribution_.G1(s.wo, m);
+  return s;
+}
+
+std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props) {
+  MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/true);
+  std::string material = props.getString("material", "none");
+  std::optional<RoughConductorBSDF::ComplexIOR> ior;
+  if (props.has("eta") || props.has("k")) {
+    if (material != "none") throw props.error("material", "give either a material or eta and k, not both");
+    ior = RoughConductorBSDF::ComplexIOR{props.getSpectrum("eta", 0.0f, SpectrumUse::Unbounded),
+                                         props.getSpectrum("k", 1.0f, SpectrumUse::Unbounded)};
+  } else if (material != "none") {
+    throw props.error("material", "no tabulated data for conductor '" + material + "': give its eta and k spectra");
+  }
+  return std::make_shared<RoughConductorBSDF>(distribution, std::move(ior),
+                                              props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
+}
+
+}  // namespace columba

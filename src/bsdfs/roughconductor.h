@@ -1,0 +1,40 @@
+#pragma once
+// Rough metal (Mitsuba's `roughconductor`): microfacet reflection (Walter et al. 2007) with a
+// conductor's Fresnel term, sampled through the visible normals. One-sided.
+#include <memory>
+#include <optional>
+#include "bsdfs/bsdf.h"
+#include "bsdfs/microfacet.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class RoughConductorBSDF : public BSDF {
+ public:
+  // Complex index of refraction of the metal relative to the outside.
+  struct ComplexIOR {
+    SpectralDistribution eta, k;
+  };
+  // Without `ior` every microfacet is a perfect mirror (Fresnel = 1).
+  RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ComplexIOR> ior,
+                     SpectralDistribution specularReflectance);
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+
+ private:
+  // Specular reflectance times the Fresnel reflectance at cos(wi, m) = cosI.
+  Spectrum reflectance(float cosI, const Wavelengths& wl) const;
+
+  MicrofacetDistribution distribution_;
+  std::optional<ComplexIOR> ior_;
+  SpectralDistribution specularReflectance_;
+};
+
+// Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1) or alpha_u and alpha_v,
+// sample_visible; material ("none" = perfect mirror, the default) or eta (default 0) and k
+// (default 1) spectra; specular_reflectance (1). Named metals are not tabulated: give eta and k.
+std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props);
+
+}  // namespace columba

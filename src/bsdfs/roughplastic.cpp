@@ -1,0 +1,101 @@
+#include "bsdfs/roughplastic.h"
+
+#include "bsdfs/bsdf_parameters.h"
+#include "core/sampling.h"
+#include "optics/fresnel.h"
+
+namespace columba {
+
+float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distribution, float mu, float eta) {
+  // Mean over the visible normals of F(wi.m) G1(wo, m): reflection about a visible normal
+  // escapes unless the microsurface masks wo. Midpoints of the sampler's unit square.
+  constexpr int kSteps = 32;
+  const Vec3 wi(safeSqrt(1.0f - mu * mu), 0.0f, mu);
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i)
+    for (int j = 0; j < kSteps; ++j) {
+      Vec3 m = distribution.sampleVisible(wi, Vec2((i + 0.5f) / kSteps, (j + 0.5f) / kSteps));
+      Vec3 wo = reflect(wi, m);
+      if (cosTheta(wo) > 0.0f) sum += fresnelDielectric(dot(wi, m), eta) * distribution.G1(wo, m);
+    }
+  return float(sum / (kSteps * kSteps));
+}
+
+RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta,
+                                   SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
+                                   bool nonlinear)
+    : distribution_(distribution), eta_(eta), diffuseReflectance_(std::move(diffuseReflectance)),
+      specularReflectance_(std::move(specularReflectance)), nonlinear_(nonlinear) {
+  float d = diffuseReflectance_.meanValue(), s = specularReflectance_.meanValue();
+  specularSamplingWeight_ = d + s > 0.0f ? s / (d + s) : 0.5f;
+
+  // Grazing directions are nudged off the horizon, where the sampler is undefined.
+  for (int i = 0; i < kTableSize; ++i)
+    externalTransmittance_[i] = 1.0f - coatReflectance(distribution_, std::max(float(i) / (kTableSize - 1), 1e-4f), eta_);
+
+  // 2 * integral of R(mu) mu dmu = mean of R(sqrt(s)) over s in [0, 1] (midpoint rule).
+  constexpr int kSteps = 32;
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i)
+    sum += coatReflectance(distribution_, std::sqrt((i + 0.5f) / kSteps), 1.0f / eta_);
+  internalReflectance_ = float(sum / kSteps);
+}
+
+float RoughPlasticBSDF::externalTransmittance(float mu) const {
+  float x = clampf(mu, 0.0f, 1.0f) * (kTableSize - 1);
+  int i = std::min(int(x), kTableSize - 2);
+  return lerp(x - i, externalTransmittance_[i], externalTransmittance_[i + 1]);
+}
+
+float RoughPlasticBSDF::specularProbability(float cosI) const {
+  float reflected = 1.0f - externalTransmittance(cosI);
+  float specular = reflected * specularSamplingWeight_;
+  float diffuse = (1.0f - reflected) * (1.0f - specularSamplingWeight_);
+  return specular + diffuse > 0.0f ? specular / (specular + diffuse) : 0.0f;
+}
+
+Spectrum RoughPlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
+  Vec3 m = normalize(wi + wo);
+  float specular = fresnelDielectric(dot(wi, m), eta_) * distribution_.D(m) * distribution_.G(wi, wo, m) /
+                   (4.0f * cosTheta(wi));
+  Spectrum kd = diffuseReflectance_.sample(wl);
+  Spectrum base = kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
+  float transmission = externalTransmittance(cosTheta(wi)) * externalTransmittance(cosTheta(wo));
+  return specularReflectance_.sample(wl) * specular + base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
+}
+
+float RoughPlasticBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+  if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return 0.0f;
+  Vec3 m = normalize(wi + wo);
+  float pSpecular = specularProbability(cosTheta(wi));
+  return pSpecular * distribution_.visiblePdf(wi, m) / (4.0f * dot(wo, m)) +
+         (1.0f - pSpecular) * cosineHemispherePdf(cosTheta(wo));
+}
+
+std::optional<BSDFSample> RoughPlasticBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                                   float uComponent, Vec2 u) const {
+  if (cosTheta(wi) <= 0.0f) return std::nullopt;
+  BSDFSample s;
+  if (uComponent < specularProbability(cosTheta(wi)))
+    s.wo = reflect(wi, distribution_.sampleVisible(wi, u));
+  else
+    s.wo = sampleCosineHemisphere(u);
+  // Both lobes can produce any direction: weight by the mixture density (one-sample MIS).
+  s.pdf = pdf(ctx, wi, s.wo, wl);
+  if (!(s.pdf > 0.0f)) return std::nullopt;
+  s.weight = eval(ctx, wi, s.wo, wl) / s.pdf;
+  return s;
+}
+
+std::shared_ptr<Object> makeRoughPlasticBSDF(const Properties& props) {
+  MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/false);
+  float intIOR = readIOR(props, "int_ior", "polypropylene");
+  float extIOR = readIOR(props, "ext_ior", "air");
+  return std::make_shared<RoughPlasticBSDF>(distribution, intIOR / extIOR,
+                                            props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
+                                            props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+                                            props.getBool("nonlinear", false));
+}
+
+}  // namespace columba

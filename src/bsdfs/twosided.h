@@ -1,0 +1,30 @@
+#pragma once
+// Two-sided adapter (Mitsuba's `twosided`): the front BSDF for wi above the surface, the back
+// BSDF, mirrored through the surface, for wi below it. Meant for reflective BSDFs; nested BSDFs
+// that transmit would scatter into the wrong side.
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+class TwoSidedBSDF : public BSDF {
+ public:
+  TwoSidedBSDF(std::shared_ptr<const BSDF> front, std::shared_ptr<const BSDF> back)
+      : front_(std::move(front)), back_(std::move(back)) {}
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
+  bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
+  bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
+
+ private:
+  std::shared_ptr<const BSDF> front_, back_;
+};
+
+// One nested BSDF (used on both sides) or two (front, then back).
+std::shared_ptr<Object> makeTwoSidedBSDF(const Properties& props);
+
+}  // namespace columba
