@@ -2,24 +2,18 @@
 
 #include <algorithm>
 #include <cctype>
-#include <optional>
 #include "optics/ior_table.h"
 
 namespace columba {
 
 float readIOR(const Properties& props, const std::string& name, const std::string& defaultName) {
-  std::optional<std::string> material;
-  try {
-    material = props.getString(name, defaultName);
-  } catch (const InputError&) {
-    // Not a string: read as a number below.
-  }
   float value;
-  if (!material) {
+  if (props.has(name) && !props.isString(name)) {
     value = props.getFloat(name);  // reports kinds that are neither a string nor a number
   } else {
-    auto named = lookupIOR(*material);
-    if (!named) throw props.error(name, "unknown material '" + *material + "' (give a number or a known name such as 'bk7')");
+    std::string material = props.getString(name, defaultName);
+    auto named = lookupIOR(material);
+    if (!named) throw props.error(name, "unknown material '" + material + "' (give a number or a known name such as 'bk7')");
     value = *named;
   }
   if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");

@@ -48,6 +48,11 @@ const Properties::Value& Properties::require(const std::string& name, std::initi
 
 bool Properties::has(const std::string& name) const { return values_.count(name) > 0; }
 
+bool Properties::isString(const std::string& name) const {
+  auto it = values_.find(name);
+  return it != values_.end() && it->second.kind == ValueKind::String;
+}
+
 namespace {
 
 float toFloat(const Properties::Value& v, const std::string& name) {
