@@ -1,0 +1,165 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include "core/rng.h"
+#include "optics/dispersion.h"
+#include "optics/fresnel.h"
+#include "optics/melanin.h"
+#include "optics/thin_film.h"
+
+using namespace columba;
+
+namespace {
+constexpr double kAir = 1.000277;
+double keratin(double lambda) { return CauchyIOR::keratin()(float(lambda)); }
+}  // namespace
+
+TEST(ThinFilm, ZeroThicknessIsTheBareInterface) {
+  // Without thickness the film disappears: air over a keratin substrate is one Fresnel interface,
+  // whatever the film's index.
+  for (double filmIndex : {1.33, 1.55, 2.2})
+    for (double cosI : {1.0, 0.8, 0.5, 0.2, 0.05}) {
+      ThinFilmAmplitudes a = thinFilmAmplitudes(cosI, kAir, filmIndex, 1.56, 0.0, 550.0);
+      FresnelAmplitudes f = fresnelAmplitudes(float(cosI), float(1.56 / kAir));
+      EXPECT_NEAR(a.rs.real(), f.rs, 1e-6);
+      EXPECT_NEAR(a.rp.real(), f.rp, 1e-6);
+      EXPECT_NEAR(a.rs.imag(), 0.0, 1e-9);
+      EXPECT_NEAR(thinFilmReflectance(cosI, kAir, filmIndex, 1.56, 0.0, 550.0), fresnelDielectric(float(cosI), float(1.56 / kAir)), 1e-6);
+    }
+  // A free-standing film of zero thickness reflects nothing, in both implementations.
+  EXPECT_NEAR(thinFilmReflectance(0.7, kAir, 1.55, kAir, 0.0, 500.0), 0.0, 1e-12);
+  FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), 0.0f, Wavelengths::fixed({400, 500, 600, 700}));
+  FreeStandingFilm::Reflectance r = film.reflectance(0.7f);
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    EXPECT_NEAR(r.s[i], 0.0f, 1e-6f);
+    EXPECT_NEAR(r.p[i], 0.0f, 1e-6f);
+  }
+}
+
+TEST(ThinFilm, NormalIncidenceMatchesTheClosedForm) {
+  // R = (r1^2 + r2^2 + 2 r1 r2 cos(delta)) / (1 + r1^2 r2^2 + 2 r1 r2 cos(delta)), delta = 4 pi n2 d / lambda.
+  for (double n3 : {1.0, 1.3, 2.0})
+    for (double d : {0.1, 0.35, 0.58, 1.2})
+      for (double lambda : {380.0, 455.0, 530.0, 610.0, 700.0, 820.0}) {
+        double n1 = kAir, n2 = keratin(lambda);
+        double r1 = (n1 - n2) / (n1 + n2), r2 = (n2 - n3) / (n2 + n3);
+        double cosDelta = std::cos(4.0 * M_PI * n2 * d * 1000.0 / lambda);
+        double expected = (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cosDelta) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cosDelta);
+        EXPECT_NEAR(thinFilmReflectance(1.0, n1, n2, n3, d, lambda), expected, 1e-9)
+            << "n3 " << n3 << " d " << d << " lambda " << lambda;
+      }
+}
+
+TEST(ThinFilm, PeakMovesToShorterWavelengthsAsTheAngleGrows) {
+  // The green interference order of a 0.58 um keratin film: follow its reflectance maximum from
+  // normal incidence to grazing.
+  auto reflectance = [](double lambda, double cosI) { return thinFilmReflectance(cosI, kAir, keratin(lambda), kAir, 0.58, lambda); };
+  auto peakNear = [&](double start, double cosI) {
+    double best = start, bestValue = -1.0;
+    for (double lambda = start - 40.0; lambda <= start + 40.0; lambda += 0.05)
+      if (double v = reflectance(lambda, cosI); v > bestValue) { bestValue = v; best = lambda; }
+    return best;
+  };
+  double peak = peakNear(520.0, 1.0);
+  EXPECT_GT(peak, 490.0);
+  EXPECT_LT(peak, 550.0);
+  std::cout << "peak at 0 deg: " << peak << " nm";
+  for (double degrees : {20.0, 40.0, 60.0, 75.0}) {
+    double next = peakNear(peak, std::cos(degrees * M_PI / 180.0));
+    std::cout << ", " << degrees << " deg: " << next << " nm";
+    EXPECT_LT(next, peak - 1.0) << degrees << " degrees";
+    peak = next;
+  }
+  std::cout << "\n";
+}
+
+TEST(ThinFilm, ReflectanceAndTransmittanceStayInTheUnitInterval) {
+  PCG32 rng(3);
+  for (int i = 0; i < 20000; ++i) {
+    double cosI = rng.nextDouble(), lambda = 360.0 + 470.0 * rng.nextDouble(), d = 2.0 * rng.nextDouble();
+    double n1 = 1.0 + rng.nextDouble(), n2 = 1.0 + 1.5 * rng.nextDouble(), n3 = 1.0 + 1.5 * rng.nextDouble();
+    double R = thinFilmReflectance(cosI, n1, n2, n3, d, lambda), T = thinFilmTransmittance(cosI, n1, n2, n3, d, lambda);
+    ASSERT_GE(R, 0.0);
+    ASSERT_LE(R, 1.0 + 1e-12);
+    ASSERT_GE(T, 0.0);
+    ASSERT_LE(T, 1.0 + 1e-12);
+  }
+}
+
+TEST(ThinFilm, LosslessFilmConservesEnergy) {
+  // R + T = 1 per polarisation, with T = (n3 cos theta3) / (n1 cos theta1) |t|^2: a free-standing
+  // film (n3 = n1), a film on a substrate, and beyond the substrate's critical angle (T = 0).
+  PCG32 rng(5);
+  for (int i = 0; i < 5000; ++i) {
+    double cosI = 0.01 + 0.99 * rng.nextDouble(), lambda = 360.0 + 470.0 * rng.nextDouble(), d = 1.5 * rng.nextDouble();
+    double n1 = 1.0 + 0.6 * rng.nextDouble(), n2 = 1.0 + 1.5 * rng.nextDouble();
+    for (double n3 : {n1, 1.0 + 1.5 * rng.nextDouble()}) {
+      ThinFilmAmplitudes a = thinFilmAmplitudes(cosI, n1, n2, n3, d, lambda);
+      ASSERT_NEAR(std::norm(a.rs) + a.transmittanceFactor * std::norm(a.ts), 1.0, 1e-9);
+      ASSERT_NEAR(std::norm(a.rp) + a.transmittanceFactor * std::norm(a.tp), 1.0, 1e-9);
+    }
+  }
+  ThinFilmAmplitudes tir = thinFilmAmplitudes(0.3, 1.5, 1.4, 1.0, 0.3, 500.0);
+  EXPECT_EQ(tir.transmittanceFactor, 0.0);
+  EXPECT_NEAR(std::norm(tir.rs), 1.0, 1e-9);
+  EXPECT_NEAR(std::norm(tir.rp), 1.0, 1e-9);
+}
+
+TEST(ThinFilm, FreeStandingFilmMatchesTheAirySum) {
+  // The real-arithmetic film of the barbule BSDF against the general complex evaluation.
+  PCG32 rng(9);
+  for (int i = 0; i < 2000; ++i) {
+    std::array<float, kSpectrumSamples> lambdas;
+    for (float& l : lambdas) l = 360.0f + 470.0f * rng.nextFloat();
+    float height = 1.2f * rng.nextFloat(), cosI = rng.nextFloat();
+    Wavelengths wl = Wavelengths::fixed(lambdas);
+    FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), height, wl);
+    FreeStandingFilm::Reflectance r = film.reflectance(cosI);
+    // Near grazing incidence the film's reflectance changes by ~1e-5 per float ulp of the cosine.
+    double tolerance = cosI > 0.05f ? 2e-5 : 5e-4;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      ThinFilmAmplitudes a = thinFilmAmplitudes(std::max(cosI, 1e-4f), kAir, keratin(wl[k]), kAir, height, wl[k]);
+      ASSERT_NEAR(r.s[k], std::norm(a.rs), tolerance) << "cos " << cosI << " lambda " << wl[k] << " d " << height;
+      ASSERT_NEAR(r.p[k], std::norm(a.rp), tolerance) << "cos " << cosI << " lambda " << wl[k] << " d " << height;
+      // Its transmittance 1 - R is the film transmission |t|^2 of the Airy sum.
+      ASSERT_NEAR(1.0f - r.s[k], std::norm(a.ts), tolerance);
+    }
+  }
+}
+
+TEST(Optics, KeratinFollowsCauchysLaw) {
+  CauchyIOR k = CauchyIOR::keratin();
+  EXPECT_NEAR(k(500.0f), 1.532f + 5890.0f / 250000.0f, 1e-6f);
+  EXPECT_GT(k(400.0f), k(700.0f));  // normal dispersion
+  ASSERT_TRUE(iorFromName("keratin"));
+  EXPECT_EQ(iorFromName("keratin")->b, 5890.0f);
+  ASSERT_TRUE(iorFromName("air"));
+  EXPECT_NEAR((*iorFromName("air"))(550.0f), 1.000277f, 1e-7f);
+  ASSERT_TRUE(iorFromName("1.6"));
+  EXPECT_NEAR((*iorFromName("1.6"))(400.0f), 1.6f, 1e-7f);
+  EXPECT_FALSE(iorFromName("unobtainium"));
+  EXPECT_FALSE(iorFromName("-1"));
+  EXPECT_FALSE(iorFromName("1.5x"));
+}
+
+TEST(Optics, MelaninTableMatchesTheMeasuredData) {
+  std::ifstream file(std::string(COLUMBA_SHARED_DIR) + "/reference/data/melanin.r.spd");
+  ASSERT_TRUE(file) << "reference data not found";
+  double lambda, value, previousLambda = 0, previousValue = 0;
+  int count = 0;
+  while (file >> lambda >> value) {
+    EXPECT_NEAR(melaninReflectance(float(lambda)), value, 1e-6) << lambda;
+    if (count > 0) {
+      // Linear in between.
+      double mid = 0.5 * (lambda + previousLambda);
+      EXPECT_NEAR(melaninReflectance(float(mid)), 0.5 * (value + previousValue), 1e-5) << mid;
+    }
+    previousLambda = lambda;
+    previousValue = value;
+    ++count;
+  }
+  EXPECT_EQ(count, 105);
+  // Constant beyond the measured range.
+  EXPECT_NEAR(melaninReflectance(100.0f), 0.0300f, 1e-6f);
+  EXPECT_NEAR(melaninReflectance(1500.0f), 0.0593f, 1e-6f);
+}
