@@ -1,0 +1,98 @@
+#pragma once
+// The barbule array seen in its cross-section plane (the plane normal to the barbule axis t).
+//
+// 2D coordinates: u along the vane normal n, v along x (across the barbules); angles are
+// measured from u toward v, so a 3D direction (x, y, z) projects to the 2D direction
+// (z, x) / |(z, x)| at azimuth gamma = atan2(x, z). One barbule is an ellipse with semi-axis b
+// along its own u axis and 1 along its own v axis, turned by mu; in its own ("local") frame a
+// point at normal angle phi is (b^2 cos phi, sin phi) / sqrt(b^2 cos^2 phi + sin^2 phi). Only
+// normals phi in (phi0, phi1) belong to the reflective, film-coated arc. Its neighbours are the
+// same ellipse shifted by (0, +-H); they shadow and mask the central one.
+//
+// Seen along a direction d, the ellipse's lit side is parametrised by the offset h of the ray
+// across d (h = p . across, across = d turned by +90 degrees); h grows monotonically with the
+// normal angle over the lit side, so every set of lit points below is an interval of offsets.
+#include <optional>
+#include "core/vector.h"
+
+namespace columba {
+
+inline float cross2(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline float dot2(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+
+// The part of the central barbule's reflective arc that a 2D direction reaches (lit: facing
+// it and not shadowed by a neighbour), in the ellipse's local frame.
+struct LitArc {
+  Vec2 toward;              // unit direction toward the light (local frame)
+  Vec2 across;              // `toward` turned by +90 degrees: the axis of the offsets h
+  float halfWidth = 0.0f;   // the whole ellipse's silhouette spans offsets [-halfWidth, halfWidth]
+  float hMin = 0.0f, hMax = 0.0f;  // offsets of the lit part; empty when hMax <= hMin
+  // Front intersection of the ray at offset h: s = (-q h + sqrt(a - h^2 / b^2)) / a.
+  float a = 1.0f, q = 0.0f;
+
+  float width() const { return hMax > hMin ? hMax - hMin : 0.0f; }
+};
+
+// Offsets [lo, hi] (empty when hi <= lo).
+struct OffsetInterval {
+  float lo = 0.0f, hi = 0.0f;
+  float length() const { return hi > lo ? hi - lo : 0.0f; }
+};
+
+class BarbuleCrossSection {
+ public:
+  // phi1 - phi0 must lie in (0, pi] (the arc faces any direction in one piece) or be >= 2 pi (the
+  // whole ellipse reflects). H below the contact spacing would make neighbours interpenetrate;
+  // it is raised to it (barbules packed edge to edge).
+  BarbuleCrossSection(float b, float phi0, float phi1, float mu, float H);
+
+  // Smallest spacing at which two neighbouring ellipses do not overlap: translates K and K + w of
+  // a centrally symmetric convex K overlap iff w/2 lies inside K.
+  static float contactSpacing(float b, float mu);
+
+  float b() const { return b_; }
+  float spacing() const { return H_; }
+
+  Vec2 toLocal(Vec2 w) const { return {w.x * cosMu_ + w.y * sinMu_, -w.x * sinMu_ + w.y * cosMu_}; }
+  Vec2 toWorld(Vec2 l) const { return {l.x * cosMu_ - l.y * sinMu_, l.x * sinMu_ + l.y * cosMu_}; }
+
+  // Lit part of the reflective arc for the unit world direction `toward` (either side of the vane).
+  LitArc litArc(Vec2 toward) const;
+  // Fraction of the projected barbule period H |cos gamma| that the lit arc covers, in [0, 1].
+  float coverage(const LitArc& arc, Vec2 toward) const;
+
+  // Point (local) where the ray at offset h coming along -toward first meets the central ellipse;
+  // h must lie within [-halfWidth, halfWidth].
+  Vec2 pointAt(const LitArc& arc, float h) const;
+  // Unit outward normal (local) of the central ellipse at a point on it.
+  Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
+  // Point (local) of the central ellipse whose outward normal is the local unit vector n.
+  Vec2 pointWithNormal(Vec2 n) const;
+  // Whether the point with local unit normal n is lit along `arc`'s direction (masking and
+  // shadowing test: it faces the direction, lies on the reflective arc and no neighbour blocks it).
+  bool isLit(const LitArc& arc, Vec2 n) const;
+  // Offsets along `a` of the points lit along both `a` and `b`.
+  OffsetInterval commonOffsets(const LitArc& a, const LitArc& b) const;
+
+  // Radius of curvature at the point with local unit normal n: b^2 (n_v^2 + b^2 n_u^2)^(-3/2).
+  float radiusOfCurvature(Vec2 n) const;
+  bool onReflectiveArc(Vec2 n) const;
+
+  // Nearest hit t > 0 of the world-space 2D ray origin + t dir (dir unit) with the central ellipse.
+  std::optional<float> intersect(Vec2 origin, Vec2 dir) const;
+
+ private:
+  static Vec2 normalize2(Vec2 v) {
+    float inv = 1.0f / std::sqrt(v.x * v.x + v.y * v.y);
+    return {v.x * inv, v.y * inv};
+  }
+
+  float b_, bSqr_, invBSqr_, H_;
+  float cosMu_, sinMu_;
+  Vec2 neighbour_;           // local offset of the neighbour at +H
+  bool wholeEllipse_;
+  Vec2 arcStartNormal_, arcEndNormal_;  // local normals at phi0 and phi1
+  Vec2 arcStartPoint_, arcEndPoint_;
+};
+
+}  // namespace columba
