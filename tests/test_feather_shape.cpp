@@ -160,7 +160,9 @@ TEST(FeatherShape, ShadingFramesFollowTheBarbules) {
     Vec3 target = s.point(along, angle);
     Vec3 toSource = normalize(s.normal(angle) + randomUnitVector(rng) * 0.3f);
     auto hitP = scene.intersect(rayToward(target, toSource, 0.02f));
-    auto hitM = scene.intersect(rayToward(s.point(along, -angle), toSource, 0.02f));
+    // The mirror image of that ray in the plane of the barb axis and the strip normal.
+    Vec3 toSourceMirrored = toSource - 2.0f * dot(toSource, s.b) * s.b;
+    auto hitM = scene.intersect(rayToward(s.point(along, -angle), toSourceMirrored, 0.02f));
     ASSERT_TRUE(hitP && hitM);
     ASSERT_EQ(hitP->first.primID, prim);
     const SurfaceInteraction& si = hitP->second;
@@ -185,6 +187,7 @@ TEST(FeatherShape, ShadingFramesFollowTheBarbules) {
     // Pointing away from the ramus: toward +b on the positive side.
     EXPECT_GT(dot(f.t, s.b) * angle, 0.0f);
     // The other side's barbule is the mirror image in the plane of the axis and the normal.
+    ASSERT_EQ(hitM->first.primID, prim);
     Vec3 t = f.t, mirrored = t - 2.0f * dot(t, s.b) * s.b;
     EXPECT_NEAR(length(mirrored - hitM->second.shading.t), 0.0f, 1e-4f);
   }

@@ -9,8 +9,12 @@ namespace columba {
 
 namespace {
 
-// Width of the barb at vertex `i` relative to its base.
-float taper(int i) { return 1.0f - (1.0f - FeatherShape::kTipWidthFraction) * float(i) / float(kBarbSegments); }
+// Width of the barb at vertex `i` relative to its base: quadratic, so the vane stays closed
+// over most of a barb's length and opens into a fringe toward the tips.
+float taper(int i) {
+  float u = float(i) / float(kBarbSegments);
+  return 1.0f - (1.0f - FeatherShape::kTipWidthFraction) * u * u;
+}
 
 // Any unit vector perpendicular to the unit vector `a`, as close as possible to `v`.
 Vec3 perpendicularTo(const Vec3& a, const Vec3& v) {

@@ -7,8 +7,10 @@
 // - to_world is applied to the vertices and normals at load. Widths (barbwidth, ramuswidth and
 //   the strip radius) are in PLY units and scale with the cube root of |det| of to_world.
 // - The strip radius is R = (barbwidth / 2) / sin(cover), so at a barb's base the strip spans
-//   +-cover around its normal. Barbs taper linearly from full width at the base (first vertex)
-//   to kTipWidthFraction of it at the tip; the radius stays R, the angular span shrinks.
+//   +-cover around its normal. Barbs taper from full width at the base (first vertex) to
+//   kTipWidthFraction of it at the tip, quadratically in the position along the barb (so
+//   vanes stay closed and fray toward their edges); the radius stays R, the angular span
+//   shrinks. Within a segment the width is interpolated linearly.
 // - Strip normals: the per-vertex vane normals, projected perpendicular to each segment, are
 //   fitted (least squares) by one normal per barb transported from segment to segment by
 //   reflection in the mitre planes. That transport is what lets consecutive cylinders meet
@@ -46,6 +48,8 @@ struct FeatherShapeParams {
 class FeatherShape : public Shape {
  public:
   static constexpr float kTipWidthFraction = 0.3f;
+  // Mean barb width over its length, relative to the base (the taper's average).
+  static constexpr float kMeanWidthFraction = 1.0f - (1.0f - kTipWidthFraction) / 3.0f;
 
   // Throws InputError for invalid parameters or barbs (zero-length segments, sharp turns).
   FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params);

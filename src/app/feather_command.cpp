@@ -1,0 +1,45 @@
+#include "app/feather_command.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <memory>
+#include "feather/feather_generator.h"
+
+namespace columba {
+
+void addFeatherCommand(CLI::App& app) {
+  struct Settings {
+    bool single = false, neck = false;
+    std::string output;
+    FeatherGenerationOptions options;
+  };
+  auto settings = std::make_shared<Settings>();
+  CLI::App* cmd = app.add_subcommand("feather", "Write procedural feather geometry as a feather PLY");
+  auto* single = cmd->add_flag("--single", settings->single, "One feather, 1.2 long, centred on the origin, facing +z");
+  auto* neck = cmd->add_flag("--neck", settings->neck,
+                             "A neck of overlapping feathers (x in [-2.4, 3.4], y in [-1.6, 3], facing +z)");
+  single->excludes(neck);
+  cmd->add_option("-o,--output", settings->output, "Output PLY file")->required();
+  cmd->add_option("--seed", settings->options.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--feathers", settings->options.feathers, "Feathers on the neck")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->needs(neck);
+  cmd->add_option("--barbs", settings->options.barbsPerSide,
+                  "Barbs per side of each feather (default: as many as lie edge to edge at the default barbwidth)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--binary", settings->options.binary, "Write binary_little_endian instead of ASCII");
+  cmd->callback([settings] {
+    if (settings->single == settings->neck) throw CLI::ValidationError("feather", "choose one of --single or --neck");
+    settings->options.neck = settings->neck;
+    auto start = std::chrono::steady_clock::now();
+    FeatherGenerationSummary s = generateFeatherPly(settings->options, settings->output);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("wrote {}: {} feather{}, {} barbs, {} vertices in {:.2f} s; barbs lie edge to edge at barbwidth {:.4g}\n",
+               settings->output, s.feathers, s.feathers == 1 ? "" : "s", s.barbs, s.vertices, seconds,
+               s.tilingBarbWidth);
+  });
+}
+
+}  // namespace columba

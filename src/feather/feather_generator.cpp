@@ -1,0 +1,128 @@
+#include "feather/feather_generator.h"
+
+#include <stdexcept>
+#include "core/rng.h"
+#include "feather/feather_design.h"
+#include "feather/feather_ply_writer.h"
+#include "feather/neck_layout.h"
+#include "shapes/feather_shape.h"
+
+namespace columba {
+
+namespace {
+
+constexpr float kBarbuleH = 1.25f, kBarbuleMu = -0.35f;
+
+// Takes one feather's own 2D frame (x along the rachis, y across) to the PLY's 3D space: onto
+// the plane z = 0 (no neck) or the neck's surface, raised by the feather's pitch and lowered
+// toward its edges by a slight dome.
+class VaneMapping {
+ public:
+  VaneMapping(const NeckSurface* neck, const FeatherPlacement& placement, const FeatherDesign& design)
+      : neck_(neck), placement_(placement), halfWidth_(0.5f * design.width), dome_(0.01f * design.width),
+        step_(1e-3f * design.length) {}
+
+  // Surface coordinates (X, Y) of a local point.
+  Vec2 surfaceCoordinates(Vec2 local) const {
+    float s = std::sin(placement_.heading), c = std::cos(placement_.heading);
+    Vec2 along(s, c), across(c, -s);
+    return placement_.base + (along * local.x + across * local.y) * placement_.scale;
+  }
+
+  Vec3 position(Vec2 local) const {
+    Vec2 st = surfaceCoordinates(local);
+    float yn = local.y / halfWidth_;
+    float lift = placement_.scale * (placement_.pitch * local.x - dome_ * yn * yn);
+    if (!neck_) return Vec3(st.x, st.y, lift);
+    return neck_->point(st.x, st.y) + neck_->normal(st.x, st.y) * lift;
+  }
+
+  // Normal of the mapped vane; differentiated numerically because the mapping stacks several
+  // bends (neck, pitch, dome) that are simplest kept in position() alone.
+  Vec3 normal(Vec2 local) const {
+    Vec3 dx = position(local + Vec2(step_, 0)) - position(local - Vec2(step_, 0));
+    Vec3 dy = position(local + Vec2(0, step_)) - position(local - Vec2(0, step_));
+    Vec3 n = normalize(cross(dx, dy));
+    Vec2 st = surfaceCoordinates(local);
+    Vec3 up = neck_ ? neck_->normal(st.x, st.y) : Vec3(0, 0, 1);
+    return dot(n, up) < 0.0f ? -n : n;
+  }
+
+ private:
+  const NeckSurface* neck_;
+  FeatherPlacement placement_;
+  float halfWidth_, dome_, step_;
+};
+
+float symmetricJitter(PCG32& rng) { return 2.0f * rng.nextFloat() - 1.0f; }
+
+void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const NeckColouring* colouring,
+                  uint64_t seed, FeatherPlyWriter& writer) {
+  PCG32 rng(seed, 0x66656174ULL);
+  BarbVertex vertices[kBarbVertices];
+  for (int side : {-1, 1}) {
+    for (int b = 0; b < design.barbsPerSide; ++b) {
+      float lengthScale = 1.0f + 0.05f * symmetricJitter(rng);
+      float angleOffset = 0.035f * symmetricJitter(rng);
+      float barbuleH = kBarbuleH * (1.0f + 0.04f * symmetricJitter(rng));
+      float thicknessOffset = 0.008f * symmetricJitter(rng);
+      auto polyline = barbPolyline(design, side, b, lengthScale, angleOffset);
+      for (int k = 0; k < kBarbVertices; ++k) {
+        BarbVertex& v = vertices[k];
+        v.position = mapping.position(polyline[k]);
+        v.normal = mapping.normal(polyline[k]);
+        v.barbuleH = barbuleH;
+        v.barbuleMu = kBarbuleMu;
+        float purple = 0.0f;
+        if (colouring) {
+          Vec2 st = mapping.surfaceCoordinates(polyline[k]);
+          purple = colouring->purple(st.x, st.y);
+        }
+        v.barbuleHeight = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
+      }
+      writer.writeBarb(vertices);
+    }
+  }
+}
+
+}  // namespace
+
+FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path) {
+  if (options.neck && options.feathers < 1) throw std::invalid_argument("a neck needs at least one feather");
+  if (options.barbsPerSide < 0) throw std::invalid_argument("the number of barbs per side cannot be negative");
+  const float barbWidth = FeatherShapeParams().barbWidth;
+
+  FeatherDesign design;
+  NeckLayout layout;
+  if (options.neck) {
+    layout = layOutNeck(options.feathers, options.seed);
+    design.length = layout.featherLength;
+    design.width = layout.featherWidth;
+  } else {
+    FeatherPlacement centred;
+    centred.base = Vec2(0.0f, -0.5f * design.length);
+    centred.seed = hashCombine(options.seed, 0);
+    layout.feathers.push_back(centred);
+  }
+  const float meanWidth = FeatherShape::kMeanWidthFraction;
+  design.barbsPerSide = options.barbsPerSide > 0 ? options.barbsPerSide : barbsToTile(design, barbWidth, meanWidth);
+  design.rachisHalfWidth = 0.5f * barbWidth;
+
+  FeatherGenerationSummary summary;
+  summary.feathers = layout.feathers.size();
+  summary.barbs = summary.feathers * 2 * size_t(design.barbsPerSide);
+  summary.vertices = summary.barbs * kBarbVertices;
+  summary.tilingBarbWidth = barbSpacing(design) / meanWidth;
+
+  NeckSurface neck;
+  NeckColouring colouring(options.seed);
+  FeatherPlyWriter writer(path, options.binary, summary.barbs);
+  for (const FeatherPlacement& placement : layout.feathers) {
+    VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
+    writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, writer);
+  }
+  writer.commit();
+  return summary;
+}
+
+}  // namespace columba

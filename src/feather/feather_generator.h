@@ -1,0 +1,41 @@
+#pragma once
+// Procedural feathers written as a feather PLY: one feather centred on the origin (for the
+// single-feather scene), or a neck of many overlapping feathers (see neck_layout.h).
+//
+// Per-vertex barbule parameters, used as they are by the feather shape:
+// - H (barbule spacing) 1.25, varied by +-4% from barb to barb;
+// - mu (barbule tilt) -0.35 rad;
+// - height (keratin cortex thickness, um): 0.60 for green barbules, 0.51 for purple ones, with
+//   +-0.008 from barb to barb. Through the thin film, 0.60 um reflects green at normal incidence
+//   and turns lilac toward 40 degrees; 0.51 um reflects red and blue (purple) at normal
+//   incidence and turns yellow-green toward 40 degrees, the colour swap of real neck feathers.
+//   A single feather is green; on a neck the two blend smoothly over a boundary region.
+// The vane normal is that of the feather's surface (the neck, the feather's pitch and its
+// slight dome across the vane).
+#include <cstdint>
+#include <string>
+
+namespace columba {
+
+struct FeatherGenerationOptions {
+  bool neck = false;
+  int feathers = 60;      // neck only
+  int barbsPerSide = 0;   // 0: as many as lie edge to edge at the feather shape's default barbwidth
+  uint64_t seed = 1;
+  bool binary = false;
+};
+
+struct FeatherGenerationSummary {
+  size_t feathers = 0, barbs = 0, vertices = 0;
+  // The `barbwidth` at which neighbouring (tapering) barbs lie edge to edge, in PLY units.
+  float tilingBarbWidth = 0;
+};
+
+// Writes the PLY to `path` (atomically: a temporary file renamed when complete). Memory use
+// does not grow with the number of feathers or barbs.
+FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path);
+
+inline constexpr float kGreenCortexThickness = 0.60f;   // um
+inline constexpr float kPurpleCortexThickness = 0.51f;  // um
+
+}  // namespace columba

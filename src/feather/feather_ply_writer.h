@@ -1,0 +1,45 @@
+#pragma once
+// Streams barbs into a feather PLY (the format the `feather` shape reads, see
+// shapes/feather_ply.h): vertices go straight to disk as they come, and the faces, which
+// just number the vertices in order, are written at the end. Nothing is kept in memory, so
+// files of any size can be written. The file appears under its name only when complete: it is
+// written beside it under a temporary name and renamed by commit().
+#include <cstdio>
+#include <string>
+#include <vector>
+#include "core/vector.h"
+#include "shapes/feather_ply.h"
+
+namespace columba {
+
+struct BarbVertex {
+  Vec3 position;
+  Vec3 normal;  // vane normal
+  float barbuleH = 0.0f, barbuleMu = 0.0f, barbuleHeight = 0.0f;
+};
+
+class FeatherPlyWriter {
+ public:
+  // Throws std::runtime_error if the temporary file cannot be created.
+  FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount);
+  ~FeatherPlyWriter();
+  FeatherPlyWriter(const FeatherPlyWriter&) = delete;
+  FeatherPlyWriter& operator=(const FeatherPlyWriter&) = delete;
+
+  // One barb, kBarbVertices vertices from base to tip.
+  void writeBarb(const BarbVertex* vertices);
+  // Writes the faces and moves the file into place; throws unless exactly the announced number
+  // of barbs was written and every write succeeded.
+  void commit();
+
+ private:
+  void put(const char* data, size_t size);
+
+  std::string path_, tempPath_;
+  bool binary_;
+  size_t barbCount_, written_ = 0;
+  std::FILE* file_ = nullptr;
+  std::vector<char> buffer_;
+};
+
+}  // namespace columba

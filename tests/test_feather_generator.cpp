@@ -1,0 +1,155 @@
+#include <gtest/gtest.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <unistd.h>
+
+#include "app/feather_command.h"
+#include "feather/feather_generator.h"
+#include "feather/neck_layout.h"
+#include "feather_test_util.h"
+
+using namespace columba;
+using namespace columba::test;
+
+namespace {
+
+class FeatherGeneratorTest : public ::testing::Test {
+ protected:
+  std::filesystem::path dir() const {
+    return std::filesystem::temp_directory_path() / ("columba_feather_gen_" + std::to_string(getpid()));
+  }
+  std::string path(const std::string& name) {
+    std::filesystem::create_directories(dir());
+    return (dir() / name).string();
+  }
+  void TearDown() override { std::filesystem::remove_all(dir()); }
+
+  static std::string contents(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+};
+
+FeatherGenerationOptions neckOptions(int feathers, int barbs, uint64_t seed) {
+  FeatherGenerationOptions o;
+  o.neck = true;
+  o.feathers = feathers;
+  o.barbsPerSide = barbs;
+  o.seed = seed;
+  return o;
+}
+
+}  // namespace
+
+TEST_F(FeatherGeneratorTest, SingleFeatherReloadsThroughTheFeatherShape) {
+  for (bool binary : {false, true}) {
+    FeatherGenerationOptions o;
+    o.binary = binary;
+    std::string file = path(binary ? "single.bin.ply" : "single.ply");
+    FeatherGenerationSummary s = generateFeatherPly(o, file);
+    FeatherPlyData ply = readFeatherPly(file);
+    EXPECT_EQ(ply.barbCount(), s.barbs);
+    EXPECT_EQ(ply.barbIndices.size(), s.barbs * kBarbVertices);
+    EXPECT_EQ(ply.positions.size(), s.vertices);
+    EXPECT_NEAR(s.tilingBarbWidth, FeatherShapeParams().barbWidth, 0.002f);  // the default barb count tiles
+    // About 1.2 long, centred near the origin, facing +z, green.
+    Vec3 lo(1e9f, 1e9f, 1e9f), hi = -lo;
+    double nz = 0;
+    for (size_t i = 0; i < ply.positions.size(); ++i) {
+      lo = minv(lo, ply.positions[i]);
+      hi = maxv(hi, ply.positions[i]);
+      nz += ply.normals[i].z;
+      EXPECT_GT(ply.barbuleHeight[i], 0.58f);
+      EXPECT_NEAR(ply.barbuleH[i], 1.25f, 0.06f);
+      EXPECT_FLOAT_EQ(ply.barbuleMu[i], -0.35f);
+    }
+    EXPECT_NEAR(hi.y - lo.y, 1.2f, 0.15f);
+    EXPECT_LT(std::abs(0.5f * (hi.y + lo.y)), 0.15f);
+    EXPECT_LT(std::abs(0.5f * (hi.x + lo.x)), 0.15f);
+    EXPECT_GT(nz / double(ply.normals.size()), 0.99);
+    FeatherShape shape(std::move(ply), FeatherShapeParams());
+    EXPECT_EQ(shape.primitiveCount(), s.barbs * kBarbSegments);
+  }
+}
+
+TEST_F(FeatherGeneratorTest, OutputDependsOnlyOnTheSeed) {
+  std::string a = path("a.ply"), b = path("b.ply"), c = path("c.ply");
+  generateFeatherPly(neckOptions(8, 6, 42), a);
+  generateFeatherPly(neckOptions(8, 6, 42), b);
+  generateFeatherPly(neckOptions(8, 6, 43), c);
+  EXPECT_EQ(contents(a), contents(b));
+  EXPECT_NE(contents(a), contents(c));
+}
+
+TEST_F(FeatherGeneratorTest, NeckFeathersOverlapLikeRoofTiles) {
+  const int feathers = 30, barbs = 12;
+  std::string file = path("neck.ply");
+  FeatherGenerationOptions o = neckOptions(feathers, barbs, 5);
+  o.binary = true;
+  FeatherGenerationSummary s = generateFeatherPly(o, file);
+  EXPECT_EQ(s.feathers, size_t(feathers));
+  FeatherPlyData ply = readFeatherPly(file);
+  int green = 0, purple = 0;
+  for (float h : ply.barbuleHeight) {
+    green += h > 0.59f;
+    purple += h < 0.52f;
+  }
+  EXPECT_GT(green, int(ply.barbuleHeight.size() / 10));
+  EXPECT_GT(purple, int(ply.barbuleHeight.size() / 10));
+
+  // Few barbs: widen them so that they close the vanes.
+  FeatherShapeParams params;
+  params.barbWidth = s.tilingBarbWidth;
+  FeatherShape shape(std::move(ply), params);
+  EmbreeScene scene(shape);
+  NeckLayout layout = layOutNeck(feathers, 5);
+  PCG32 rng(1);
+  int rays = 0, layered = 0, ordered = 0;
+  for (int i = 0; i < 2000; ++i) {
+    // Straight down onto the middle of the neck.
+    Vec3 o(lerp(rng.nextFloat(), -0.5f, 1.5f), lerp(rng.nextFloat(), 0.0f, 1.5f), 5.0f);
+    Ray ray{o, Vec3(0, 0, -1)};
+    std::vector<size_t> crossed;  // feathers, in the order the ray meets them
+    for (int k = 0; k < 200; ++k) {
+      auto hit = scene.intersect(ray);
+      if (!hit) break;
+      size_t feather = hit->first.primID / kBarbSegments / (2 * barbs);
+      if (crossed.empty() || crossed.back() != feather) crossed.push_back(feather);
+      ray = hit->second.spawnRay(ray.d);
+    }
+    if (crossed.empty()) continue;
+    ++rays;
+    if (crossed.size() < 2) continue;
+    ++layered;
+    // Roof tiles: the feather on top is rooted higher up the neck than the one below it.
+    ordered += layout.feathers[crossed[0]].base.y < layout.feathers[crossed[1]].base.y;
+  }
+  EXPECT_GT(rays, 1900);
+  EXPECT_GT(layered, rays / 2);
+  EXPECT_GT(ordered, layered * 9 / 10) << ordered << " of " << layered;
+}
+
+TEST_F(FeatherGeneratorTest, CommandWritesTheFileAndValidatesItsOptions) {
+  std::string out = path("cli.ply");
+  auto run = [](std::vector<std::string> args) {
+    CLI::App app("columba");
+    addFeatherCommand(app);
+    std::reverse(args.begin(), args.end());  // CLI11 takes the arguments in reverse order
+    app.parse(args);
+  };
+  run({"feather", "--neck", "--feathers", "4", "--barbs", "3", "--binary", "--seed", "9", "-o", out});
+  FeatherPlyData ply = readFeatherPly(out);
+  EXPECT_EQ(ply.barbCount(), 4u * 2u * 3u);
+  for (const auto& entry : std::filesystem::directory_iterator(dir()))
+    EXPECT_EQ(entry.path().filename(), "cli.ply") << "left behind: " << entry.path();
+  EXPECT_THROW(run({"feather", "--single", "--neck", "-o", out}), CLI::ParseError);
+  EXPECT_THROW(run({"feather", "--single"}), CLI::ParseError);
+  EXPECT_THROW(run({"feather", "-o", out}), CLI::ParseError);
+  EXPECT_THROW(run({"feather", "--single", "--feathers", "3", "-o", out}), CLI::ParseError);
+}
