@@ -22,7 +22,9 @@ struct ChiSquareResult {
 double regularizedGammaQ(double a, double x);
 
 // Pearson's test of observed counts against expected counts. Bins expected to hold fewer than
-// `minExpected` are pooled into one. An observation in a bin with zero expectation fails at once.
+// `minExpected` (zero-density bins included) are pooled into one, so a few samples in a sliver
+// the bin quadrature cannot see do not fail the test, while many samples where the density is
+// zero make that pooled bin fail it.
 ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected,
                               double minExpected = 5.0);
 

@@ -10,29 +10,18 @@ void AreaEmitter::attachTo(const Shape* shape) {
 }
 
 std::optional<EmitterSample> AreaEmitter::sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const {
-  PositionSample ps = shape_->samplePosition(u);
-  Vec3 d = ps.p - ref;
-  float dist2 = lengthSquared(d);
-  if (dist2 == 0.0f) return std::nullopt;
-  float dist = std::sqrt(dist2);
-  d = d / dist;
-  float cosLight = -dot(ps.n, d);
-  if (cosLight <= 0.0f) return std::nullopt;  // the back of a one-sided emitter
+  auto rs = shape_->sampleFrom(ref, u);
+  if (!rs || !(rs->pdf > 0.0f)) return std::nullopt;
   EmitterSample s;
-  s.direction = d;
-  s.distance = dist;
+  Vec3 d = rs->p - ref;
+  s.distance = length(d);
+  s.direction = d / s.distance;
   s.radiance = radiance_.sample(wl);
-  s.pdf = ps.pdfArea * dist2 / cosLight;
+  s.pdf = rs->pdf;
   return s;
 }
 
-float AreaEmitter::pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const {
-  Vec3 d = hit.p - ref;
-  float dist2 = lengthSquared(d);
-  float cosLight = -dot(hit.ng, d) / std::sqrt(dist2);
-  if (cosLight <= 0.0f) return 0.0f;
-  return dist2 / (cosLight * shape_->surfaceArea());
-}
+float AreaEmitter::pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const { return shape_->pdfFrom(ref, hit); }
 
 Spectrum AreaEmitter::radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const {
   return dot(hit.ng, toViewer) > 0.0f ? radiance_.sample(wl) : Spectrum(0.0f);

@@ -26,4 +26,20 @@ Ray SurfaceInteraction::spawnRayTo(const Vec3& target) const {
 float Shape::surfaceArea() const { throw std::logic_error("this shape cannot carry an area emitter"); }
 PositionSample Shape::samplePosition(Vec2) const { throw std::logic_error("this shape cannot carry an area emitter"); }
 
+std::optional<ReferenceSample> Shape::sampleFrom(const Vec3& ref, Vec2 u) const {
+  PositionSample ps = samplePosition(u);
+  Vec3 d = ps.p - ref;
+  float dist2 = lengthSquared(d);
+  float cosLight = -dot(ps.n, d) / std::sqrt(dist2);
+  if (dist2 == 0.0f || cosLight <= 0.0f) return std::nullopt;  // the point faces away
+  return ReferenceSample{ps.p, ps.n, ps.pdfArea * dist2 / cosLight};
+}
+
+float Shape::pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const {
+  Vec3 d = hit.p - ref;
+  float dist2 = lengthSquared(d);
+  float cosLight = -dot(hit.ng, d) / std::sqrt(dist2);
+  return cosLight > 0.0f ? dist2 / (cosLight * surfaceArea()) : 0.0f;
+}
+
 }  // namespace columba

@@ -4,6 +4,7 @@
 #include <embree3/rtcore.h>
 
 #include <memory>
+#include <optional>
 #include "bsdfs/bsdf.h"
 #include "core/frame.h"
 #include "core/ray.h"
@@ -41,6 +42,13 @@ struct PositionSample {
   float pdfArea = 0.0f;
 };
 
+// A point on a shape chosen as seen from a reference point, with the solid-angle density of
+// the direction toward it.
+struct ReferenceSample {
+  Vec3 p, n;
+  float pdf = 0.0f;
+};
+
 class Shape : public Object {
  public:
   // Adds this shape's geometry to `scene` (committed) and returns its geometry ID.
@@ -50,6 +58,10 @@ class Shape : public Object {
   // std::logic_error: only shapes that support emission override them.
   virtual float surfaceArea() const;
   virtual PositionSample samplePosition(Vec2 u) const;
+  // Sampling for lighting a point `ref`: by default uniform by area, converted to solid angle;
+  // shapes with a better strategy (spheres: the cone they subtend) override both.
+  virtual std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u) const;
+  virtual float pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const;
   // Number of Embree primitives (for statistics).
   virtual size_t primitiveCount() const = 0;
 

@@ -6,8 +6,40 @@
 namespace columba {
 
 SphereShape::SphereShape(const Transform& toWorld, bool flipNormals) : AnalyticShape(toWorld), flip_(flipNormals) {
-  float radius = length(toWorld_.vector(Vec3(1, 0, 0)));
-  area_ = 4.0f * kPi * radius * radius;
+  Vec3 ax = toWorld_.vector(Vec3(1, 0, 0)), ay = toWorld_.vector(Vec3(0, 1, 0)), az = toWorld_.vector(Vec3(0, 0, 1));
+  radius_ = length(ax);
+  round_ = std::abs(length(ay) - radius_) < 1e-5f * radius_ && std::abs(length(az) - radius_) < 1e-5f * radius_ &&
+           std::abs(dot(ax, ay)) < 1e-5f * radius_ * radius_ && std::abs(dot(ax, az)) < 1e-5f * radius_ * radius_ &&
+           std::abs(dot(ay, az)) < 1e-5f * radius_ * radius_;
+  center_ = toWorldPoint(Vec3(0, 0, 0));
+  area_ = 4.0f * kPi * radius_ * radius_;
+}
+
+std::optional<float> SphereShape::coneCosine(const Vec3& ref) const {
+  float dist2 = lengthSquared(center_ - ref);
+  if (!round_ || flip_ || dist2 <= radius_ * radius_ * 1.0001f) return std::nullopt;
+  return safeSqrt(1.0f - radius_ * radius_ / dist2);
+}
+
+std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u) const {
+  std::optional<float> cosMax = coneCosine(ref);
+  if (!cosMax) return Shape::sampleFrom(ref, u);
+  // Uniform over the cone of directions that see the sphere, then the nearest point along it.
+  Vec3 axis = normalize(center_ - ref);
+  Vec3 d = Frame::fromNormal(axis).toWorld(sampleUniformCone(u, *cosMax));
+  Vec3 oc = ref - center_;
+  float b = dot(oc, d), c = lengthSquared(oc) - radius_ * radius_;
+  float t = -b - safeSqrt(b * b - c);  // grazing directions round to the tangent point
+  ReferenceSample rs;
+  rs.p = ref + d * t;
+  rs.n = normalize(rs.p - center_);
+  rs.pdf = uniformConePdf(*cosMax);
+  return rs;
+}
+
+float SphereShape::pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const {
+  std::optional<float> cosMax = coneCosine(ref);
+  return cosMax ? uniformConePdf(*cosMax) : Shape::pdfFrom(ref, hit);
 }
 
 std::optional<float> SphereShape::intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const {

@@ -15,10 +15,17 @@ class SphereShape : public AnalyticShape {
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
   PositionSample samplePosition(Vec2 u) const override;
+  std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u) const override;
+  float pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const override;
 
  private:
+  // Cosine of the half-angle of the cone the sphere subtends from `ref`; nullopt when `ref`
+  // is inside or the sphere is not round (then area sampling is used).
+  std::optional<float> coneCosine(const Vec3& ref) const;
   bool flip_;
-  float area_;
+  bool round_;  // to_world scales uniformly
+  Vec3 center_;
+  float radius_, area_;
 };
 
 std::shared_ptr<Object> makeSphereShape(const Properties& props);
