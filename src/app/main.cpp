@@ -3,12 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/feather_command.h"
 #include "app/render_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Columba: a spectral renderer for iridescent bird feathers"};
   app.require_subcommand(1);
   columba::addRenderCommand(app);
+  columba::addFeatherCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

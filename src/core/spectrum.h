@@ -50,7 +50,9 @@ struct Wavelengths {
 float visibleWavelengthPdf(float lambda);
 float sampleVisibleWavelength(float u);
 
-// CIE 1931 2-degree colour matching functions (multi-lobe fit of Wyman, Sloan & Shirley 2013).
+// CIE 1931 2-degree colour matching functions (multi-lobe fit of Wyman, Sloan & Shirley 2013),
+// evaluated exactly by cieXYZFit and from a 1 nm table by cieXYZ.
+Vec3 cieXYZFit(float lambda);
 Vec3 cieXYZ(float lambda);
 // Integral of ybar over [360, 830] nm, so that a flat spectrum of 1 has Y = 1.
 float cieYIntegral();

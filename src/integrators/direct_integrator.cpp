@@ -26,7 +26,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
       float uEmitter = sampler.get1D();
       Vec2 uLight = sampler.get2D();
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, rays)) {
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, bsdfSamples_ > 0, rays)) {
         float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
         L += beta * ds->value * (w / nE);
       }

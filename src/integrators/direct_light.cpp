@@ -4,7 +4,7 @@ namespace columba {
 
 std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
                                                    const Vec3& wiLocal, const Wavelengths& wl, float uEmitter,
-                                                   Vec2 uPosition, uint64_t& rays) {
+                                                   Vec2 uPosition, bool needBsdfPdf, uint64_t& rays) {
   float pmf = 0.0f;
   const Emitter* emitter = scene.sampleEmitter(uEmitter, &pmf);
   if (!emitter) return std::nullopt;
@@ -20,7 +20,7 @@ std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const Sur
   DirectLightSample s;
   s.lightPdf = es->pdf * pmf;
   s.deltaLight = emitter->isDelta();
-  s.bsdfPdf = s.deltaLight ? 0.0f : bsdf.pdf(hit.bsdfContext, wiLocal, woLocal, wl);
+  s.bsdfPdf = (s.deltaLight || !needBsdfPdf) ? 0.0f : bsdf.pdf(hit.bsdfContext, wiLocal, woLocal, wl);
   s.value = f * es->radiance * tr / s.lightPdf;
   return s;
 }

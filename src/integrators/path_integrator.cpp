@@ -35,7 +35,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     float uEmitter = sampler.get1D();
     Vec2 uLight = sampler.get2D();
     if (!bsdf.isDeltaOnly()) {
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, rays))
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, true, rays))
         L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
     }
 

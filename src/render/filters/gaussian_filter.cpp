@@ -1,26 +1,22 @@
 #include "render/filters/gaussian_filter.h"
 
+#include <algorithm>
 #include <cmath>
+#include "core/math.h"
 #include "scene/properties.h"
 
 namespace columba {
 
-namespace {
-// The inverse error function for |y| < 1: Winitzki's closed-form approximation (relative error
-// below 2e-3), polished by Newton steps on erf, which converge quadratically from there.
-double inverseErf(double y) {
-  const double a = 0.147, pi = 3.14159265358979323846;
-  double l = std::log((1.0 - y) * (1.0 + y));
-  double t = 2.0 / (pi * a) + 0.5 * l;
-  double x = std::copysign(std::sqrt(std::sqrt(t * t - l / a) - t), y);
-  for (int i = 0; i < 3; ++i) x -= (std::erf(x) - y) / (2.0 / std::sqrt(pi) * std::exp(-x * x));
-  return x;
-}
-}  // namespace
-
 GaussianFilter::GaussianFilter(float stddev) : stddev_(stddev), radius_(4.0f * stddev) {
   cdfLimit_ = std::erf(radius_ / (stddev_ * std::sqrt(2.0)));
   axisNormalization_ = 1.0 / (stddev_ * std::sqrt(2.0 * 3.14159265358979323846) * cdfLimit_);
+  const double scale = 1.0 / (stddev_ * std::sqrt(2.0));
+  for (int i = 0; i < kCdfSize; ++i) {
+    double x = -radius_ + 2.0 * radius_ * i / (kCdfSize - 1);
+    cdf_[i] = float(0.5 * (1.0 + std::erf(x * scale) / cdfLimit_));
+  }
+  cdf_.front() = 0.0f;
+  cdf_.back() = 1.0f;
 }
 
 double GaussianFilter::evalAxis(double x) const {
@@ -32,9 +28,11 @@ float GaussianFilter::eval(Vec2 offset) const { return float(evalAxis(offset.x) 
 
 // Inverts the truncated normal's CDF, erf(x / (stddev sqrt 2)) mapped from [-limit, limit].
 float GaussianFilter::sampleAxis(float u) const {
-  double y = (2.0 * u - 1.0) * cdfLimit_;
-  float x = float(stddev_ * std::sqrt(2.0) * inverseErf(y));
-  return std::fmin(std::fmax(x, -radius_), radius_);
+  int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
+  i = std::clamp(i, 0, kCdfSize - 2);
+  float width = cdf_[i + 1] - cdf_[i];
+  float t = width > 0.0f ? clampf((u - cdf_[i]) / width, 0.0f, 1.0f) : 0.5f;
+  return -radius_ + 2.0f * radius_ * (float(i) + t) / float(kCdfSize - 1);
 }
 
 Vec2 GaussianFilter::sample(Vec2 u) const { return {sampleAxis(u.x), sampleAxis(u.y)}; }
