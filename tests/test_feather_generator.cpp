@@ -11,6 +11,7 @@
 #include "feather/feather_generator.h"
 #include "feather/neck_layout.h"
 #include "feather_test_util.h"
+#include "scene/scene_loader.h"
 
 using namespace columba;
 using namespace columba::test;
@@ -152,4 +153,31 @@ TEST_F(FeatherGeneratorTest, CommandWritesTheFileAndValidatesItsOptions) {
   EXPECT_THROW(run({"feather", "--single"}), CLI::ParseError);
   EXPECT_THROW(run({"feather", "-o", out}), CLI::ParseError);
   EXPECT_THROW(run({"feather", "--single", "--feathers", "3", "-o", out}), CLI::ParseError);
+}
+
+TEST_F(FeatherGeneratorTest, GeneratedFeatherLoadsFromASceneFile) {
+  FeatherGenerationOptions o;
+  o.barbsPerSide = 8;
+  generateFeatherPly(o, path("feather.ply"));
+  auto load = [&](const std::string& shapeParams) {
+    std::string xml = "<scene version='2.0.0'>\n<shape type='feather'>\n"
+                      "  <string name='filename' value='feather.ply'/>\n" + shapeParams +
+                      "  <bsdf type='diffuse'/>\n</shape>\n</scene>\n";
+    return loadSceneString(xml, "feather.xml", dir().string(), {}, PluginRegistry::builtin());
+  };
+  ParsedScene parsed = load("  <float name='barbwidth' value='0.02'/>\n  <float name='span' value='0.3'/>\n"
+                            "  <transform name='to_world'><scale value='0.035'/></transform>\n");
+  ASSERT_EQ(parsed.objects.size(), 1u);
+  auto shape = std::dynamic_pointer_cast<FeatherShape>(parsed.objects[0]);
+  ASSERT_TRUE(shape);
+  EXPECT_TRUE(shape->bsdf);
+  EXPECT_EQ(shape->barbCount(), 16u);
+  EXPECT_NEAR(shape->radius(), 0.035f * 0.01f / std::sin(0.78f), 1e-7f);
+  try {
+    load("  <float name='barbwidth' value='-1'/>\n");
+    FAIL() << "a negative barbwidth was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("feather.xml:4"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load("  <float name='barbwidht' value='0.01'/>\n"), InputError);
 }
