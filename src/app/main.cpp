@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/feather_command.h"
+#include "app/montage_command.h"
 #include "app/render_command.h"
 
 int main(int argc, char** argv) {
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   columba::addRenderCommand(app);
   columba::addFeatherCommand(app);
+  columba::addMontageCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,13 +2,12 @@
 
 #include <stb_easy_font.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace columba {
 
 namespace {
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-
 struct FontVertex {
   float x, y, z;
   unsigned char colour[4];
@@ -19,6 +18,12 @@ Vec3 srgbColour(float r, float g, float b) { return {srgbToLinear(r), srgbToLine
 
 Canvas::Canvas(int width, int height, const Vec3& background) : image_(width, height) {
   fillRect(0, 0, float(width), float(height), background);
+}
+
+void Canvas::drawImage(int x0, int y0, const Image& image) {
+  for (int y = std::max(0, -y0); y < image.height && y0 + y < image_.height; ++y)
+    for (int x = std::max(0, -x0); x < image.width && x0 + x < image_.width; ++x)
+      std::copy_n(image.pixel(x, y), 3, image_.pixel(x0 + x, y0 + y));
 }
 
 void Canvas::blend(int x, int y, const Vec3& colour, float coverage) {

@@ -10,6 +10,8 @@ namespace columba {
 class Canvas {
  public:
   Canvas(int width, int height, const Vec3& background);
+  // Copies `image` with its top-left corner at (x, y), clipped to the canvas.
+  void drawImage(int x, int y, const Image& image);
   void fillRect(float x0, float y0, float x1, float y1, const Vec3& colour);
   // A line `thickness` pixels wide.
   void line(Vec2 a, Vec2 b, const Vec3& colour, float thickness = 1.0f);

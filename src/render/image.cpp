@@ -125,6 +125,28 @@ Image readEXR(const std::string& path) {
   }
 }
 
+Image readPNG(const std::string& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+    std::string message = png.message;
+    png_image_free(&png);
+    throw InputError({path, 0}, "cannot read PNG image: " + message);
+  }
+  png.format = PNG_FORMAT_RGB;
+  std::vector<unsigned char> bytes(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
+    std::string message = png.message;
+    png_image_free(&png);
+    throw InputError({path, 0}, "cannot read PNG image: " + message);
+  }
+  Image image(int(png.width), int(png.height));
+  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = srgbToLinear(bytes[i] / 255.0f);
+  return image;
+}
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
 unsigned char toSRGB8(float linear) {
   if (!(linear > 0.0f)) return 0;  // also NaN
   if (linear >= 1.0f) return 255;

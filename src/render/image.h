@@ -20,7 +20,11 @@ void writeEXR(const std::string& path, const Image& image);   // float32 RGB
 void writePNG(const std::string& path, const Image& image);   // 8-bit sRGB, clamped
 // Throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
-// The 8-bit sRGB encoding of a linear value.
+// An 8-bit PNG (grey, RGB, with or without alpha) as linear values; throws InputError naming
+// the path if it cannot be read.
+Image readPNG(const std::string& path);
+// The 8-bit sRGB encoding of a linear value, and the linear value of an sRGB-encoded one.
 unsigned char toSRGB8(float linear);
+float srgbToLinear(float encoded);
 
 }  // namespace columba

@@ -1,0 +1,52 @@
+#include "plot/contact_sheet.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "plot/canvas.h"
+
+namespace columba {
+
+Image resizeImage(const Image& image, int width, int height) {
+  Image out(width, height);
+  const double sx = double(image.width) / width, sy = double(image.height) / height;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      int x0 = int(x * sx), x1 = std::max(x0 + 1, int((x + 1) * sx));
+      int y0 = int(y * sy), y1 = std::max(y0 + 1, int((y + 1) * sy));
+      x1 = std::min(x1, image.width);
+      y1 = std::min(y1, image.height);
+      double sum[3] = {0, 0, 0};
+      for (int v = y0; v < y1; ++v)
+        for (int u = x0; u < x1; ++u)
+          for (int c = 0; c < 3; ++c) sum[c] += image.pixel(u, v)[c];
+      double n = double(x1 - x0) * (y1 - y0);
+      for (int c = 0; c < 3; ++c) out.pixel(x, y)[c] = float(sum[c] / n);
+    }
+  return out;
+}
+
+Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
+                       const std::string& title) {
+  if (entries.empty() || columns < 1 || tileWidth < 8) throw std::invalid_argument("empty contact sheet");
+  const int margin = 12, labelHeight = 28, titleHeight = title.empty() ? 0 : 44;
+  int tileHeight = 0;
+  for (const auto& e : entries) tileHeight = std::max(tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
+  const int rows = (int(entries.size()) + columns - 1) / columns;
+  const int width = margin + columns * (tileWidth + margin);
+  const int height = titleHeight + margin + rows * (tileHeight + labelHeight + margin);
+  const Vec3 background = srgbColour(0.12f, 0.12f, 0.12f), ink = srgbColour(0.92f, 0.92f, 0.92f);
+  Canvas canvas(width, height, background);
+  if (!title.empty()) canvas.text(margin, 12, title, ink, 3);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const Image& src = entries[i].image;
+    int h = std::max(1, int(double(tileWidth) * src.height / src.width));
+    int x0 = margin + int(i % columns) * (tileWidth + margin);
+    int y0 = titleHeight + margin + int(i / columns) * (tileHeight + labelHeight + margin);
+    canvas.drawImage(x0, y0, resizeImage(src, tileWidth, h));
+    canvas.text(float(x0), float(y0 + tileHeight + 8), entries[i].label, ink);
+  }
+  return canvas.image();
+}
+
+}  // namespace columba

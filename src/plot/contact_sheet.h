@@ -1,0 +1,22 @@
+#pragma once
+// A contact sheet: images scaled into a grid of equal tiles, each labelled below.
+#include <string>
+#include <vector>
+#include "render/image.h"
+
+namespace columba {
+
+struct ContactSheetEntry {
+  Image image;
+  std::string label;
+};
+
+// `tileWidth` pixels per tile; each image keeps its aspect ratio (area-averaged when shrunk).
+Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
+                       const std::string& title);
+
+// `image` resampled to width x height by averaging the source pixels under each target pixel
+// (nearest pixel when enlarging).
+Image resizeImage(const Image& image, int width, int height);
+
+}  // namespace columba
