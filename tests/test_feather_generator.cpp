@@ -55,8 +55,9 @@ TEST_F(FeatherGeneratorTest, SingleFeatherReloadsThroughTheFeatherShape) {
     std::string file = path(binary ? "single.bin.ply" : "single.ply");
     FeatherGenerationSummary s = generateFeatherPly(o, file);
     FeatherPlyData ply = readFeatherPly(file);
-    EXPECT_EQ(ply.barbCount(), s.barbs);
-    EXPECT_EQ(ply.barbIndices.size(), s.barbs * kBarbVertices);
+    EXPECT_EQ(ply.barbCount(), s.faces);
+    EXPECT_EQ(s.faces, s.barbs + 1);  // and the rachis
+    EXPECT_EQ(ply.barbIndices.size(), s.faces * kBarbVertices);
     EXPECT_EQ(ply.positions.size(), s.vertices);
     EXPECT_NEAR(s.tilingBarbWidth, FeatherShapeParams().barbWidth, 0.002f);  // the default barb count tiles
     // About 1.2 long, centred near the origin, facing +z, green.
@@ -75,7 +76,7 @@ TEST_F(FeatherGeneratorTest, SingleFeatherReloadsThroughTheFeatherShape) {
     EXPECT_LT(std::abs(0.5f * (hi.x + lo.x)), 0.15f);
     EXPECT_GT(nz / double(ply.normals.size()), 0.99);
     FeatherShape shape(std::move(ply), FeatherShapeParams());
-    EXPECT_EQ(shape.primitiveCount(), s.barbs * kBarbSegments);
+    EXPECT_EQ(shape.primitiveCount(), s.faces * kBarbSegments);
   }
 }
 
@@ -120,7 +121,7 @@ TEST_F(FeatherGeneratorTest, NeckFeathersOverlapLikeRoofTiles) {
     for (int k = 0; k < 200; ++k) {
       auto hit = scene.intersect(ray);
       if (!hit) break;
-      size_t feather = hit->first.primID / kBarbSegments / (2 * barbs);
+      size_t feather = hit->first.primID / kBarbSegments / (2 * barbs + 1);
       if (crossed.empty() || crossed.back() != feather) crossed.push_back(feather);
       ray = hit->second.spawnRay(ray.d);
     }
@@ -146,7 +147,7 @@ TEST_F(FeatherGeneratorTest, CommandWritesTheFileAndValidatesItsOptions) {
   };
   run({"feather", "--neck", "--feathers", "4", "--barbs", "3", "--binary", "--seed", "9", "-o", out});
   FeatherPlyData ply = readFeatherPly(out);
-  EXPECT_EQ(ply.barbCount(), 4u * 2u * 3u);
+  EXPECT_EQ(ply.barbCount(), 4u * (2u * 3u + 1u));
   for (const auto& entry : std::filesystem::directory_iterator(dir()))
     EXPECT_EQ(entry.path().filename(), "cli.ply") << "left behind: " << entry.path();
   EXPECT_THROW(run({"feather", "--single", "--neck", "-o", out}), CLI::ParseError);
@@ -171,7 +172,7 @@ TEST_F(FeatherGeneratorTest, GeneratedFeatherLoadsFromASceneFile) {
   auto shape = std::dynamic_pointer_cast<FeatherShape>(parsed.objects[0]);
   ASSERT_TRUE(shape);
   EXPECT_TRUE(shape->bsdf);
-  EXPECT_EQ(shape->barbCount(), 16u);
+  EXPECT_EQ(shape->barbCount(), 17u);
   EXPECT_NEAR(shape->radius(), 0.035f * 0.01f / std::sin(0.78f), 1e-7f);
   try {
     load("  <float name='barbwidth' value='-1'/>\n");

@@ -66,6 +66,12 @@ std::array<Vec2, kBarbVertices> barbPolyline(const FeatherDesign& design, int si
   return points;
 }
 
+std::array<Vec2, kBarbVertices> rachisPolyline(const FeatherDesign& design) {
+  std::array<Vec2, kBarbVertices> points;
+  for (int k = 0; k < kBarbVertices; ++k) points[k] = rachisPoint(design, float(k) / float(kBarbSegments));
+  return points;
+}
+
 int barbsToTile(const FeatherDesign& design, float barbWidth, float meanWidthFraction) {
   float along = (1.0f - design.bareBase) * design.length;
   return std::max(2, int(std::lround(along * std::sin(meanBarbAngle(design)) / (barbWidth * meanWidthFraction))));

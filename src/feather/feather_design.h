@@ -34,6 +34,9 @@ Vec2 rachisDirection(const FeatherDesign& design, float t);
 std::array<Vec2, kBarbVertices> barbPolyline(const FeatherDesign& design, int side, int index, float lengthScale,
                                              float angleOffset);
 
+// The rachis centre line from base to tip.
+std::array<Vec2, kBarbVertices> rachisPolyline(const FeatherDesign& design);
+
 // Barbs per side for neighbouring barbs to lie edge to edge, when they are `barbWidth` wide at
 // the base and `meanWidthFraction` of that on average along their length.
 int barbsToTile(const FeatherDesign& design, float barbWidth, float meanWidthFraction);

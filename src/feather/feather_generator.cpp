@@ -56,31 +56,35 @@ class VaneMapping {
 
 float symmetricJitter(PCG32& rng) { return 2.0f * rng.nextFloat() - 1.0f; }
 
+// The rachis first, then the barbs of one side and of the other, each as one face.
 void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const NeckColouring* colouring,
                   uint64_t seed, FeatherPlyWriter& writer) {
   PCG32 rng(seed, 0x66656174ULL);
   BarbVertex vertices[kBarbVertices];
+  auto write = [&](const std::array<Vec2, kBarbVertices>& polyline, float barbuleH, float thicknessOffset) {
+    for (int k = 0; k < kBarbVertices; ++k) {
+      BarbVertex& v = vertices[k];
+      v.position = mapping.position(polyline[k]);
+      v.normal = mapping.normal(polyline[k]);
+      v.barbuleH = barbuleH;
+      v.barbuleMu = kBarbuleMu;
+      float purple = 0.0f;
+      if (colouring) {
+        Vec2 st = mapping.surfaceCoordinates(polyline[k]);
+        purple = colouring->purple(st.x, st.y);
+      }
+      v.barbuleHeight = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
+    }
+    writer.writeBarb(vertices);
+  };
+  write(rachisPolyline(design), kBarbuleH, 0.0f);
   for (int side : {-1, 1}) {
     for (int b = 0; b < design.barbsPerSide; ++b) {
       float lengthScale = 1.0f + 0.05f * symmetricJitter(rng);
       float angleOffset = 0.035f * symmetricJitter(rng);
       float barbuleH = kBarbuleH * (1.0f + 0.04f * symmetricJitter(rng));
       float thicknessOffset = 0.008f * symmetricJitter(rng);
-      auto polyline = barbPolyline(design, side, b, lengthScale, angleOffset);
-      for (int k = 0; k < kBarbVertices; ++k) {
-        BarbVertex& v = vertices[k];
-        v.position = mapping.position(polyline[k]);
-        v.normal = mapping.normal(polyline[k]);
-        v.barbuleH = barbuleH;
-        v.barbuleMu = kBarbuleMu;
-        float purple = 0.0f;
-        if (colouring) {
-          Vec2 st = mapping.surfaceCoordinates(polyline[k]);
-          purple = colouring->purple(st.x, st.y);
-        }
-        v.barbuleHeight = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
-      }
-      writer.writeBarb(vertices);
+      write(barbPolyline(design, side, b, lengthScale, angleOffset), barbuleH, thicknessOffset);
     }
   }
 }
@@ -111,12 +115,13 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
   FeatherGenerationSummary summary;
   summary.feathers = layout.feathers.size();
   summary.barbs = summary.feathers * 2 * size_t(design.barbsPerSide);
-  summary.vertices = summary.barbs * kBarbVertices;
+  summary.faces = summary.barbs + summary.feathers;
+  summary.vertices = summary.faces * kBarbVertices;
   summary.tilingBarbWidth = barbSpacing(design) / meanWidth;
 
   NeckSurface neck;
   NeckColouring colouring(options.seed);
-  FeatherPlyWriter writer(path, options.binary, summary.barbs);
+  FeatherPlyWriter writer(path, options.binary, summary.faces);
   for (const FeatherPlacement& placement : layout.feathers) {
     VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
     writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, writer);

@@ -1,6 +1,8 @@
 #pragma once
 // Procedural feathers written as a feather PLY: one feather centred on the origin (for the
-// single-feather scene), or a neck of many overlapping feathers (see neck_layout.h).
+// single-feather scene), or a neck of many overlapping feathers (see neck_layout.h). Each
+// feather is its rachis followed by its barbs, every one a face of the PLY; the rachis, as
+// wide as a barb at its base, closes the seam where the barbs of both sides meet.
 //
 // Per-vertex barbule parameters, used as they are by the feather shape:
 // - H (barbule spacing) 1.25, varied by +-4% from barb to barb;
@@ -26,7 +28,8 @@ struct FeatherGenerationOptions {
 };
 
 struct FeatherGenerationSummary {
-  size_t feathers = 0, barbs = 0, vertices = 0;
+  size_t feathers = 0, barbs = 0;
+  size_t faces = 0, vertices = 0;  // in the PLY: every barb and every rachis
   // The `barbwidth` at which neighbouring (tapering) barbs lie edge to edge, in PLY units.
   float tilingBarbWidth = 0;
 };
