@@ -89,6 +89,12 @@ TEST_F(FeatherGeneratorTest, OutputDependsOnlyOnTheSeed) {
   EXPECT_NE(contents(a), contents(c));
 }
 
+TEST_F(FeatherGeneratorTest, UnwritableOutputLeavesNothingBehind) {
+  std::string file = path("missing_dir/out.ply");
+  EXPECT_THROW(generateFeatherPly(FeatherGenerationOptions(), file), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(file).parent_path()));
+}
+
 TEST_F(FeatherGeneratorTest, NeckFeathersOverlapLikeRoofTiles) {
   const int feathers = 30, barbs = 12;
   std::string file = path("neck.ply");

@@ -1,6 +1,8 @@
 #include "shapes/feather_ply.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
