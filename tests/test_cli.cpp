@@ -129,3 +129,17 @@ TEST_F(CliTest, InterruptWritesThePartialImageAndFails) {
   columba::Image img = columba::readEXR(out);
   EXPECT_EQ(img.width, 64);
 }
+
+TEST_F(CliTest, DefaultSceneIsAGeneratedNeck) {
+  std::string out = (dir_ / "default.exr").string();
+  CommandResult r = run("render -D width=40 -D height=30 -D spp=2 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("default scene"), std::string::npos) << r.output;
+  columba::Image img = columba::readEXR(out);
+  EXPECT_EQ(img.width, 40);
+  // Hundreds of thousands of barb segments were generated and loaded.
+  size_t at = r.output.find(" primitives");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  size_t start = r.output.rfind(' ', at - 1) + 1;
+  EXPECT_GT(std::stol(r.output.substr(start, at - start)), 100000) << r.output;
+}

@@ -1,10 +1,11 @@
 #pragma once
-// The scene `columba render` draws when given none.
-#include <string>
+// The scene `columba render` draws when given none: a rock dove neck (scenes/neck_direction1.xml)
+// whose feathers are generated on the fly.
+#include "scene/scene_loader.h"
 
 namespace columba {
 
-// Scene XML; relative paths in it resolve against the current directory.
-std::string defaultSceneXML();
+// `defines` are the user's -D values; they override the default scene's own settings.
+ParsedScene loadDefaultScene(const Defines& defines);
 
 }  // namespace columba

@@ -38,11 +38,8 @@ Defines parseDefines(const std::vector<std::string>& items) {
 
 int runRender(const RenderOptions& options) {
   Defines defines = parseDefines(options.defines);
-  const PluginRegistry& registry = PluginRegistry::builtin();
-  ParsedScene parsed = options.scenePath.empty()
-                           ? loadSceneString(defaultSceneXML(), "<default scene>", std::filesystem::current_path().string(),
-                                             defines, registry)
-                           : loadSceneFile(options.scenePath, defines, registry);
+  ParsedScene parsed = options.scenePath.empty() ? loadDefaultScene(defines)
+                                                 : loadSceneFile(options.scenePath, defines, PluginRegistry::builtin());
   SourceLocation source{options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
   Scene scene(parsed, source);
 

@@ -22,7 +22,7 @@ std::vector<float> niceTicks(float lo, float hi, int target) {
 Image renderLinePlot(const LinePlot& plot, int width, int height) {
   const Vec3 white(1, 1, 1), black(0, 0, 0), grid = srgbColour(0.88f, 0.88f, 0.88f);
   Canvas canvas(width, height, white);
-  const float left = 90, right = float(width) - 20, top = 50, bottom = float(height) - 70;
+  const float left = 90, right = float(width) - 20, top = 80, bottom = float(height) - 70;
   auto toPixel = [&](Vec2 p) {
     return Vec2(left + (p.x - plot.xMin) / (plot.xMax - plot.xMin) * (right - left),
                 bottom - (p.y - plot.yMin) / (plot.yMax - plot.yMin) * (bottom - top));
@@ -44,7 +44,7 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
   canvas.line(Vec2(left, bottom), Vec2(right, bottom), black, 1.5f);
   canvas.line(Vec2(left, top), Vec2(left, bottom), black, 1.5f);
   canvas.text(0.5f * (left + right - Canvas::textWidth(plot.xLabel)), bottom + 40, plot.xLabel, black);
-  canvas.text(10, top - 30, plot.yLabel, black);
+  canvas.text(10, top - 28, plot.yLabel, black);
   canvas.text(0.5f * (width - Canvas::textWidth(plot.title, 3)), 10, plot.title, black, 3);
 
   for (const PlotSeries& s : plot.series)
@@ -63,7 +63,12 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
   float lx = right - legendWidth - 50, ly = top + 10;
   canvas.fillRect(lx - 8, ly - 6, right - 4, ly + 22.0f * plot.series.size() - 2, white);
   for (const PlotSeries& s : plot.series) {
-    canvas.line(Vec2(lx, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
+    if (s.dashed) {
+      canvas.line(Vec2(lx, ly + 7), Vec2(lx + 11, ly + 7), s.colour, 2.5f);
+      canvas.line(Vec2(lx + 19, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
+    } else {
+      canvas.line(Vec2(lx, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
+    }
     canvas.text(lx + 38, ly, s.label, black);
     ly += 22;
   }

@@ -115,13 +115,16 @@ Transform Properties::getTransform(const std::string& name, const Transform& def
 std::string Properties::getPath(const std::string& name) const {
   const Value& v = require(name, {Kind::String}, "a <string> file name");
   namespace fs = std::filesystem;
-  fs::path path(v.text);
-  if (path.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / path;
+  // Relative paths are looked up next to the scene file, then in the working directory (as
+  // Mitsuba's file resolver does), so `-D mesh=out/x.ply` works from the shell.
+  fs::path given(v.text), path = given;
+  if (given.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / given;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw InputError(v.location, "parameter '" + name + "': file '" + v.text + "' not found (looked for '" +
-                                     path.string() + "')");
-  return path.string();
+  if (fs::is_regular_file(path, ec)) return path.string();
+  if (given.is_relative() && fs::is_regular_file(given, ec)) return given.string();
+  throw InputError(v.location, "parameter '" + name + "': file '" + v.text + "' not found (looked for '" +
+                                   path.string() + "'" + (given.is_relative() ? " and '" + given.string() + "'" : "") +
+                                   ")");
 }
 
 SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {

@@ -39,8 +39,8 @@ class Properties {
   std::string getString(const std::string& name, const std::string& def) const;
   Vec3 getVector(const std::string& name, const Vec3& def) const;  // <point> or <vector>
   Transform getTransform(const std::string& name, const Transform& def = Transform()) const;
-  // A file path resolved against the directory of the scene file that declared it; throws
-  // InputError (file, line, value) if the file does not exist.
+  // A file path resolved against the directory of the scene file that declared it, then the
+  // working directory; throws InputError (file, line, value) if the file does not exist.
   std::string getPath(const std::string& name) const;
   // <float>, <spectrum> or <rgb>.
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
