@@ -18,7 +18,17 @@ scenes=(
   "spheres|$root/bench/scenes/spheres.xml|"
 )
 [ -f "$shared/simulation1.xml" ] && scenes+=("simulation1 (256x256, 64 spp)|$shared/simulation1.xml|-D res=256 -D spp=64")
-for extra in "$root"/bench/scenes/*.sh; do [ -f "$extra" ] && . "$extra"; done
+# The reference neck scene on a dense generated patch (32 feathers: about 4,300 barbs of 64
+# vertices), 1024x768, 16 spp, and the default scene's neck (60 feathers) with our own scene.
+"$columba" feather --neck --feathers 32 --binary -o "$out/patch.ply" > /dev/null
+"$columba" feather --neck --binary -o "$out/neck.ply" > /dev/null
+if [ -f "$shared/neck.xml" ]; then
+  mkdir -p "$out/reference/feathers"
+  cp "$shared/neck.xml" "$out/reference/"
+  ln -sf "$out/patch.ply" "$out/reference/feathers/feathers.ply"
+  scenes+=("reference neck.xml, 32 feathers, 16 spp|$out/reference/neck.xml|-D spp=16")
+fi
+scenes+=("neck_direction1 (800x600, 16 spp)|$root/scenes/neck_direction1.xml|-D feathers=$out/neck.ply -D width=800 -D height=600 -D spp=16")
 
 echo "== Scenes (threads: 1 and $(nproc))"
 printf '%-36s %8s %10s %14s %12s\n' scene threads seconds "Msamples/s" "Mrays/s"
