@@ -24,6 +24,7 @@
 #include "sensors/perspective_sensor.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
+#include "shapes/ply_mesh.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
 
@@ -55,6 +56,7 @@ const PluginRegistry& PluginRegistry::builtin() {
     r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
     r.add("shape", "obj", makeObjShape);
+    r.add("shape", "ply", makePlyShape);
     r.add("shape", "rectangle", makeRectangleShape);
     r.add("shape", "disk", makeDiskShape);
     r.add("shape", "sphere", makeSphereShape);

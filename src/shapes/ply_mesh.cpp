@@ -1,0 +1,109 @@
+#include "shapes/ply_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shapes/ply_file.h"
+
+namespace columba {
+
+namespace {
+
+// Property indices of the vertex attributes the mesh uses; -1 where the file has none.
+struct VertexLayout {
+  int position[3];
+  int normal[3] = {-1, -1, -1};
+  int uv[2] = {-1, -1};
+  bool hasNormals() const { return normal[0] >= 0; }
+  bool hasUVs() const { return uv[0] >= 0; }
+};
+
+VertexLayout vertexLayout(const PlyReader& ply, const PlyElement& e) {
+  VertexLayout layout;
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    layout.position[a] = e.findScalar(axes[a]);
+    if (layout.position[a] < 0)
+      throw ply.headerError(e, std::string("element vertex has no property '") + axes[a] + "'");
+  }
+  // Normals and texture coordinates count only when complete.
+  int n[3] = {e.findScalar("nx"), e.findScalar("ny"), e.findScalar("nz")};
+  if (n[0] >= 0 && n[1] >= 0 && n[2] >= 0) std::copy(n, n + 3, layout.normal);
+  for (auto [u, v] : {std::pair{"u", "v"}, std::pair{"s", "t"}, std::pair{"texture_u", "texture_v"}}) {
+    int iu = e.findScalar(u), iv = e.findScalar(v);
+    if (iu >= 0 && iv >= 0) {
+      layout.uv[0] = iu;
+      layout.uv[1] = iv;
+      break;
+    }
+  }
+  return layout;
+}
+
+void readVertices(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
+  const VertexLayout layout = vertexLayout(ply, e);
+  mesh.positions.reserve(e.count);
+  if (layout.hasNormals()) mesh.normals.reserve(e.count);
+  if (layout.hasUVs()) mesh.uvs.reserve(e.count);
+  auto value = [&](int property) {
+    float v = float(ply.scalar(size_t(property)));
+    if (!std::isfinite(v)) ply.fail("property '" + e.properties[size_t(property)].name + "' is not a finite float");
+    return v;
+  };
+  for (size_t i = 0; i < e.count; ++i) {
+    ply.next();
+    mesh.positions.push_back(Vec3(value(layout.position[0]), value(layout.position[1]), value(layout.position[2])));
+    if (layout.hasNormals())
+      mesh.normals.push_back(Vec3(value(layout.normal[0]), value(layout.normal[1]), value(layout.normal[2])));
+    if (layout.hasUVs()) mesh.uvs.push_back(Vec2(value(layout.uv[0]), value(layout.uv[1])));
+  }
+}
+
+void readFaces(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
+  const int list = ply.vertexIndexList(e);
+  const size_t vertexCount = mesh.positions.size();
+  mesh.indices.reserve(3 * e.count);
+  for (size_t i = 0; i < e.count; ++i) {
+    ply.next();
+    const std::vector<double>& face = ply.list(size_t(list));
+    if (face.size() < 3)
+      ply.fail("has " + std::to_string(face.size()) + " vertex indices; a face needs at least 3");
+    const uint32_t first = ply.vertexIndex(face[0], vertexCount);
+    uint32_t previous = ply.vertexIndex(face[1], vertexCount);
+    for (size_t k = 2; k < face.size(); ++k) {
+      const uint32_t current = ply.vertexIndex(face[k], vertexCount);
+      mesh.indices.insert(mesh.indices.end(), {first, previous, current});
+      previous = current;
+    }
+  }
+}
+
+}  // namespace
+
+MeshData readPlyMesh(const std::string& path) {
+  PlyReader ply(path, "PLY file");
+  MeshData mesh;
+  bool sawVertex = false, sawFace = false;
+  for (const PlyElement& e : ply.elements()) {
+    if (e.name == "vertex" && !sawVertex) {
+      readVertices(ply, e, mesh);
+      sawVertex = true;
+    } else if (e.name == "face" && !sawFace) {
+      if (!sawVertex) throw ply.headerError(e, "element face must come after element vertex");
+      readFaces(ply, e, mesh);
+      sawFace = true;
+    } else {
+      for (size_t i = 0; i < e.count; ++i) ply.next();
+    }
+  }
+  if (!sawVertex) throw InputError({path, ply.endHeaderLine()}, "the file has no element vertex");
+  if (mesh.indices.empty()) throw InputError({path, ply.endHeaderLine()}, "the file has no faces");
+  ply.finish();
+  return mesh;
+}
+
+std::shared_ptr<Object> makePlyShape(const Properties& props) {
+  return finishMeshShape(props, readPlyMesh(props.getPath("filename")), props.getTransform("to_world"));
+}
+
+}  // namespace columba
