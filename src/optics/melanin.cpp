@@ -1,6 +1,7 @@
 #include "optics/melanin.h"
 
-#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <iterator>
 
 namespace columba {
@@ -37,18 +38,35 @@ constexpr Sample kMelanin[] = {
     {874.1796, 0.0594}, {880.9584, 0.0594}, {887.7371, 0.0594}, {894.5158, 0.0595}, {900.0620, 0.0593},
 };
 
+constexpr int kSamples = int(std::size(kMelanin));
+constexpr int kCells = int(kMelanin[kSamples - 1].lambda - kMelanin[0].lambda) + 1;
+
+// The segment [kMelanin[i], kMelanin[i + 1]] holding the start of each whole-nanometre cell from the
+// first sample on. Samples lie more than 1 nm apart, so a lookup is one table read and at most one
+// step forward, not a search.
+constexpr std::array<uint8_t, kCells> segmentTable() {
+  std::array<uint8_t, kCells> table{};
+  int segment = 0;
+  for (int cell = 0; cell < kCells; ++cell) {
+    float start = kMelanin[0].lambda + float(cell);
+    while (segment + 2 < kSamples && kMelanin[segment + 1].lambda <= start) ++segment;
+    table[cell] = uint8_t(segment);
+  }
+  return table;
+}
+constexpr std::array<uint8_t, kCells> kSegmentOfCell = segmentTable();
+
 }  // namespace
 
 float melaninReflectance(float lambdaNm) {
-  const Sample* first = std::begin(kMelanin);
-  const Sample* last = std::end(kMelanin) - 1;
-  if (lambdaNm <= first->lambda) return first->reflectance;
-  if (lambdaNm >= last->lambda) return last->reflectance;
-  const Sample* upper =
-      std::upper_bound(first, last, lambdaNm, [](float l, const Sample& s) { return l < s.lambda; });
-  const Sample* lower = upper - 1;
-  float t = (lambdaNm - lower->lambda) / (upper->lambda - lower->lambda);
-  return lower->reflectance + t * (upper->reflectance - lower->reflectance);
+  if (!(lambdaNm > kMelanin[0].lambda)) return kMelanin[0].reflectance;
+  if (lambdaNm >= kMelanin[kSamples - 1].lambda) return kMelanin[kSamples - 1].reflectance;
+  int segment = kSegmentOfCell[int(lambdaNm - kMelanin[0].lambda)];
+  if (lambdaNm >= kMelanin[segment + 1].lambda) ++segment;
+  const Sample& lower = kMelanin[segment];
+  const Sample& upper = kMelanin[segment + 1];
+  float t = (lambdaNm - lower.lambda) / (upper.lambda - lower.lambda);
+  return lower.reflectance + t * (upper.reflectance - lower.reflectance);
 }
 
 }  // namespace columba

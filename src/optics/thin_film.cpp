@@ -30,25 +30,6 @@ Interface fresnel(double ni, Complex ci, double nj, Complex cj) {
   return f;
 }
 
-// cos(x) for |x| up to a few hundred, branch-free so loops over wavelengths vectorise: reduce to
-// [-pi, pi] and use the even Taylor polynomial of degree 16 (error < 2e-7 there).
-inline float cosReduced(float x) {
-  constexpr float kRound = 12582912.0f;  // 1.5 * 2^23: adding and subtracting it rounds to nearest
-  float turns = x * (1.0f / kTwoPi);
-  float k = (turns + kRound) - kRound;
-  float y = (turns - k) * kTwoPi;
-  float y2 = y * y;
-  float p = 1.0f / 20922789888000.0f;  // 1/16!
-  p = p * y2 - 1.0f / 87178291200.0f;
-  p = p * y2 + 1.0f / 479001600.0f;
-  p = p * y2 - 1.0f / 3628800.0f;
-  p = p * y2 + 1.0f / 40320.0f;
-  p = p * y2 - 1.0f / 720.0f;
-  p = p * y2 + 1.0f / 24.0f;
-  p = p * y2 - 0.5f;
-  return p * y2 + 1.0f;
-}
-
 }  // namespace
 
 ThinFilmAmplitudes thinFilmAmplitudes(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
@@ -84,39 +65,11 @@ double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n
 
 FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    float nFilm = film(wl[i]);
-    eta_[i] = nFilm / nOutside;
-    invEtaSqr_[i] = 1.0f / (eta_[i] * eta_[i]);
-    phaseScale_[i] = 4.0f * kPi * nFilm * (thicknessUm * 1000.0f) / wl[i];
-  }
-}
-
-FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
-  Reflectance out;
-  // Exactly grazing light would make both interface reflectances 1 and the Airy sum 0/0.
-  float c = clampf(cosIncidence, 1e-4f, 1.0f), sinSqr = 1.0f - c * c;
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    // The film is denser than its surroundings, so light always enters it (no critical angle).
-    float cosFilm = std::sqrt(1.0f - sinSqr * invEtaSqr_[i]);
-    float etaCosFilm = eta_[i] * cosFilm, etaC = eta_[i] * c;
-    // Interface reflectances R and, without cancellation near grazing, 1 - R = 4 c eta cos2 / den^2;
-    // one division serves both polarisations.
-    float sDen = c + etaCosFilm, pDen = etaC + cosFilm;
-    float inv = 1.0f / (sDen * pDen);
-    float rs = (c - etaCosFilm) * pDen * inv, rp = (etaC - cosFilm) * sDen * inv;
-    float Rs = rs * rs, Rp = rp * rp;
-    float fourProduct = 4.0f * etaC * cosFilm * inv * inv;
-    float Ts = fourProduct * pDen * pDen, Tp = fourProduct * sDen * sDen;
-    float oneMinusCos = 1.0f - cosReduced(phaseScale_[i] * cosFilm);
-    // 1 + R^2 - 2 R cos(delta) = (1 - R)^2 + 2 R (1 - cos(delta)) > 0.
-    float sNum = 2.0f * Rs * oneMinusCos, pNum = 2.0f * Rp * oneMinusCos;
-    float sDenFilm = Ts * Ts + sNum, pDenFilm = Tp * Tp + pNum;
-    float invFilm = 1.0f / (sDenFilm * pDenFilm);
-    out.s[i] = sNum * pDenFilm * invFilm;
-    out.p[i] = pNum * sDenFilm * invFilm;
-  }
-  return out;
+  SpectrumLanes lambda = toLanes(wl.lambda);
+  SpectrumLanes nFilm = film.a + film.b / (lambda * lambda);
+  eta_ = nFilm * (1.0f / nOutside);
+  invEtaSqr_ = 1.0f / (eta_ * eta_);
+  phaseScale_ = (4.0f * kPi * thicknessUm * 1000.0f) * nFilm / lambda;
 }
 
 }  // namespace columba

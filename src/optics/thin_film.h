@@ -9,6 +9,9 @@
 // t = t12 t21 / (1 - r21^2 e^{i delta}) up to the phase of t.
 #include <array>
 #include <complex>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 #include "core/spectrum.h"
 #include "optics/dispersion.h"
 
@@ -35,26 +38,85 @@ double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3,
 double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
                              double lambdaNm);
 
+// Four wavelengths' values in one SIMD register (GCC/Clang vector extension): the film is
+// evaluated at every quadrature node of the barbule BSDF, so its arithmetic must not depend on
+// the compiler choosing to vectorise a loop.
+using SpectrumLanes = float __attribute__((vector_size(16)));
+static_assert(kSpectrumSamples == 4, "one SIMD register per path spectrum");
+
+inline SpectrumLanes toLanes(const std::array<float, kSpectrumSamples>& a) { return SpectrumLanes{a[0], a[1], a[2], a[3]}; }
+inline Spectrum toSpectrum(SpectrumLanes v) {
+  Spectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = v[i];
+  return s;
+}
+
 // A film (index nFilm(lambda), optically denser than its surroundings) with the same medium on
 // both sides, evaluated at a path's wavelengths: the barbule cortex in air. With a lossless film
-// and equal media, R + T = 1 per polarisation, so the transmittance is 1 - R. Real arithmetic only
-// (for R12 = r12^2, R = 2 R12 (1 - cos delta) / (1 + R12^2 - 2 R12 cos delta)), laid out so the
-// compiler evaluates the wavelengths in SIMD lanes.
+// and equal media, R + T = 1 per polarisation, so the transmittance is 1 - R. Real arithmetic only:
+// for the interface reflectance R12 = r12^2, R = 2 R12 (1 - cos delta) / (1 + R12^2 - 2 R12 cos delta).
 class FreeStandingFilm {
  public:
   FreeStandingFilm() = default;
   FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm, const Wavelengths& wl);
 
   struct Reflectance {
-    std::array<float, kSpectrumSamples> s, p;
+    SpectrumLanes s, p;
   };
   // Intensity reflectance for light meeting the film with incidence cosine `cosIncidence` (>= 0).
   Reflectance reflectance(float cosIncidence) const;
 
  private:
-  std::array<float, kSpectrumSamples> eta_{};         // nFilm / nOutside
-  std::array<float, kSpectrumSamples> invEtaSqr_{};   // 1 / eta^2 (Snell's law for sin^2)
-  std::array<float, kSpectrumSamples> phaseScale_{};  // 4 pi nFilm d / lambda: delta = phaseScale cos(theta2)
+  // cos(x) for |x| up to a few hundred: reduce to [-pi, pi] and use the even Taylor polynomial of
+  // degree 16 (error < 2e-7 there).
+  static SpectrumLanes cosReduced(SpectrumLanes x) {
+    const float kRound = 12582912.0f;  // 1.5 * 2^23: adding and subtracting it rounds to nearest
+    SpectrumLanes turns = x * (1.0f / kTwoPi);
+    SpectrumLanes k = (turns + kRound) - kRound;
+    SpectrumLanes y = (turns - k) * kTwoPi;
+    SpectrumLanes y2 = y * y;
+    SpectrumLanes p = y2 * (1.0f / 20922789888000.0f) - 1.0f / 87178291200.0f;  // 1/16!, 1/14!
+    p = p * y2 + 1.0f / 479001600.0f;
+    p = p * y2 - 1.0f / 3628800.0f;
+    p = p * y2 + 1.0f / 40320.0f;
+    p = p * y2 - 1.0f / 720.0f;
+    p = p * y2 + 1.0f / 24.0f;
+    p = p * y2 - 0.5f;
+    return p * y2 + 1.0f;
+  }
+  static SpectrumLanes sqrtLanes(SpectrumLanes v) {
+#if defined(__SSE__)
+    return _mm_sqrt_ps(v);
+#else
+    return SpectrumLanes{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+#endif
+  }
+
+  SpectrumLanes eta_{};         // nFilm / nOutside
+  SpectrumLanes invEtaSqr_{};   // 1 / eta^2 (Snell's law for sin^2)
+  SpectrumLanes phaseScale_{};  // 4 pi nFilm d / lambda: delta = phaseScale cos(theta2)
 };
+
+inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
+  // Exactly grazing light would make both interface reflectances 1 and the Airy sum 0/0.
+  float c = clampf(cosIncidence, 1e-4f, 1.0f), sinSqr = 1.0f - c * c;
+  // The film is denser than its surroundings, so light always enters it (no critical angle).
+  SpectrumLanes cosFilm = sqrtLanes(1.0f - sinSqr * invEtaSqr_);
+  SpectrumLanes etaCosFilm = eta_ * cosFilm, etaC = eta_ * c;
+  // Interface reflectances R and, without cancellation near grazing, 1 - R = 4 c eta cos2 / den^2;
+  // one division serves both polarisations.
+  SpectrumLanes sDen = c + etaCosFilm, pDen = etaC + cosFilm;
+  SpectrumLanes inv = 1.0f / (sDen * pDen);
+  SpectrumLanes rs = (c - etaCosFilm) * pDen * inv, rp = (etaC - cosFilm) * sDen * inv;
+  SpectrumLanes Rs = rs * rs, Rp = rp * rp;
+  SpectrumLanes fourProduct = 4.0f * etaC * cosFilm * inv * inv;
+  SpectrumLanes Ts = fourProduct * pDen * pDen, Tp = fourProduct * sDen * sDen;
+  SpectrumLanes oneMinusCos = 1.0f - cosReduced(phaseScale_ * cosFilm);
+  // 1 + R^2 - 2 R cos(delta) = (1 - R)^2 + 2 R (1 - cos(delta)) > 0.
+  SpectrumLanes sNum = 2.0f * Rs * oneMinusCos, pNum = 2.0f * Rp * oneMinusCos;
+  SpectrumLanes sDenFilm = Ts * Ts + sNum, pDenFilm = Tp * Tp + pNum;
+  SpectrumLanes invFilm = 1.0f / (sDenFilm * pDenFilm);
+  return {sNum * pDenFilm * invFilm, pNum * sDenFilm * invFilm};
+}
 
 }  // namespace columba
