@@ -47,6 +47,7 @@ LitArc BarbuleCrossSection::litArc(Vec2 towardWorld) const {
   arc.toward = d;
   arc.across = {-d.y, d.x};
   arc.a = d.x * d.x * invBSqr_ + d.y * d.y;
+  arc.invA = 1.0f / arc.a;
   arc.q = arc.across.x * d.x * invBSqr_ + arc.across.y * d.y;
   // Support of the ellipse along `across`: sqrt(b^2 across_u^2 + across_v^2).
   arc.halfWidth = std::sqrt(d.x * d.x + bSqr_ * d.y * d.y);
@@ -75,7 +76,7 @@ LitArc BarbuleCrossSection::litArc(Vec2 towardWorld) const {
   // (shifted by c across and sigma along d) is in front iff sigma + (q / a) c > 0; the one at -H is
   // then behind. The front neighbour hides the offsets where its silhouette overlaps ours.
   float c = dot2(neighbour_, arc.across), sigma = dot2(neighbour_, d);
-  float shift = sigma + arc.q / arc.a * c > 0.0f ? c : -c;
+  float shift = sigma + arc.q * arc.invA * c > 0.0f ? c : -c;
   if (shift > 0.0f) hi = std::min(hi, shift - arc.halfWidth);
   else lo = std::max(lo, shift + arc.halfWidth);
 
@@ -93,7 +94,14 @@ float BarbuleCrossSection::coverage(const LitArc& arc, Vec2 towardWorld) const {
 
 Vec2 BarbuleCrossSection::pointAt(const LitArc& arc, float h) const {
   float root = std::sqrt(std::max(arc.a - h * h * invBSqr_, 0.0f));
-  float s = (root - arc.q * h) / arc.a;
+  float s = (root - arc.q * h) * arc.invA;
+  return arc.across * h + arc.toward * s;
+}
+
+Vec2 BarbuleCrossSection::pointAtAngle(const LitArc& arc, float sinPsi, float cosPsi) const {
+  // With h = halfWidth sin(psi) and halfWidth^2 = b^2 a, sqrt(a - h^2 / b^2) = (halfWidth / b) cos(psi).
+  float h = arc.halfWidth * sinPsi;
+  float s = (arc.halfWidth / b_ * cosPsi - arc.q * h) * arc.invA;
   return arc.across * h + arc.toward * s;
 }
 

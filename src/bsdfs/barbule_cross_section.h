@@ -28,7 +28,7 @@ struct LitArc {
   float halfWidth = 0.0f;   // the whole ellipse's silhouette spans offsets [-halfWidth, halfWidth]
   float hMin = 0.0f, hMax = 0.0f;  // offsets of the lit part; empty when hMax <= hMin
   // Front intersection of the ray at offset h: s = (-q h + sqrt(a - h^2 / b^2)) / a.
-  float a = 1.0f, q = 0.0f;
+  float a = 1.0f, invA = 1.0f, q = 0.0f;
 
   float width() const { return hMax > hMin ? hMax - hMin : 0.0f; }
 };
@@ -64,6 +64,10 @@ class BarbuleCrossSection {
   // Point (local) where the ray at offset h coming along -toward first meets the central ellipse;
   // h must lie within [-halfWidth, halfWidth].
   Vec2 pointAt(const LitArc& arc, float h) const;
+  // The same front point parametrised by psi in [-pi/2, pi/2], h = halfWidth sin(psi): the angle
+  // of the point once the ellipse is mapped to the unit circle. The point moves smoothly with psi
+  // where it moves like sqrt(h) with h, at the silhouette.
+  Vec2 pointAtAngle(const LitArc& arc, float sinPsi, float cosPsi) const;
   // Unit outward normal (local) of the central ellipse at a point on it.
   Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
   // Point (local) of the central ellipse whose outward normal is the local unit vector n.

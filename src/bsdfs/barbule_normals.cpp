@@ -1,0 +1,96 @@
+#include "bsdfs/barbule_normals.h"
+
+namespace columba {
+
+namespace {
+constexpr float kSinThetaD = kSinBarbuleThetaD;
+constexpr float kCosThetaD = kCosBarbuleThetaD;
+}  // namespace
+
+LongitudinalDensity::LongitudinalDensity(float A, float B)
+    : A_(A), B_(B), thetaMin_(-kBarbuleThetaD), thetaMax_(kBarbuleThetaD) {
+  float atMax = A * kCosThetaD + B * kSinThetaD, atMin = A * kCosThetaD - B * kSinThetaD;
+  if (atMax >= 0.0f && atMin >= 0.0f) {
+    // The whole range faces w (the usual case): the projected area is exactly A.
+    primitiveMin_ = -A * kSinThetaD - B * kCosThetaD;
+    mass_ = 2.0f * A * kSinThetaD;
+    shadowing_ = 1.0f;
+    return;
+  }
+  if (atMax <= 0.0f && atMin <= 0.0f) {
+    primitiveMin_ = mass_ = shadowing_ = 0.0f;
+    thetaMin_ = thetaMax_ = 0.0f;
+    return;
+  }
+  // One end faces away: clip at the zero of A cos(theta) + B sin(theta), where tan(theta) = -A / B.
+  float zero = std::atan(-A / B);
+  if (atMin < 0.0f) thetaMin_ = zero;
+  else thetaMax_ = zero;
+  auto primitive = [&](float theta) { return A * std::sin(theta) - B * std::cos(theta); };
+  primitiveMin_ = primitive(thetaMin_);
+  mass_ = std::max(primitive(thetaMax_) - primitiveMin_, 0.0f);
+  shadowing_ = mass_ > 0.0f ? clampf(2.0f * A * kSinThetaD / mass_, 0.0f, 1.0f) : 0.0f;
+}
+
+float LongitudinalDensity::sample(float u) const {
+  // F(theta) = A sin(theta) - B cos(theta) = R sin(theta - delta) with R = |(A, B)|,
+  // delta = atan2(B, A); the density is proportional to F'.
+  float R = std::sqrt(A_ * A_ + B_ * B_);
+  float target = primitiveMin_ + u * mass_;
+  float theta = std::atan2(B_, A_) + safeAsin(target / R);
+  return clampf(theta, thetaMin_, thetaMax_);
+}
+
+float LongitudinalDensity::mean() const {
+  if (!(mass_ > 0.0f)) return 0.5f * (thetaMin_ + thetaMax_);
+  if (shadowing_ == 1.0f && thetaMin_ == -kBarbuleThetaD && thetaMax_ == kBarbuleThetaD)
+    return B_ / A_ * (kSinThetaD - kBarbuleThetaD * kCosThetaD) / kSinThetaD;
+  // Antiderivative of theta (A cos(theta) + B sin(theta)).
+  auto moment = [&](float t) {
+    float c = std::cos(t), s = std::sin(t);
+    return A_ * (t * s + c) + B_ * (s - t * c);
+  };
+  return (moment(thetaMax_) - moment(thetaMin_)) / mass_;
+}
+
+float LongitudinalDensity::pdf(float theta) const {
+  if (!(mass_ > 0.0f) || theta < thetaMin_ || theta > thetaMax_) return 0.0f;
+  return std::max(A_ * std::cos(theta) + B_ * std::sin(theta), 0.0f) / mass_;
+}
+
+float barbuleNDF(const BarbuleCrossSection& geometry, const Vec3& m) {
+  if (std::abs(m.y) >= kSinThetaD) return 0.0f;
+  InPlaneDirection p = inPlane(m);
+  Vec2 local = geometry.toLocal(p.dir);
+  if (!geometry.onReflectiveArc(local)) return 0.0f;
+  return geometry.radiusOfCurvature(local) / geometry.spacing() / (2.0f * kSinThetaD * p.cosTheta);
+}
+
+VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u) {
+  float h = arc.hMin + u.x * arc.width();
+  VisibleNormal out;
+  out.localNormal = geometry.normalAt(geometry.pointAt(arc, h));
+  Vec2 n = geometry.toWorld(out.localNormal);
+  LongitudinalDensity longitudinal(w.z * n.x + w.x * n.y, w.y);
+  float theta = longitudinal.sample(u.y);
+  out.m = barbuleNormal(n, std::cos(theta), std::sin(theta));
+  return out;
+}
+
+float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, const Vec3& m) {
+  if (std::abs(m.y) >= kSinThetaD || !(arc.width() > 0.0f)) return 0.0f;
+  float wm = dot(w, m);
+  if (!(wm > 0.0f)) return 0.0f;
+  InPlaneDirection mp = inPlane(m);
+  Vec2 local = geometry.toLocal(mp.dir);
+  if (!geometry.isLit(arc, local)) return 0.0f;
+  // phi: dh = rho cos(gamma - phi - mu) dphi with h uniform on the lit width.
+  float A = w.z * mp.dir.x + w.x * mp.dir.y;
+  InPlaneDirection wp = inPlane(w);
+  float pdfPhi = geometry.radiusOfCurvature(local) * (A / wp.cosTheta) / arc.width();
+  // theta given phi: (w . m) / mass, and dm = cos(theta) dtheta dphi.
+  float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(wm);
+  return pdfPhi * pdfTheta / mp.cosTheta;
+}
+
+}  // namespace columba

@@ -1,0 +1,99 @@
+#pragma once
+// Normal distribution of the barbule surface and its visible normals (DESIGN.md §5.3, §5.6).
+//
+// A normal m is described by its in-plane part, the unit 2D normal n = (n_u, n_v) of the
+// cross-section ellipse (local normal angle phi), and its longitudinal angle theta out of the
+// cross-section plane: m = (cos(theta) n_v, sin(theta), cos(theta) n_u). In these coordinates
+// dm = cos(theta) dtheta dphi and
+//   D(m) = D_phi(phi) D_theta(theta) / cos(theta),  D_phi = rho(phi) / H,  D_theta = 1 / (2 sin thetaD)
+// on the reflective arc and |theta| < thetaD, where rho is the ellipse's radius of curvature.
+//
+// Visible normals from a direction w: the offset h is uniform over the lit arc (density
+// rho cos(gamma - phi - mu) / (lit width) in phi), then theta given phi has density proportional
+// to D_theta (w . m) = D_theta (A cos(theta) + B sin(theta)), clipped to where it is positive.
+#include "bsdfs/barbule_cross_section.h"
+#include "core/vector.h"
+
+namespace columba {
+
+// Half-range of the barbules' longitudinal normal angles (their slight bending along t).
+inline constexpr float kBarbuleThetaD = 0.025f * kPi;
+inline constexpr float kSinBarbuleThetaD = 0.0784590957f;  // sin(0.025 pi)
+inline constexpr float kCosBarbuleThetaD = 0.9969173337f;
+inline constexpr float kTanBarbuleThetaD = 0.0787017068f;
+
+// The 2D part of a 3D direction w = (x, y, z): unit in-plane direction (z, x) / |(z, x)| and
+// cos(theta) = |(z, x)|.
+struct InPlaneDirection {
+  Vec2 dir;
+  float cosTheta = 0.0f;
+};
+inline InPlaneDirection inPlane(const Vec3& w) {
+  InPlaneDirection p;
+  p.cosTheta = std::sqrt(w.z * w.z + w.x * w.x);
+  p.dir = p.cosTheta > 0.0f ? Vec2(w.z / p.cosTheta, w.x / p.cosTheta) : Vec2(1.0f, 0.0f);
+  return p;
+}
+
+// The 3D normal with world in-plane normal n (unit) and longitudinal angle theta.
+inline Vec3 barbuleNormal(Vec2 worldNormal, float cosTheta, float sinTheta) {
+  return {cosTheta * worldNormal.y, sinTheta, cosTheta * worldNormal.x};
+}
+
+// Density of theta on [-thetaD, thetaD] proportional to (A cos(theta) + B sin(theta))+, the
+// projected area of the normals at one phi seen from a direction with in-plane part
+// A = cos(theta_w) cos(gamma_w - phi - mu) > 0 and longitudinal part B = sin(theta_w).
+class LongitudinalDensity {
+ public:
+  LongitudinalDensity(float A, float B);
+
+  float thetaMin() const { return thetaMin_; }
+  float thetaMax() const { return thetaMax_; }
+  // Inverse CDF in closed form: theta = delta + asin(...), delta = atan2(B, A).
+  float sample(float u) const;
+  float pdf(float theta) const;
+  // The same density at the normal m with w . m = `projection`, for m within |theta| < thetaD:
+  // there A cos(theta) + B sin(theta) is w . m, and the clipped range is exactly where it is > 0.
+  float pdfFromProjection(float projection) const { return mass_ > 0.0f ? std::max(projection, 0.0f) / mass_ : 0.0f; }
+  // Mean of theta under this density (a one-node rule placed there is exact for linear integrands).
+  float mean() const;
+  // Longitudinal shadowing: A / integral of D_theta (w . m)+ dtheta. It is 1 unless the range is
+  // clipped (w nearly grazing the normals' arc), and makes the projected area of the visible
+  // normals equal the projected area A of the cross-section's normal, as a Smith term does.
+  float shadowing() const { return shadowing_; }
+
+ private:
+  float A_, B_;
+  float thetaMin_, thetaMax_;
+  float primitiveMin_;  // F(thetaMin), F(theta) = A sin(theta) - B cos(theta)
+  float mass_;          // F(thetaMax) - F(thetaMin)
+  float shadowing_;
+};
+
+// Whether every normal with |theta| <= thetaD at this phi faces w (A cos(theta) + B sin(theta) >= 0
+// on the whole range): the usual case, where the density needs no clipping.
+inline bool facesWholeRange(float A, float B) { return std::abs(B) * kTanBarbuleThetaD <= A; }
+// LongitudinalDensity(A, B).shadowing() and .mean(), short-cut in that usual case.
+inline float longitudinalShadowing(float A, float B) {
+  return facesWholeRange(A, B) ? 1.0f : LongitudinalDensity(A, B).shadowing();
+}
+inline float meanLongitudinalAngle(float A, float B) {
+  // (B / A) (sin(thetaD) - thetaD cos(thetaD)) / sin(thetaD) unclipped.
+  constexpr float kUnclippedMeanScale = 0.00205703f;
+  return facesWholeRange(A, B) ? B / A * kUnclippedMeanScale : LongitudinalDensity(A, B).mean();
+}
+
+// D(m) of the normal m (unit); 0 off the reflective arc or beyond thetaD.
+float barbuleNDF(const BarbuleCrossSection& geometry, const Vec3& m);
+
+struct VisibleNormal {
+  Vec3 m;
+  Vec2 localNormal;  // in-plane normal in the ellipse's frame
+};
+// A visible normal from w (w.z > 0; `arc` = geometry.litArc(inPlane(w).dir), not empty): the
+// offset from u.x, theta from u.y.
+VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u);
+// Solid-angle density of sampleVisibleNormal producing m (0 where it cannot).
+float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, const Vec3& m);
+
+}  // namespace columba
