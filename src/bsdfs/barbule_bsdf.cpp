@@ -1,0 +1,389 @@
+#include "bsdfs/barbule_bsdf.h"
+
+#include <cmath>
+#include "bsdfs/barbule_normals.h"
+#include "core/gauss_legendre.h"
+#include "core/sampling.h"
+#include "optics/melanin.h"
+#include "optics/thin_film.h"
+
+// Normalisation. Write r = lit width / (H |cos gamma_i|) for omega_i's coverage, A = cos(theta_i)
+// cos(gamma_i - phi - mu) for the in-plane projected area of a normal, and G for the in-plane
+// visibility (lit from omega_i and seen from omega_o).
+//
+// R: f_R = I_R(omega_i . m) D(m) G S(omega_i) S(omega_o) / (4 |omega_i . n| |omega_o . n|) with
+// m the half vector and S the longitudinal shadowing of LongitudinalDensity. With
+// d omega_o = 4 (omega_i . m) dm and D dm = D_phi D_theta dphi dtheta,
+//   integral of f_R |cos theta_o| d omega_o
+//     = (1 / |omega_i . n|) integral of D_phi [integral of D_theta (omega_i . m)+ S(omega_i) ...
+//       dtheta] dphi,
+// where the inner integral is A times a mean over theta (that is what S(omega_i) normalises), and
+// integral of rho cos(gamma_i - phi - mu) G_i dphi = lit width (dh = rho cos(...) dphi). With
+// |omega_i . n| = cos(theta_i) cos(gamma_i), the lobe's albedo is r times the mean, over the
+// visible normals (h uniform on the lit width, theta | phi proportional to omega_i . m), of
+// I_R S(omega_o) G_o. The coverage is inside D and G: no separate factor r.
+//
+// TRT: f_TRT = rho / pi with rho = (1 / (H |cos gamma_i|)) integral over the offsets lit from both
+// directions of E_theta[I_TRT] dh = r times the mean of I_TRT G_o over the visible normals. For a
+// fixed normal, the directions on its front side carry integral of |cos theta_o| / pi = 1, so the
+// albedo is at most r max(I_TRT).
+//
+// Sampling: a lobe with probabilities proportional to r <I_R>, r <I_TRT>, t estimated from omega_i
+// alone (so pdf() reproduces them exactly), then
+//   R:   a visible normal (h uniform, theta by inverse CDF) and the mirror direction; its density is
+//        p(phi) p(theta | phi) / cos(theta_m) / (4 omega_i . m), which works out to
+//        D(m) S(omega_i) H / (4 lit width cos(theta_i));
+//   TRT: h uniform (theta_m = 0), a cosine-weighted direction about n flipped to the front of that
+//        normal; its density is (offsets lit from both / lit width) |cos theta_o| / pi, exactly;
+//   T:   -wi with weight t / P(T).
+// R and TRT samples whose point is not visible from omega_o are rejected. The weight of a non-delta
+// sample is eval / pdf with pdf the mixture density of what is returned.
+
+namespace columba {
+
+namespace {
+
+constexpr float kSinThetaD = kSinBarbuleThetaD;
+// Lower bound on the share of R and TRT in the lobe choice, relative to r: keeps every lobe
+// reachable when the estimate at a few normals happens to be near zero.
+constexpr float kMinLobeShare = 0.01f;
+
+bool given(float v) { return !std::isnan(v); }
+
+// sin and cos of |x| <= pi/2 by their Taylor polynomials of degree 11 and 12 (errors < 6e-8):
+// cheaper than the library's full-range versions at every quadrature node.
+void sinCosWithinQuarterTurn(float x, float& sinX, float& cosX) {
+  float x2 = x * x;
+  sinX = x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880 + x2 * (-1.0f / 39916800))))));
+  cosX = 1.0f + x2 * (-0.5f + x2 * (1.0f / 24 + x2 * (-1.0f / 720 + x2 * (1.0f / 40320 + x2 * (-1.0f / 3628800 + x2 * (1.0f / 479001600))))));
+}
+
+void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
+  GaussLegendreRule rule = gaussLegendre(n);
+  nodes.assign(rule.nodes.begin(), rule.nodes.end());
+  weights.assign(rule.weights.begin(), rule.weights.end());
+}
+
+// Light from below the vane is treated with the mirrored direction (z -> -z).
+Vec3 mirroredAbove(const Vec3& w) { return {w.x, w.y, std::abs(w.z)}; }
+
+// Fraction of light along w passing through the gaps.
+float gapTransmission(const BarbuleCrossSection& geometry, const Vec3& w) {
+  InPlaneDirection p = inPlane(mirroredAbove(w));
+  if (!(p.cosTheta > 0.0f)) return 1.0f;
+  return 1.0f - geometry.coverage(geometry.litArc(p.dir), p.dir);
+}
+
+}  // namespace
+
+struct BarbuleBSDF::Shading {
+  BarbuleCrossSection geometry;
+  FreeStandingFilm film;
+  SpectrumLanes melanin;
+};
+
+// The model's incident direction and what depends on it alone.
+struct BarbuleBSDF::Incident {
+  Vec3 w;
+  InPlaneDirection plane;
+  LitArc arc;
+  float coverage = 0.0f;
+  bool scatters = false;  // above the vane with part of the arc lit
+};
+
+struct BarbuleBSDF::LobeChoice {
+  float transmission = 1.0f, reflection = 0.0f, trt = 0.0f;
+};
+
+BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuadrature quadrature)
+    : params_(params), role_(role), geometry_(params.b, params.phi0, params.phi1, params.mu, params.H) {
+  makeRule(quadrature.offsetNodes, offsetNodes_, offsetWeights_);
+  makeRule(quadrature.thetaNodes, thetaNodes_, thetaWeights_);
+  makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
+}
+
+BarbuleBSDF::Shading BarbuleBSDF::shading(const BSDFContext& ctx, const Wavelengths& wl) const {
+  float height = given(ctx.barbuleHeight) ? ctx.barbuleHeight : params_.height;
+  Shading s{given(ctx.barbuleH) || given(ctx.barbuleMu)
+                ? BarbuleCrossSection(params_.b, params_.phi0, params_.phi1,
+                                      given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
+                                      given(ctx.barbuleH) ? ctx.barbuleH : params_.H)
+                : geometry_,
+            FreeStandingFilm(params_.filmIOR, params_.extIOR, std::max(height, 0.0f), wl), SpectrumLanes{}};
+  for (int i = 0; i < kSpectrumSamples; ++i) s.melanin[i] = melaninReflectance(wl[i]);
+  return s;
+}
+
+BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w) const {
+  Incident in;
+  in.w = w;
+  in.plane = inPlane(w);
+  if (!(w.z > 0.0f) || !(in.plane.cosTheta > 0.0f)) return in;
+  in.arc = s.geometry.litArc(in.plane.dir);
+  in.coverage = s.geometry.coverage(in.arc, in.plane.dir);
+  in.scatters = in.arc.width() > 0.0f && in.coverage > 0.0f;
+  return in;
+}
+
+Spectrum BarbuleBSDF::reflection(const Shading& s, const Incident& in, const Vec3& omegaO,
+                                 const LitArc& outArc) const {
+  const BarbuleCrossSection& geometry = s.geometry;
+  Vec3 sum = in.w + omegaO;
+  float lengthSqr = lengthSquared(sum);
+  if (!(lengthSqr > 0.0f)) return Spectrum(0.0f);
+  Vec3 m = sum / std::sqrt(lengthSqr);
+  if (std::abs(m.y) >= kSinThetaD) return Spectrum(0.0f);
+  InPlaneDirection mp = inPlane(m);
+  Vec2 local = geometry.toLocal(mp.dir);
+  if (!geometry.isLit(in.arc, local) || !geometry.isLit(outArc, local)) return Spectrum(0.0f);
+
+  float ndf = geometry.radiusOfCurvature(local) / geometry.spacing() / (2.0f * kSinThetaD * mp.cosTheta);
+  float shadowIn = longitudinalShadowing(in.w.z * mp.dir.x + in.w.x * mp.dir.y, in.w.y);
+  float shadowOut = longitudinalShadowing(omegaO.z * mp.dir.x + omegaO.x * mp.dir.y, omegaO.y);
+  float scale = ndf * shadowIn * shadowOut / (4.0f * std::abs(in.w.z) * std::abs(omegaO.z));
+  FreeStandingFilm::Reflectance film = s.film.reflectance(dot(in.w, m));
+  return toSpectrum((0.5f * scale) * (film.s + film.p));
+}
+
+Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const {
+  const BarbuleCrossSection& geometry = s.geometry;
+  OffsetInterval common = geometry.commonOffsets(in.arc, outArc);
+  float length = common.length();
+  if (!(length > 0.0f)) return Spectrum(0.0f);
+
+  // I_TRT / R_m = 1/2 (T_s(in) T_s(out) + T_p(in) T_p(out)) with T = 1 - R of the film.
+  auto transmissionProduct = [&](float cosIn, float cosOut) {
+    FreeStandingFilm::Reflectance a = s.film.reflectance(cosIn), b = s.film.reflectance(cosOut);
+    return 0.5f * ((1.0f - a.s) * (1.0f - b.s) + (1.0f - a.p) * (1.0f - b.p));
+  };
+
+  // Offsets through the circle angle psi (h = halfWidth sin(psi), dh = halfWidth cos(psi) dpsi):
+  // the normal turns smoothly with psi, also where the interval ends at a silhouette of omega_i.
+  float halfWidth = in.arc.halfWidth;
+  float psiLo = std::asin(clampf(common.lo / halfWidth, -1.0f, 1.0f));
+  float psiSpan = std::asin(clampf(common.hi / halfWidth, -1.0f, 1.0f)) - psiLo;
+  SpectrumLanes sum{};
+  for (size_t k = 0; k < offsetNodes_.size(); ++k) {
+    float psi = psiLo + offsetNodes_[k] * psiSpan;
+    float sinPsi, cosPsi;
+    sinCosWithinQuarterTurn(psi, sinPsi, cosPsi);
+    // Weights of the mean over [lo, hi] in h.
+    float weight = offsetWeights_[k] * halfWidth * cosPsi * psiSpan / length;
+    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAtAngle(in.arc, sinPsi, cosPsi)));
+    float projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
+    if (thetaNodes_.size() == 1) {
+      // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms are exact in
+      // float.
+      float theta = meanLongitudinalAngle(projectedIn, in.w.y), thetaSqr = theta * theta;
+      float c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr / 6.0f);
+      sum += weight * transmissionProduct(projectedIn * c + in.w.y * sn, std::abs(projectedOut * c + omegaO.y * sn));
+      continue;
+    }
+    // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
+    // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
+    LongitudinalDensity longitudinal(projectedIn, in.w.y);
+    float pieces[3] = {longitudinal.thetaMin(), longitudinal.thetaMax(), longitudinal.thetaMax()};
+    int pieceCount = 1;
+    if (omegaO.y != 0.0f) {
+      float kink = std::atan(-projectedOut / omegaO.y);
+      if (kink > pieces[0] && kink < pieces[1]) {
+        pieces[1] = kink;
+        pieceCount = 2;
+      }
+    }
+    SpectrumLanes inner{};
+    float norm = 0.0f;
+    for (int piece = 0; piece < pieceCount; ++piece) {
+      float lo = pieces[piece], span = pieces[piece + 1] - lo;
+      for (size_t j = 0; j < thetaNodes_.size(); ++j) {
+        float theta = lo + thetaNodes_[j] * span;
+        float c = std::cos(theta), sn = std::sin(theta);
+        float cosIn = projectedIn * c + in.w.y * sn, cosOut = std::abs(projectedOut * c + omegaO.y * sn);
+        float w = thetaWeights_[j] * span * std::max(cosIn, 0.0f);
+        if (!(w > 0.0f)) continue;
+        inner += w * transmissionProduct(cosIn, cosOut);
+        norm += w;
+      }
+    }
+    if (norm > 0.0f) sum += (weight / norm) * inner;
+  }
+  // f_TRT = rho / pi, rho = (1 / (H |cos gamma_i|)) * length * mean; |cos gamma_i| = |z| / cos(theta_i).
+  float scale = length * in.plane.cosTheta / (kPi * geometry.spacing() * std::abs(in.w.z));
+  return toSpectrum(scale * s.melanin * sum);
+}
+
+BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Vec3& omegaO) const {
+  if (!in.scatters || omegaO.z == 0.0f) return {};
+  LitArc outArc = s.geometry.litArc(inPlane(omegaO).dir);
+  return {reflection(s, in, omegaO, outArc), trt(s, in, omegaO, outArc)};
+}
+
+BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident& in) const {
+  LobeChoice choice;
+  if (!in.scatters) return choice;
+  const BarbuleCrossSection& geometry = s.geometry;
+  // Means of I_R and of R_m T^2 (TRT with the same film transmission on the way out) over the lit
+  // offsets at theta_m = 0, averaged over the wavelengths.
+  float meanR = 0.0f, meanTRT = 0.0f;
+  for (size_t k = 0; k < lobeNodes_.size(); ++k) {
+    float h = in.arc.hMin + lobeNodes_[k] * in.arc.width();
+    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, h)));
+    FreeStandingFilm::Reflectance film = s.film.reflectance(in.w.z * n.x + in.w.x * n.y);
+    SpectrumLanes r = 0.5f * (film.s + film.p);
+    SpectrumLanes trt = s.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
+    meanR += lobeWeights_[k] * toSpectrum(r).average();
+    meanTRT += lobeWeights_[k] * toSpectrum(trt).average();
+  }
+  float r = in.coverage;
+  float energyR = r * std::max(meanR, kMinLobeShare), energyTRT = r * std::max(meanTRT, kMinLobeShare);
+  float energyT = 1.0f - r;
+  float total = energyR + energyTRT + energyT;
+  choice.transmission = energyT / total;
+  choice.reflection = energyR / total;
+  choice.trt = energyTRT / total;
+  return choice;
+}
+
+float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo) const {
+  if (!in.scatters) return 0.0f;
+  const BarbuleCrossSection& geometry = s.geometry;
+  LitArc outArc = geometry.litArc(inPlane(wo).dir);
+  float density = 0.0f;
+
+  Vec3 sum = in.w + wo;
+  float lengthSqr = lengthSquared(sum);
+  if (lengthSqr > 0.0f) {
+    Vec3 m = sum / std::sqrt(lengthSqr);
+    float cosHalf = dot(in.w, m);
+    if (cosHalf > 0.0f && geometry.isLit(outArc, geometry.toLocal(inPlane(m).dir)))
+      density += choice.reflection * visibleNormalPdf(geometry, in.arc, in.w, m) / (4.0f * cosHalf);
+  }
+
+  float common = geometry.commonOffsets(in.arc, outArc).length();
+  density += choice.trt * common / in.arc.width() * std::abs(wo.z) * kInvPi;
+  return density;
+}
+
+Spectrum BarbuleBSDF::evalWith(const Shading& s, const Vec3& wi, const Vec3& wo) const {
+  Lobes l = role_ == Role::CameraIncident ? lobes(s, incident(s, wi), wo) : lobes(s, incident(s, wo), wi);
+  return (l.reflection + l.trt) * std::abs(wo.z);
+}
+
+Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return evalWith(shading(ctx, wl), wi, wo);
+}
+
+float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  Shading s = shading(ctx, wl);
+  Incident in = incident(s, wi);
+  return samplingPdf(s, in, lobeChoice(s, in), wo);
+}
+
+std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                              float uComponent, Vec2 u) const {
+  Shading s = shading(ctx, wl);
+  const BarbuleCrossSection& geometry = s.geometry;
+  Incident in = incident(s, wi);
+  LobeChoice choice = lobeChoice(s, in);
+
+  BSDFSample bs;
+  if (uComponent < choice.transmission) {
+    float t = in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, wi);
+    if (!(t > 0.0f)) return std::nullopt;
+    bs.wo = -wi;
+    bs.pdf = choice.transmission;
+    bs.weight = Spectrum(t / choice.transmission);
+    bs.delta = bs.passThrough = true;
+    return bs;
+  }
+
+  Vec2 localNormal;
+  if (uComponent < choice.transmission + choice.reflection) {
+    VisibleNormal normal = sampleVisibleNormal(geometry, in.arc, wi, u);
+    localNormal = normal.localNormal;
+    bs.wo = reflect(wi, normal.m);
+  } else {
+    // The offset reuses what uComponent has left within the TRT share; u drives the direction.
+    float uOffset = clampf((uComponent - choice.transmission - choice.reflection) / choice.trt, 0.0f, 1.0f);
+    localNormal = geometry.normalAt(geometry.pointAt(in.arc, in.arc.hMin + uOffset * in.arc.width()));
+    Vec3 m = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);
+    Vec3 w = sampleCosineHemisphere(u);
+    bs.wo = dot(w, m) >= 0.0f ? w : -w;
+  }
+  // The scattering point must be visible from wo.
+  if (!geometry.isLit(geometry.litArc(inPlane(bs.wo).dir), localNormal)) return std::nullopt;
+
+  bs.pdf = samplingPdf(s, in, choice, bs.wo);
+  if (!(bs.pdf > 0.0f)) return std::nullopt;
+  bs.weight = evalWith(s, wi, bs.wo) / bs.pdf;
+  return bs;
+}
+
+Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
+  Shading s = shading(ctx, wl);
+  return Spectrum(gapTransmission(s.geometry, wi));
+}
+
+BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO,
+                                          const Wavelengths& wl) const {
+  Shading s = shading(ctx, wl);
+  return lobes(s, incident(s, omegaI), omegaO);
+}
+
+float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
+  Wavelengths any = Wavelengths::fixed({550.0f, 550.0f, 550.0f, 550.0f});
+  return 1.0f - gapTransmission(shading(ctx, any).geometry, omegaI);
+}
+
+namespace {
+
+// A <float>, or a <string> with a number, a named index or "keratin".
+CauchyIOR readIOR(const Properties& props, const std::string& name, const std::string& defaultName) {
+  if (props.has(name) && !props.isString(name)) {
+    float value = props.getFloat(name);
+    if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");
+    return CauchyIOR::constant(value);
+  }
+  std::string text = props.getString(name, defaultName);
+  std::optional<CauchyIOR> ior = iorFromName(text);
+  if (!ior)
+    throw props.error(name, "unknown index of refraction '" + text +
+                                "' (give a number, a named material such as 'air', or 'keratin')");
+  return *ior;
+}
+
+BarbuleParameters readParameters(const Properties& props) {
+  BarbuleParameters p;
+  p.b = props.getFloat("b", p.b);
+  p.phi0 = props.getFloat("phi_0", p.phi0);
+  p.phi1 = props.getFloat("phi_1", p.phi1);
+  p.mu = props.getFloat("mu", p.mu);
+  p.H = props.getFloat("H", p.H);
+  p.height = props.getFloat("height", p.height);
+  p.filmIOR = readIOR(props, "film_ior", "keratin");
+  CauchyIOR ext = readIOR(props, "ext_ior", "air");
+
+  if (!(p.b > 0.0f)) throw props.error("b", "the cross-section's semi-axis must be positive");
+  if (!(p.H > 0.0f)) throw props.error("H", "the barbule spacing must be positive");
+  if (!(p.height >= 0.0f)) throw props.error("height", "the film thickness must not be negative");
+  float arc = p.phi1 - p.phi0;
+  if (!(arc > 0.0f && (arc <= kPi || arc >= kTwoPi)))
+    throw props.error("phi_1", "the reflective arc phi_1 - phi_0 must lie in (0, pi] or be at least 2 pi");
+  if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
+  p.extIOR = ext.a;
+  if (!(p.filmIOR(kLambdaMin) > p.extIOR && p.filmIOR(kLambdaMax) > p.extIOR))
+    throw props.error("film_ior", "the film must be optically denser than the surrounding medium");
+  return p;
+}
+
+}  // namespace
+
+std::shared_ptr<Object> makeBarbuleBSDF(const Properties& props) {
+  return std::make_shared<BarbuleBSDF>(readParameters(props), BarbuleBSDF::Role::CameraIncident);
+}
+
+std::shared_ptr<Object> makeBarbuleBSDFEv(const Properties& props) {
+  return std::make_shared<BarbuleBSDF>(readParameters(props), BarbuleBSDF::Role::LightIncident);
+}
+
+}  // namespace columba

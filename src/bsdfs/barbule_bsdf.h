@@ -1,0 +1,110 @@
+#pragma once
+// The barbule BSDF of rock dove neck feathers (Huang et al. 2022; DESIGN.md §5): a vane of
+// parallel barbules with elliptical cross-sections coated by a thin keratin film over melanin.
+//   R    specular reflection off the film (thin-film interference), a microfacet lobe whose
+//        normal distribution comes from the cross-section's curvature;
+//   TRT  light through the film, reflected by the melanin layer and back out: diffuse-like;
+//   T    straight through the gaps between barbules: a pass-through (not a bounce).
+//
+// Frame: z = vane normal n, y = barbule axis t, x across the barbules.
+//
+// Conventions and decisions:
+// - The model's incident direction omega_i is the one whose lit arc, coverage r and film entry
+//   the lobes are built on. `barbulebsdf` uses wi (the camera side) as omega_i, as a BSDF-sampled
+//   path tracer needs; `barbulebsdfev` (Role::LightIncident) evaluates with omega_i = wo, the
+//   light direction, as the paper's emitter-sampled visualisations do. Both sample the same way
+//   (from wi) and report the density of that sampler, with weight = eval / pdf; for the
+//   evaluation twin this is unbiased wherever eval is reachable from wi (always for R, whose
+//   value is symmetric; TRT needs a point lit from both directions either way), but it is meant
+//   for emitter sampling.
+// - omega_i below the vane (omega_i . n <= 0) reflects nothing; light passes with the coverage of
+//   the mirrored direction (z -> -z), as the reference does. Outgoing directions below the vane
+//   are allowed: the lower part of the arc reflects down through the gaps.
+// - Reciprocity: f_R is symmetric in its two directions when both are above the vane (I_R at
+//   omega_i . m = omega_o . m, D(m), a symmetric visibility and longitudinal shadowing). f_TRT is
+//   not: it averages over the normals lit from omega_i and is scaled by omega_i's coverage.
+// - Normalisation (derived in barbule_bsdf.cpp): the integral of f_R cos(theta_o) over omega_o is
+//   r times the mean over visible normals of I_R times the visibility toward omega_o, and the
+//   same holds for TRT; with T = 1 - r the total never exceeds 1.
+#include <memory>
+#include <vector>
+#include "bsdfs/barbule_cross_section.h"
+#include "bsdfs/bsdf.h"
+#include "optics/dispersion.h"
+#include "scene/properties.h"
+
+namespace columba {
+
+struct BarbuleParameters {
+  float b = 0.25f;      // cross-section semi-axis along n (the one across is 1)
+  float phi0 = -0.37f;  // reflective arc, normal angles in the cross-section's own frame (rad)
+  float phi1 = 2.64f;
+  float mu = -0.35f;    // tilt of the cross-section about the barbule axis (rad)
+  float H = 1.25f;      // barbule spacing, in units of the across semi-axis
+  float height = 0.6f;  // keratin cortex (film) thickness, micrometres
+  CauchyIOR filmIOR = CauchyIOR::keratin();
+  float extIOR = 1.000277f;  // air
+};
+
+// Gauss-Legendre node counts of the deterministic averages over visible normals: the TRT lobe
+// (offsets across the lit arc x longitudinal angles) and the lobe-selection estimate.
+struct BarbuleQuadrature {
+  int offsetNodes = 4;
+  int thetaNodes = 1;
+  int lobeEstimateNodes = 3;
+};
+
+class BarbuleBSDF : public BSDF {
+ public:
+  enum class Role { CameraIncident, LightIncident };
+
+  explicit BarbuleBSDF(const BarbuleParameters& params, Role role = Role::CameraIncident,
+                       BarbuleQuadrature quadrature = {});
+
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
+  bool hasPassThrough() const override { return true; }
+
+  // The model's two non-delta lobes f(omega_i, omega_o) (without any cosine), omega_i first
+  // whatever the role: for plots and tests.
+  struct Lobes {
+    Spectrum reflection, trt;
+  };
+  Lobes evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const;
+  // Coverage r(omega_i): the fraction of light from omega_i meeting the reflective arc (T = 1 - r).
+  float coverage(const BSDFContext& ctx, const Vec3& omegaI) const;
+
+  const BarbuleParameters& parameters() const { return params_; }
+  Role role() const { return role_; }
+
+ private:
+  struct Shading;
+  struct Incident;
+  struct LobeChoice;
+
+  Shading shading(const BSDFContext& ctx, const Wavelengths& wl) const;
+  Incident incident(const Shading& s, const Vec3& w) const;
+  Lobes lobes(const Shading& s, const Incident& in, const Vec3& omegaO) const;
+  Spectrum reflection(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
+  Spectrum trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
+  LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
+  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo) const;
+  Spectrum evalWith(const Shading& s, const Vec3& wi, const Vec3& wo) const;
+
+  BarbuleParameters params_;
+  Role role_;
+  BarbuleCrossSection geometry_;
+  std::vector<float> offsetNodes_, offsetWeights_;
+  std::vector<float> thetaNodes_, thetaWeights_;
+  std::vector<float> lobeNodes_, lobeWeights_;
+};
+
+// Plug-ins `barbulebsdf` and `barbulebsdfev`: b, phi_0, phi_1, mu, H, height (<float>),
+// film_ior ("keratin" by default, or a number or a named index), ext_ior ("air" by default).
+std::shared_ptr<Object> makeBarbuleBSDF(const Properties& props);
+std::shared_ptr<Object> makeBarbuleBSDFEv(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,516 @@
+// Statistical and structural tests of the barbule BSDF: sample vs pdf (chi-square), weight = eval /
+// pdf, the white furnace against an independent average over visible normals, the pass-through,
+// reciprocity, the evaluation twin, light from below, per-point overrides and the factories.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+#include "bsdfs/barbule_bsdf.h"
+#include "bsdfs/barbule_cross_section.h"
+#include "bsdfs/barbule_normals.h"
+#include "chi_square.h"
+#include "core/frame.h"
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "optics/melanin.h"
+#include "optics/thin_film.h"
+
+using namespace columba;
+using namespace columba::testing;
+
+namespace {
+
+struct ParameterSet {
+  const char* name;
+  BarbuleParameters params;
+};
+
+BarbuleParameters reference(float height) {
+  BarbuleParameters p;  // b 0.25, phi (-0.37, 2.64), mu -0.35, H 1.25: the reference scenes
+  p.height = height;
+  return p;
+}
+
+BarbuleParameters custom(float b, float phi0, float phi1, float mu, float H, float height, CauchyIOR film) {
+  BarbuleParameters p;
+  p.b = b;
+  p.phi0 = phi0;
+  p.phi1 = phi1;
+  p.mu = mu;
+  p.H = H;
+  p.height = height;
+  p.filmIOR = film;
+  return p;
+}
+
+// The reference scenes (simulation1/2 and simulation3), a rounder, sparser and oppositely tilted
+// barbule, and a thin, dense one with a constant-index film and an arc reaching far underneath.
+const std::vector<ParameterSet>& parameterSets() {
+  static const std::vector<ParameterSet> sets = {
+      {"reference h0.58", reference(0.58f)},
+      {"reference h0.59", reference(0.59f)},
+      {"round sparse", custom(0.45f, -1.0f, 1.4f, 0.25f, 2.2f, 0.65f, CauchyIOR::keratin())},
+      {"thin dense n1.56", custom(0.18f, -0.2f, 2.9f, -0.6f, 1.5f, 0.45f, CauchyIOR::constant(1.56f))},
+  };
+  return sets;
+}
+
+Vec3 direction(float thetaDegrees, float phiDegrees) {
+  float theta = degToRad(thetaDegrees), phi = degToRad(phiDegrees);
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+// theta_i in {0, 30, 60, 80} degrees, several azimuths (one at normal incidence).
+std::vector<Vec3> incidentDirections() {
+  std::vector<Vec3> dirs = {direction(0.0f, 0.0f)};
+  for (float theta : {30.0f, 60.0f, 80.0f})
+    for (float phi : {20.0f, 110.0f, 250.0f}) dirs.push_back(direction(theta, phi));
+  return dirs;
+}
+
+const Wavelengths kWavelengths = Wavelengths::fixed({430.0f, 520.0f, 610.0f, 700.0f});
+
+// Chi-square bins with the barbule axis t as the pole: rows equal in t . w (the R lobe is narrow
+// in the angle to t), columns in the azimuth around it.
+Vec3 axisAsPole(const Vec3& w) { return {w.z, w.x, w.y}; }
+Vec3 fromAxisAsPole(const Vec3& v) { return {v.y, v.z, v.x}; }
+
+double sidak(double familyAlpha, int tests) { return 1.0 - std::pow(1.0 - familyAlpha, 1.0 / tests); }
+
+}  // namespace
+
+TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
+  const std::vector<Vec3> incident = incidentDirections();
+  const int tests = int(parameterSets().size() * incident.size());
+  const double threshold = sidak(0.01, tests);
+  const BSDFContext ctx;
+  std::printf("chi-square of sample() against pdf(), %d tests, per-test threshold %.2e (family alpha 0.01)\n", tests,
+              threshold);
+  for (const ParameterSet& set : parameterSets()) {
+    BarbuleBSDF bsdf(set.params);
+    double minP = 1.0;
+    for (const Vec3& wi : incident) {
+      int scattered = 0;
+      ChiSquareResult result = chiSquareDirectionTest(
+          [&](PCG32& rng) -> std::optional<Vec3> {
+            float uComponent = rng.nextFloat();
+            Vec2 u(rng.nextFloat(), rng.nextFloat());
+            auto s = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
+            if (!s || s->passThrough) return std::nullopt;
+            ++scattered;
+            return axisAsPole(s->wo);
+          },
+          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48, 48, 10);
+      std::printf("  %-18s wi (%6.3f %6.3f %6.3f): %6d scattered, p = %.3g\n", set.name, wi.x, wi.y, wi.z, scattered,
+                  result.pValue);
+      EXPECT_GT(result.pValue, threshold) << set.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": "
+                                          << result.message;
+      minP = std::min(minP, result.pValue);
+    }
+    std::printf("  %-18s min p = %.3g\n", set.name, minP);
+  }
+}
+
+TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
+  const BSDFContext ctx;
+  for (const ParameterSet& set : parameterSets())
+    for (BarbuleBSDF::Role role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
+      BarbuleBSDF bsdf(set.params, role);
+      PCG32 rng(11);
+      int checked = 0;
+      for (const Vec3& wi : incidentDirections())
+        for (int i = 0; i < 3000; ++i) {
+          auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+          if (!s || s->passThrough) continue;
+          ASSERT_FALSE(s->delta);
+          ASSERT_GT(s->pdf, 0.0f);
+          float pdf = bsdf.pdf(ctx, wi, s->wo, kWavelengths);
+          Spectrum f = bsdf.eval(ctx, wi, s->wo, kWavelengths);
+          EXPECT_NEAR(s->pdf, pdf, 1e-4f * pdf);
+          for (int k = 0; k < kSpectrumSamples; ++k)
+            ASSERT_NEAR(s->weight[k], f[k] / pdf, 1e-4f * (f[k] / pdf) + 1e-7f) << set.name << " lambda " << k;
+          ++checked;
+        }
+      EXPECT_GT(checked, 1000) << set.name;
+    }
+}
+
+namespace {
+
+// Integral over omega_o of each lobe's f |cos theta_o|, by the midpoint rule on an equal-area grid
+// around the barbule axis: fine in t . omega_o over the band the R lobe can reach
+// (|t . (omega_i + omega_o)| <= 2 sin(thetaD)), coarser for TRT over the whole sphere.
+struct LobeAlbedo {
+  Spectrum reflection, trt;
+};
+LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
+  const BSDFContext ctx;
+  LobeAlbedo out;
+  auto grid = [&](float yLo, float yHi, int rows, int columns, bool reflection) {
+    double sum[kSpectrumSamples] = {};  // millions of terms: float sums would drift
+    double cell = (yHi - yLo) / rows * (2.0 * M_PI / columns);
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < columns; ++j) {
+        float y = yLo + (yHi - yLo) * (i + 0.5f) / rows, gamma = kTwoPi * (j + 0.5f) / columns;
+        float r = safeSqrt(1.0f - y * y);
+        Vec3 wo(r * std::sin(gamma), y, r * std::cos(gamma));
+        BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, wo, kWavelengths);
+        const Spectrum& f = reflection ? lobes.reflection : lobes.trt;
+        for (int k = 0; k < kSpectrumSamples; ++k) sum[k] += double(f[k]) * std::abs(wo.z);
+      }
+    Spectrum out;
+    for (int k = 0; k < kSpectrumSamples; ++k) out[k] = float(sum[k] * cell);
+    return out;
+  };
+  float band = 2.0f * kSinBarbuleThetaD;
+  out.reflection = grid(std::max(-wi.y - band, -1.0f), std::min(-wi.y + band, 1.0f), 1024, 2304, true);
+  out.trt = grid(-1.0f, 1.0f, 160, 320, false);
+  return out;
+}
+
+// r times the means over the visible normals of I_R (with the visibility and longitudinal
+// shadowing toward the mirror direction) and of the TRT energy (integral over omega_o of I_TRT
+// |cos theta_o| / pi on the normal's front side, visible from omega_o), from the film and the
+// cross-section geometry directly rather than through the BSDF's lobes and their Jacobians.
+LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
+  BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H);
+  FreeStandingFilm film(p.filmIOR, p.extIOR, p.height, kWavelengths);
+  SpectrumLanes melanin{};
+  for (int k = 0; k < kSpectrumSamples; ++k) melanin[k] = melaninReflectance(kWavelengths[k]);
+  InPlaneDirection ip = inPlane(wi);
+  LitArc arc = geometry.litArc(ip.dir);
+  float r = geometry.coverage(arc, ip.dir);
+  LobeAlbedo out;
+  if (!(arc.width() > 0.0f)) return out;
+  // R: visible normals on a fine grid of the (exact) visible-normal warp.
+  const int hSteps = 2000, thetaSteps = 48;
+  double sumR[kSpectrumSamples] = {};
+  for (int i = 0; i < hSteps; ++i)
+    for (int j = 0; j < thetaSteps; ++j) {
+      VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hSteps, (j + 0.5f) / thetaSteps));
+      Vec3 wo = reflect(wi, vn.m);
+      if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
+      Vec2 n = geometry.toWorld(vn.localNormal);
+      float shadow = LongitudinalDensity(wo.z * n.x + wo.x * n.y, wo.y).shadowing();
+      FreeStandingFilm::Reflectance R = film.reflectance(dot(wi, vn.m));
+      for (int k = 0; k < kSpectrumSamples; ++k) sumR[k] += 0.5 * shadow * (R.s[k] + R.p[k]);
+    }
+  for (int k = 0; k < kSpectrumSamples; ++k) out.reflection[k] = float(sumR[k] * r / (hSteps * thetaSteps));
+
+  // TRT: coarser normals, and for each a grid of outgoing directions on the front side of its
+  // in-plane normal (|cos theta_o| / pi integrates to 1 there).
+  const int hCoarse = 48, thetaCoarse = 4, rows = 64, columns = 128;
+  double sumTRT[kSpectrumSamples] = {};
+  for (int i = 0; i < hCoarse; ++i)
+    for (int j = 0; j < thetaCoarse; ++j) {
+      VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hCoarse, (j + 0.5f) / thetaCoarse));
+      Vec2 n2 = geometry.toWorld(vn.localNormal);
+      Vec3 m0(n2.y, 0.0f, n2.x);  // theta = 0: its front side is the in-plane facing half-space
+      Frame frame = Frame::fromNormal(m0);
+      FreeStandingFilm::Reflectance in = film.reflectance(dot(wi, vn.m));
+      for (int a = 0; a < rows; ++a)
+        for (int b = 0; b < columns; ++b) {
+          // Equal-area cells of the hemisphere around m0.
+          float z = (a + 0.5f) / rows, phi = kTwoPi * (b + 0.5f) / columns, s = safeSqrt(1.0f - z * z);
+          Vec3 wo = frame.toWorld(Vec3(s * std::cos(phi), s * std::sin(phi), z));
+          if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
+          FreeStandingFilm::Reflectance out = film.reflectance(std::abs(dot(wo, vn.m)));
+          float weight = std::abs(wo.z) / kPi * (kTwoPi / (rows * columns));
+          SpectrumLanes energy = (0.5f * weight) * melanin * ((1.0f - in.s) * (1.0f - out.s) + (1.0f - in.p) * (1.0f - out.p));
+          for (int k = 0; k < kSpectrumSamples; ++k) sumTRT[k] += energy[k];
+        }
+    }
+  for (int k = 0; k < kSpectrumSamples; ++k) out.trt[k] = float(sumTRT[k] * r / (hCoarse * thetaCoarse));
+  return out;
+}
+
+}  // namespace
+
+TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeans) {
+  const BSDFContext ctx;
+  std::printf("furnace: integral of eval + t against r (I_R + I_TRT) + t, per wavelength (430/520/610/700 nm)\n");
+  for (const ParameterSet& set : parameterSets()) {
+    BarbuleBSDF bsdf(set.params);
+    for (const Vec3& wi : {direction(0.0f, 0.0f), direction(30.0f, 20.0f), direction(60.0f, 110.0f),
+                           direction(80.0f, 250.0f), direction(45.0f, 0.0f)}) {
+      float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
+      EXPECT_NEAR(t, 1.0f - bsdf.coverage(ctx, wi), 1e-6f);
+      LobeAlbedo integral = integrateLobes(bsdf, wi), expected = visibleNormalMeans(set.params, wi);
+
+      // The expected value of the sample weight (T included) is the same total, by Monte Carlo.
+      PCG32 rng(5, 9);
+      const int n = 100000;
+      Spectrum mean(0.0f), meanSqr(0.0f);
+      for (int i = 0; i < n; ++i) {
+        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (!s) continue;
+        mean += s->weight / float(n);
+        meanSqr += s->weight * s->weight / float(n);
+      }
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        float total = integral.reflection[k] + integral.trt[k] + t;
+        float predicted = expected.reflection[k] + expected.trt[k] + t;
+        float sigma = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
+        std::printf("  %-18s wi (%6.3f %6.3f %6.3f) %3.0f nm: R %.5f (means %.5f) TRT %.5f (means %.5f) t %.4f total "
+                    "%.5f, MC %.5f +- %.5f\n",
+                    set.name, wi.x, wi.y, wi.z, kWavelengths[k], integral.reflection[k], expected.reflection[k],
+                    integral.trt[k], expected.trt[k], t, total, mean[k], sigma);
+        EXPECT_NEAR(integral.reflection[k], expected.reflection[k], 3e-3f * expected.reflection[k] + 2e-5f);
+        EXPECT_NEAR(integral.trt[k], expected.trt[k], 2e-2f * expected.trt[k] + 2e-5f);
+        EXPECT_NEAR(mean[k], total, 4.0f * sigma + 5e-3f * (total - t));
+        EXPECT_LE(total, 1.0f + 1e-4f);
+        EXPECT_LE(predicted, 1.0f + 1e-4f);
+      }
+    }
+  }
+}
+
+TEST(BarbuleBSDF, PassThroughMatchesTheTransmittedFraction) {
+  const BSDFContext ctx;
+  for (const ParameterSet& set : parameterSets()) {
+    BarbuleBSDF bsdf(set.params);
+    for (const Vec3& wi : incidentDirections()) {
+      float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
+      PCG32 rng(13);
+      const int n = 20000;
+      int chosen = 0;
+      float probability = -1.0f;
+      for (int i = 0; i < n; ++i) {
+        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (!s || !s->passThrough) continue;
+        ++chosen;
+        ASSERT_TRUE(s->delta);
+        EXPECT_EQ(s->wo, -wi);
+        // weight = t / P(T) at every wavelength, with P(T) the reported probability.
+        for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_NEAR(s->weight[k] * s->pdf, t, 1e-5f);
+        probability = s->pdf;
+      }
+      if (chosen == 0) {
+        // P(T) >= t / 2 (the other lobes' weights are at most r each), so only a negligible t can
+        // go unchosen in this many draws.
+        EXPECT_LT(t, 1e-3f);
+        continue;
+      }
+      // P(T) is the frequency of choosing it (binomial, 5 sigma).
+      double sigma = std::sqrt(probability * (1.0 - probability) / n);
+      EXPECT_NEAR(double(chosen) / n, probability, 5.0 * sigma + 1e-9) << set.name;
+    }
+  }
+}
+
+TEST(BarbuleBSDF, ReflectionLobeIsReciprocalAndTRTIsNot) {
+  const BSDFContext ctx;
+  BarbuleBSDF bsdf(reference(0.58f));
+  PCG32 rng(21);
+  int reflecting = 0;
+  double largestTRTAsymmetry = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    Vec3 a = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    // Mirror-like pairs, so that many of them meet the narrow lobe.
+    Vec3 b = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    b.y = -a.y + (rng.nextFloat() - 0.5f) * 0.2f;
+    if (b.y * b.y >= 1.0f) continue;
+    b = normalize(Vec3(b.x, b.y, std::abs(b.z) + 1e-3f));
+    BarbuleBSDF::Lobes ab = bsdf.evalLobes(ctx, a, b, kWavelengths), ba = bsdf.evalLobes(ctx, b, a, kWavelengths);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      // Equal up to float rounding of omega_i . m against omega_o . m, which the film amplifies near
+      // grazing incidence (where f_R is tiny).
+      ASSERT_NEAR(ab.reflection[k], ba.reflection[k], 1e-3f * ab.reflection[k] + 1e-5f);
+      if (ab.trt[k] > 0.0f || ba.trt[k] > 0.0f)
+        largestTRTAsymmetry = std::max(largestTRTAsymmetry, double(std::abs(ab.trt[k] - ba.trt[k]) /
+                                                                   std::max(ab.trt[k], ba.trt[k])));
+    }
+    if (ab.reflection[0] > 0.0f) ++reflecting;
+  }
+  EXPECT_GT(reflecting, 5000);
+  // TRT averages over the normals lit from omega_i: swapping the directions changes it.
+  EXPECT_GT(largestTRTAsymmetry, 0.1);
+}
+
+TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
+  const BSDFContext ctx;
+  BarbuleParameters p = reference(0.58f);
+  BarbuleBSDF camera(p, BarbuleBSDF::Role::CameraIncident), light(p, BarbuleBSDF::Role::LightIncident);
+  PCG32 rng(31);
+  for (int i = 0; i < 20000; ++i) {
+    Vec3 wi = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    // barbulebsdf: f(wi, wo) |cos wo|; barbulebsdfev: f(wo, wi) |cos wo| with the model's omega_i = wo.
+    BarbuleBSDF::Lobes forward = camera.evalLobes(ctx, wi, wo, kWavelengths);
+    BarbuleBSDF::Lobes swapped = camera.evalLobes(ctx, wo, wi, kWavelengths);
+    Spectrum expectedCamera = (forward.reflection + forward.trt) * std::abs(wo.z);
+    Spectrum expectedLight = (swapped.reflection + swapped.trt) * std::abs(wo.z);
+    Spectrum fc = camera.eval(ctx, wi, wo, kWavelengths), fl = light.eval(ctx, wi, wo, kWavelengths);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      ASSERT_NEAR(fc[k], expectedCamera[k], 1e-6f * expectedCamera[k] + 1e-9f);
+      ASSERT_NEAR(fl[k], expectedLight[k], 1e-6f * expectedLight[k] + 1e-9f);
+    }
+    // Both sample alike and report the same density.
+    EXPECT_EQ(camera.pdf(ctx, wi, wo, kWavelengths), light.pdf(ctx, wi, wo, kWavelengths));
+  }
+}
+
+TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheMirroredCoverage) {
+  const BSDFContext ctx;
+  for (const ParameterSet& set : parameterSets()) {
+    BarbuleBSDF bsdf(set.params);
+    PCG32 rng(41);
+    for (int i = 0; i < 2000; ++i) {
+      Vec3 above = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+      Vec3 below(above.x, above.y, -above.z);
+      Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+      EXPECT_TRUE(bsdf.eval(ctx, below, wo, kWavelengths).isZero());
+      EXPECT_EQ(bsdf.pdf(ctx, below, wo, kWavelengths), 0.0f);
+      float t = bsdf.passThrough(ctx, below, kWavelengths)[0];
+      EXPECT_EQ(t, bsdf.passThrough(ctx, above, kWavelengths)[0]);
+      auto s = bsdf.sample(ctx, below, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+      if (t > 0.0f) {
+        ASSERT_TRUE(s.has_value());
+        EXPECT_TRUE(s->passThrough);
+        EXPECT_NEAR(s->weight[0] * s->pdf, t, 1e-6f);
+      } else {
+        EXPECT_FALSE(s.has_value());
+      }
+    }
+  }
+}
+
+TEST(BarbuleBSDF, PerPointOverridesActLikeTheParameters) {
+  BarbuleParameters base = reference(0.58f);
+  BarbuleBSDF bsdf(base);
+  BSDFContext ctx;
+  ctx.barbuleH = 1.6f;
+  ctx.barbuleMu = -0.2f;
+  ctx.barbuleHeight = 0.63f;
+  BarbuleParameters changed = base;
+  changed.H = 1.6f;
+  changed.mu = -0.2f;
+  changed.height = 0.63f;
+  BarbuleBSDF expected(changed);
+  const BSDFContext none;
+  PCG32 rng(51);
+  int differing = 0;
+  for (int i = 0; i < 5000; ++i) {
+    Vec3 wi = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    Spectrum a = bsdf.eval(ctx, wi, wo, kWavelengths), b = expected.eval(none, wi, wo, kWavelengths);
+    for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(a[k], b[k]);
+    ASSERT_EQ(bsdf.pdf(ctx, wi, wo, kWavelengths), expected.pdf(none, wi, wo, kWavelengths));
+    ASSERT_EQ(bsdf.passThrough(ctx, wi, kWavelengths)[0], expected.passThrough(none, wi, kWavelengths)[0]);
+    if (a[0] != bsdf.eval(none, wi, wo, kWavelengths)[0]) ++differing;
+  }
+  EXPECT_GT(differing, 1000);
+}
+
+TEST(BarbuleBSDF, TRTQuadratureIsCloseToAFineOne) {
+  // The default node counts against 24 x 8 nodes: relative L1 error of the TRT lobe over the sphere
+  // of outgoing directions, per incident direction.
+  const BSDFContext ctx;
+  BarbuleParameters p = reference(0.58f);
+  BarbuleBSDF coarse(p), fine(p, BarbuleBSDF::Role::CameraIncident, BarbuleQuadrature{24, 8, 3});
+  PCG32 rng(61);
+  std::vector<double> errors;
+  for (int i = 0; i < 30; ++i) {
+    Vec3 wi = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    double error = 0.0, total = 0.0;
+    for (int j = 0; j < 1000; ++j) {
+      Vec3 wo = sampleUniformSphere(Vec2((j + rng.nextFloat()) / 1000.0f, rng.nextFloat()));
+      Spectrum a = coarse.evalLobes(ctx, wi, wo, kWavelengths).trt, b = fine.evalLobes(ctx, wi, wo, kWavelengths).trt;
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        error += std::abs(a[k] - b[k]) * std::abs(wo.z);
+        total += b[k] * std::abs(wo.z);
+      }
+    }
+    if (total > 0.0) errors.push_back(error / total);
+  }
+  double mean = 0.0, worst = 0.0;
+  for (double e : errors) {
+    mean += e / errors.size();
+    worst = std::max(worst, e);
+  }
+  std::printf("TRT quadrature (default nodes) vs 24 x 8: relative L1 error mean %.2e, max %.2e\n", mean, worst);
+  EXPECT_LT(mean, 1.5e-2);
+  EXPECT_LT(worst, 6e-2);
+}
+
+namespace {
+
+void setFloat(Properties& props, const std::string& name, float value) {
+  Properties::Value v;
+  v.kind = Properties::ValueKind::Float;
+  v.number = value;
+  props.set(name, v);
+}
+
+void setString(Properties& props, const std::string& name, const std::string& value) {
+  Properties::Value v;
+  v.kind = Properties::ValueKind::String;
+  v.text = value;
+  props.set(name, v);
+}
+
+Properties barbuleProperties(const std::string& type) {
+  Properties props;
+  props.tag = "bsdf";
+  props.type = type;
+  return props;
+}
+
+}  // namespace
+
+TEST(BarbuleBSDF, FactoriesReadTheReferenceParameters) {
+  Properties props = barbuleProperties("barbulebsdfev");
+  setString(props, "film_ior", "keratin");
+  setString(props, "ext_ior", "air");
+  setFloat(props, "height", 0.58f);
+  setFloat(props, "b", 0.25f);
+  setFloat(props, "phi_0", -0.37f);
+  setFloat(props, "phi_1", 2.64f);
+  setFloat(props, "mu", -0.35f);
+  setFloat(props, "H", 1.25f);
+  auto ev = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDFEv(props));
+  ASSERT_TRUE(ev);
+  props.checkAllUsed();
+  EXPECT_EQ(ev->role(), BarbuleBSDF::Role::LightIncident);
+  EXPECT_EQ(ev->parameters().height, 0.58f);
+  EXPECT_EQ(ev->parameters().filmIOR.b, CauchyIOR::keratin().b);
+  EXPECT_NEAR(ev->parameters().extIOR, 1.000277f, 1e-7f);
+
+  // Defaults (DESIGN.md 5.8), a numeric and a named film index.
+  auto plain = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(barbuleProperties("barbulebsdf")));
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(plain->role(), BarbuleBSDF::Role::CameraIncident);
+  EXPECT_EQ(plain->parameters().b, 0.25f);
+  EXPECT_EQ(plain->parameters().phi0, -0.37f);
+  EXPECT_EQ(plain->parameters().phi1, 2.64f);
+  EXPECT_EQ(plain->parameters().mu, -0.35f);
+  EXPECT_EQ(plain->parameters().H, 1.25f);
+  EXPECT_EQ(plain->parameters().height, 0.6f);
+  EXPECT_EQ(plain->parameters().filmIOR.a, CauchyIOR::keratin().a);
+
+  Properties numeric = barbuleProperties("barbulebsdf");
+  setFloat(numeric, "film_ior", 1.56f);
+  auto constant = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(numeric));
+  EXPECT_TRUE(constant->parameters().filmIOR.isConstant());
+  EXPECT_EQ(constant->parameters().filmIOR.a, 1.56f);
+  Properties named = barbuleProperties("barbulebsdf");
+  setString(named, "film_ior", "diamond");
+  EXPECT_NEAR(std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(named))->parameters().filmIOR.a, 2.419f, 1e-6f);
+}
+
+TEST(BarbuleBSDF, FactoriesRejectInvalidParameters) {
+  auto rejects = [](const std::string& name, const std::string& text, float number, bool isString) {
+    Properties props = barbuleProperties("barbulebsdf");
+    if (isString) setString(props, name, text);
+    else setFloat(props, name, number);
+    EXPECT_THROW(makeBarbuleBSDF(props), InputError) << name;
+  };
+  rejects("film_ior", "unobtainium", 0, true);
+  rejects("film_ior", "", 0.9f, false);  // not denser than air
+  rejects("ext_ior", "keratin", 0, true);  // the surroundings need a constant index
+  rejects("b", "", -0.1f, false);
+  rejects("H", "", 0.0f, false);
+  rejects("height", "", -0.5f, false);
+  rejects("phi_1", "", 4.0f, false);  // arc of more than pi but less than the whole ellipse
+}
