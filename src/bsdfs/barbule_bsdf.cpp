@@ -76,8 +76,15 @@ float gapTransmission(const BarbuleCrossSection& geometry, const Vec3& w) {
 
 }  // namespace
 
+// What a call needs besides the directions: the geometry with the point's overrides, and the film
+// and melanin at the path's wavelengths. Built in place: `geometry` may refer to `overridden`.
 struct BarbuleBSDF::Shading {
-  BarbuleCrossSection geometry;
+  Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl);
+  Shading(const Shading&) = delete;
+  Shading& operator=(const Shading&) = delete;
+
+  std::optional<BarbuleCrossSection> overridden;
+  const BarbuleCrossSection& geometry;
   FreeStandingFilm film;
   SpectrumLanes melanin;
 };
@@ -102,24 +109,30 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
   makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
 }
 
-BarbuleBSDF::Shading BarbuleBSDF::shading(const BSDFContext& ctx, const Wavelengths& wl) const {
-  float height = given(ctx.barbuleHeight) ? ctx.barbuleHeight : params_.height;
-  Shading s{given(ctx.barbuleH) || given(ctx.barbuleMu)
-                ? BarbuleCrossSection(params_.b, params_.phi0, params_.phi1,
-                                      given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
-                                      given(ctx.barbuleH) ? ctx.barbuleH : params_.H)
-                : geometry_,
-            FreeStandingFilm(params_.filmIOR, params_.extIOR, std::max(height, 0.0f), wl), SpectrumLanes{}};
-  for (int i = 0; i < kSpectrumSamples; ++i) s.melanin[i] = melaninReflectance(wl[i]);
-  return s;
+BarbuleBSDF::Shading::Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl)
+    : overridden(bsdf.overriddenGeometry(ctx)),
+      geometry(overridden ? *overridden : bsdf.geometry_),
+      film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
+           std::max(given(ctx.barbuleHeight) ? ctx.barbuleHeight : bsdf.params_.height, 0.0f), wl) {
+  for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = melaninReflectance(wl[i]);
+}
+
+std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
+  if (!given(ctx.barbuleH) && !given(ctx.barbuleMu)) return std::nullopt;
+  return BarbuleCrossSection(params_.b, params_.phi0, params_.phi1, given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
+                             given(ctx.barbuleH) ? ctx.barbuleH : params_.H);
 }
 
 BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w) const {
+  return incident(s, w, s.geometry.litArc(inPlane(w).dir));
+}
+
+BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w, const LitArc& arc) const {
   Incident in;
   in.w = w;
   in.plane = inPlane(w);
   if (!(w.z > 0.0f) || !(in.plane.cosTheta > 0.0f)) return in;
-  in.arc = s.geometry.litArc(in.plane.dir);
+  in.arc = arc;
   in.coverage = s.geometry.coverage(in.arc, in.plane.dir);
   in.scatters = in.arc.width() > 0.0f && in.coverage > 0.0f;
   return in;
@@ -162,13 +175,14 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
   float halfWidth = in.arc.halfWidth;
   float psiLo = std::asin(clampf(common.lo / halfWidth, -1.0f, 1.0f));
   float psiSpan = std::asin(clampf(common.hi / halfWidth, -1.0f, 1.0f)) - psiLo;
+  // Weights of the mean over [lo, hi] in h.
+  float weightScale = halfWidth * psiSpan / length;
   SpectrumLanes sum{};
   for (size_t k = 0; k < offsetNodes_.size(); ++k) {
     float psi = psiLo + offsetNodes_[k] * psiSpan;
     float sinPsi, cosPsi;
     sinCosWithinQuarterTurn(psi, sinPsi, cosPsi);
-    // Weights of the mean over [lo, hi] in h.
-    float weight = offsetWeights_[k] * halfWidth * cosPsi * psiSpan / length;
+    float weight = offsetWeights_[k] * weightScale * cosPsi;
     Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAtAngle(in.arc, sinPsi, cosPsi)));
     float projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
     if (thetaNodes_.size() == 1) {
@@ -212,9 +226,9 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
   return toSpectrum(scale * s.melanin * sum);
 }
 
-BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Vec3& omegaO) const {
+BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Vec3& omegaO,
+                                      const LitArc& outArc) const {
   if (!in.scatters || omegaO.z == 0.0f) return {};
-  LitArc outArc = s.geometry.litArc(inPlane(omegaO).dir);
   return {reflection(s, in, omegaO, outArc), trt(s, in, omegaO, outArc)};
 }
 
@@ -244,10 +258,10 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident
   return choice;
 }
 
-float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo) const {
+float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
+                               const LitArc& outArc) const {
   if (!in.scatters) return 0.0f;
   const BarbuleCrossSection& geometry = s.geometry;
-  LitArc outArc = geometry.litArc(inPlane(wo).dir);
   float density = 0.0f;
 
   Vec3 sum = in.w + wo;
@@ -264,24 +278,30 @@ float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeC
   return density;
 }
 
-Spectrum BarbuleBSDF::evalWith(const Shading& s, const Vec3& wi, const Vec3& wo) const {
-  Lobes l = role_ == Role::CameraIncident ? lobes(s, incident(s, wi), wo) : lobes(s, incident(s, wo), wi);
+Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const {
+  Lobes l = role_ == Role::CameraIncident ? lobes(s, fromWi, wo, outArc)
+                                          : lobes(s, incident(s, wo, outArc), fromWi.w, fromWi.arc);
   return (l.reflection + l.trt) * std::abs(wo.z);
 }
 
 Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return evalWith(shading(ctx, wl), wi, wo);
+  Shading s(*this, ctx, wl);
+  LitArc wiArc = s.geometry.litArc(inPlane(wi).dir), woArc = s.geometry.litArc(inPlane(wo).dir);
+  Lobes l = role_ == Role::CameraIncident ? lobes(s, incident(s, wi, wiArc), wo, woArc)
+                                          : lobes(s, incident(s, wo, woArc), wi, wiArc);
+  return (l.reflection + l.trt) * std::abs(wo.z);
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  Shading s = shading(ctx, wl);
+  Shading s(*this, ctx, wl);
   Incident in = incident(s, wi);
-  return samplingPdf(s, in, lobeChoice(s, in), wo);
+  if (!in.scatters) return 0.0f;
+  return samplingPdf(s, in, lobeChoice(s, in), wo, s.geometry.litArc(inPlane(wo).dir));
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                               float uComponent, Vec2 u) const {
-  Shading s = shading(ctx, wl);
+  Shading s(*this, ctx, wl);
   const BarbuleCrossSection& geometry = s.geometry;
   Incident in = incident(s, wi);
   LobeChoice choice = lobeChoice(s, in);
@@ -311,28 +331,29 @@ std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3
     bs.wo = dot(w, m) >= 0.0f ? w : -w;
   }
   // The scattering point must be visible from wo.
-  if (!geometry.isLit(geometry.litArc(inPlane(bs.wo).dir), localNormal)) return std::nullopt;
+  LitArc outArc = geometry.litArc(inPlane(bs.wo).dir);
+  if (!geometry.isLit(outArc, localNormal)) return std::nullopt;
 
-  bs.pdf = samplingPdf(s, in, choice, bs.wo);
+  bs.pdf = samplingPdf(s, in, choice, bs.wo, outArc);
   if (!(bs.pdf > 0.0f)) return std::nullopt;
-  bs.weight = evalWith(s, wi, bs.wo) / bs.pdf;
+  bs.weight = evalWith(s, in, bs.wo, outArc) / bs.pdf;
   return bs;
 }
 
-Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
-  Shading s = shading(ctx, wl);
-  return Spectrum(gapTransmission(s.geometry, wi));
+Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths&) const {
+  std::optional<BarbuleCrossSection> own = overriddenGeometry(ctx);
+  return Spectrum(gapTransmission(own ? *own : geometry_, wi));
 }
 
 BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO,
                                           const Wavelengths& wl) const {
-  Shading s = shading(ctx, wl);
-  return lobes(s, incident(s, omegaI), omegaO);
+  Shading s(*this, ctx, wl);
+  return lobes(s, incident(s, omegaI), omegaO, s.geometry.litArc(inPlane(omegaO).dir));
 }
 
 float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
-  Wavelengths any = Wavelengths::fixed({550.0f, 550.0f, 550.0f, 550.0f});
-  return 1.0f - gapTransmission(shading(ctx, any).geometry, omegaI);
+  std::optional<BarbuleCrossSection> own = overriddenGeometry(ctx);
+  return 1.0f - gapTransmission(own ? *own : geometry_, omegaI);
 }
 
 namespace {

@@ -85,14 +85,20 @@ class BarbuleBSDF : public BSDF {
   struct Incident;
   struct LobeChoice;
 
-  Shading shading(const BSDFContext& ctx, const Wavelengths& wl) const;
+  // The cross-section with the point's own mu and H, when the context gives any.
+  std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
+  // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
   Incident incident(const Shading& s, const Vec3& w) const;
-  Lobes lobes(const Shading& s, const Incident& in, const Vec3& omegaO) const;
+  Incident incident(const Shading& s, const Vec3& w, const LitArc& arc) const;
+  // The lobes toward omega_o, whose lit arc is `outArc`.
+  Lobes lobes(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
   Spectrum reflection(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
   Spectrum trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
-  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo) const;
-  Spectrum evalWith(const Shading& s, const Vec3& wi, const Vec3& wo) const;
+  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
+                    const LitArc& outArc) const;
+  // f |cos wo| for the role; `fromWi` = incident(s, wi), `outArc` = wo's lit arc.
+  Spectrum evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const;
 
   BarbuleParameters params_;
   Role role_;

@@ -118,7 +118,9 @@ OffsetInterval BarbuleCrossSection::commonOffsets(const LitArc& a, const LitArc&
   // less than pi in normal angle: its part on a's facing half is one piece, bounded by b's ends
   // where they face a and by a's silhouette where they do not.
   Vec2 start = pointAt(b, b.hMin), end = pointAt(b, b.hMax);
-  bool startFaces = dot2(normalAt(start), a.toward) > 0.0f, endFaces = dot2(normalAt(end), a.toward) > 0.0f;
+  // Facing tests need only the direction of the normal, (x / b^2, y).
+  bool startFaces = start.x * invBSqr_ * a.toward.x + start.y * a.toward.y > 0.0f;
+  bool endFaces = end.x * invBSqr_ * a.toward.x + end.y * a.toward.y > 0.0f;
   if (!startFaces && !endFaces) return out;
   out.lo = std::max(a.hMin, startFaces ? dot2(start, a.across) : -a.halfWidth);
   out.hi = std::min(a.hMax, endFaces ? dot2(end, a.across) : a.halfWidth);

@@ -63,6 +63,16 @@ double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n
   return 0.5 * a.transmittanceFactor * (std::norm(a.ts) + std::norm(a.tp));
 }
 
+namespace {
+constexpr SpectrumLanes lanes(float c) { return SpectrumLanes{c, c, c, c}; }
+}  // namespace
+
+const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {
+    lanes(1.0f), lanes(2.0f), lanes(1.0f / kTwoPi), lanes(kTwoPi), lanes(12582912.0f),
+    {lanes(1.0f / 20922789888000.0f), lanes(-1.0f / 87178291200.0f), lanes(1.0f / 479001600.0f),
+     lanes(-1.0f / 3628800.0f), lanes(1.0f / 40320.0f), lanes(-1.0f / 720.0f), lanes(1.0f / 24.0f), lanes(-0.5f),
+     lanes(1.0f)}};
+
 FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
   SpectrumLanes lambda = toLanes(wl.lambda);

@@ -67,22 +67,25 @@ class FreeStandingFilm {
   Reflectance reflectance(float cosIncidence) const;
 
  private:
+  // Constants of the evaluation as full vectors, defined out of line: the arithmetic then reads
+  // them as memory operands, where a visible constant is re-broadcast from a scalar at each use.
+  struct Constants {
+    SpectrumLanes one, two, invTwoPi, twoPi, round;
+    SpectrumLanes cosTaylor[9];  // coefficients of y^16, y^14, ..., y^0 of cos(y)
+  };
+  static const Constants kConstants;
+
   // cos(x) for |x| up to a few hundred: reduce to [-pi, pi] and use the even Taylor polynomial of
   // degree 16 (error < 2e-7 there).
   static SpectrumLanes cosReduced(SpectrumLanes x) {
-    const float kRound = 12582912.0f;  // 1.5 * 2^23: adding and subtracting it rounds to nearest
-    SpectrumLanes turns = x * (1.0f / kTwoPi);
-    SpectrumLanes k = (turns + kRound) - kRound;
-    SpectrumLanes y = (turns - k) * kTwoPi;
+    const Constants& k = kConstants;
+    SpectrumLanes turns = x * k.invTwoPi;
+    SpectrumLanes whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
+    SpectrumLanes y = (turns - whole) * k.twoPi;
     SpectrumLanes y2 = y * y;
-    SpectrumLanes p = y2 * (1.0f / 20922789888000.0f) - 1.0f / 87178291200.0f;  // 1/16!, 1/14!
-    p = p * y2 + 1.0f / 479001600.0f;
-    p = p * y2 - 1.0f / 3628800.0f;
-    p = p * y2 + 1.0f / 40320.0f;
-    p = p * y2 - 1.0f / 720.0f;
-    p = p * y2 + 1.0f / 24.0f;
-    p = p * y2 - 0.5f;
-    return p * y2 + 1.0f;
+    SpectrumLanes p = k.cosTaylor[0];
+    for (int i = 1; i < 9; ++i) p = p * y2 + k.cosTaylor[i];
+    return p;
   }
   static SpectrumLanes sqrtLanes(SpectrumLanes v) {
 #if defined(__SSE__)
@@ -98,24 +101,24 @@ class FreeStandingFilm {
 };
 
 inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
+  const SpectrumLanes kOne = kConstants.one, kTwo = kConstants.two;
   // Exactly grazing light would make both interface reflectances 1 and the Airy sum 0/0.
-  float c = clampf(cosIncidence, 1e-4f, 1.0f), sinSqr = 1.0f - c * c;
+  float cScalar = clampf(cosIncidence, 1e-4f, 1.0f);
+  SpectrumLanes c = cScalar + SpectrumLanes{}, sinSqr = (1.0f - cScalar * cScalar) + SpectrumLanes{};
   // The film is denser than its surroundings, so light always enters it (no critical angle).
-  SpectrumLanes cosFilm = sqrtLanes(1.0f - sinSqr * invEtaSqr_);
+  SpectrumLanes cosFilm = sqrtLanes(kOne - sinSqr * invEtaSqr_);
   SpectrumLanes etaCosFilm = eta_ * cosFilm, etaC = eta_ * c;
-  // Interface reflectances R and, without cancellation near grazing, 1 - R = 4 c eta cos2 / den^2;
-  // one division serves both polarisations.
+  // Interface reflectances; one division serves both polarisations.
   SpectrumLanes sDen = c + etaCosFilm, pDen = etaC + cosFilm;
-  SpectrumLanes inv = 1.0f / (sDen * pDen);
+  SpectrumLanes inv = kOne / (sDen * pDen);
   SpectrumLanes rs = (c - etaCosFilm) * pDen * inv, rp = (etaC - cosFilm) * sDen * inv;
   SpectrumLanes Rs = rs * rs, Rp = rp * rp;
-  SpectrumLanes fourProduct = 4.0f * etaC * cosFilm * inv * inv;
-  SpectrumLanes Ts = fourProduct * pDen * pDen, Tp = fourProduct * sDen * sDen;
-  SpectrumLanes oneMinusCos = 1.0f - cosReduced(phaseScale_ * cosFilm);
+  SpectrumLanes Ts = kOne - Rs, Tp = kOne - Rp;
+  SpectrumLanes oneMinusCos = kOne - cosReduced(phaseScale_ * cosFilm);
   // 1 + R^2 - 2 R cos(delta) = (1 - R)^2 + 2 R (1 - cos(delta)) > 0.
-  SpectrumLanes sNum = 2.0f * Rs * oneMinusCos, pNum = 2.0f * Rp * oneMinusCos;
+  SpectrumLanes sNum = kTwo * Rs * oneMinusCos, pNum = kTwo * Rp * oneMinusCos;
   SpectrumLanes sDenFilm = Ts * Ts + sNum, pDenFilm = Tp * Tp + pNum;
-  SpectrumLanes invFilm = 1.0f / (sDenFilm * pDenFilm);
+  SpectrumLanes invFilm = kOne / (sDenFilm * pDenFilm);
   return {sNum * pDenFilm * invFilm, pNum * sDenFilm * invFilm};
 }
 
