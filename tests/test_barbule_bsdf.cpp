@@ -101,7 +101,8 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
             ++scattered;
             return axisAsPole(s->wo);
           },
-          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48, 48, 10);
+          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48, 48,
+          10);
       std::printf("  %-18s wi (%6.3f %6.3f %6.3f): %6d scattered, p = %.3g\n", set.name, wi.x, wi.y, wi.z, scattered,
                   result.pValue);
       EXPECT_GT(result.pValue, threshold) << set.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": "
@@ -217,7 +218,8 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
           if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
           FreeStandingFilm::Reflectance out = film.reflectance(std::abs(dot(wo, vn.m)));
           float weight = std::abs(wo.z) / kPi * (kTwoPi / (rows * columns));
-          SpectrumLanes energy = (0.5f * weight) * melanin * ((1.0f - in.s) * (1.0f - out.s) + (1.0f - in.p) * (1.0f - out.p));
+          SpectrumLanes energy =
+              (0.5f * weight) * melanin * ((1.0f - in.s) * (1.0f - out.s) + (1.0f - in.p) * (1.0f - out.p));
           for (int k = 0; k < kSpectrumSamples; ++k) sumTRT[k] += energy[k];
         }
     }

@@ -21,7 +21,9 @@ const CrossSectionCase kCases[] = {
     {1.0f, 3.0f, 0.0f, -kPi, kPi},          {0.2f, 1.6f, -0.8f, 0.5f, 3.5f},
 };
 
-BarbuleCrossSection makeGeometry(const CrossSectionCase& c) { return BarbuleCrossSection(c.b, c.phi0, c.phi1, c.mu, c.H); }
+BarbuleCrossSection makeGeometry(const CrossSectionCase& c) {
+  return BarbuleCrossSection(c.b, c.phi0, c.phi1, c.mu, c.H);
+}
 
 // An independent 2D ray caster in double precision: ellipses with semi-axes b (u) and 1 (v),
 // turned by mu, centred at (0, k H) for k = -1, 0, 1.
@@ -126,7 +128,8 @@ TEST(CrossSection, MaskingMatchesRayCastingFromThePoint) {
 
       Vec2 p = geometry.toWorld(geometry.pointWithNormal(n));
       bool faces = dot2(n, localToward) > 0.0f;
-      bool blocked = faces && castRay(c, H, p.x + 1e-5 * toward.x, p.y + 1e-5 * toward.y, toward.x, toward.y).has_value();
+      bool blocked =
+          faces && castRay(c, H, p.x + 1e-5 * toward.x, p.y + 1e-5 * toward.y, toward.x, toward.y).has_value();
       bool expected = faces && onArc(c, phi) && !blocked;
       ASSERT_EQ(geometry.isLit(arc, n), expected) << "b " << c.b << " phi " << phi << " gamma " << gamma;
       (expected ? lit : dark) += 1;

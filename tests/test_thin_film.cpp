@@ -24,7 +24,8 @@ TEST(ThinFilm, ZeroThicknessIsTheBareInterface) {
       EXPECT_NEAR(a.rs.real(), f.rs, 1e-6);
       EXPECT_NEAR(a.rp.real(), f.rp, 1e-6);
       EXPECT_NEAR(a.rs.imag(), 0.0, 1e-9);
-      EXPECT_NEAR(thinFilmReflectance(cosI, kAir, filmIndex, 1.56, 0.0, 550.0), fresnelDielectric(float(cosI), float(1.56 / kAir)), 1e-6);
+      EXPECT_NEAR(thinFilmReflectance(cosI, kAir, filmIndex, 1.56, 0.0, 550.0),
+                  fresnelDielectric(float(cosI), float(1.56 / kAir)), 1e-6);
     }
   // A free-standing film of zero thickness reflects nothing, in both implementations.
   EXPECT_NEAR(thinFilmReflectance(0.7, kAir, 1.55, kAir, 0.0, 500.0), 0.0, 1e-12);
@@ -44,7 +45,8 @@ TEST(ThinFilm, NormalIncidenceMatchesTheClosedForm) {
         double n1 = kAir, n2 = keratin(lambda);
         double r1 = (n1 - n2) / (n1 + n2), r2 = (n2 - n3) / (n2 + n3);
         double cosDelta = std::cos(4.0 * M_PI * n2 * d * 1000.0 / lambda);
-        double expected = (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cosDelta) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cosDelta);
+        double expected =
+            (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cosDelta) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cosDelta);
         EXPECT_NEAR(thinFilmReflectance(1.0, n1, n2, n3, d, lambda), expected, 1e-9)
             << "n3 " << n3 << " d " << d << " lambda " << lambda;
       }
@@ -53,7 +55,9 @@ TEST(ThinFilm, NormalIncidenceMatchesTheClosedForm) {
 TEST(ThinFilm, PeakMovesToShorterWavelengthsAsTheAngleGrows) {
   // The green interference order of a 0.58 um keratin film: follow its reflectance maximum from
   // normal incidence to grazing.
-  auto reflectance = [](double lambda, double cosI) { return thinFilmReflectance(cosI, kAir, keratin(lambda), kAir, 0.58, lambda); };
+  auto reflectance = [](double lambda, double cosI) {
+    return thinFilmReflectance(cosI, kAir, keratin(lambda), kAir, 0.58, lambda);
+  };
   auto peakNear = [&](double start, double cosI) {
     double best = start, bestValue = -1.0;
     for (double lambda = start - 40.0; lambda <= start + 40.0; lambda += 0.05)

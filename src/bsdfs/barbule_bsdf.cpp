@@ -54,8 +54,12 @@ bool given(float v) { return !std::isnan(v); }
 // cheaper than the library's full-range versions at every quadrature node.
 void sinCosWithinQuarterTurn(float x, float& sinX, float& cosX) {
   float x2 = x * x;
-  sinX = x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880 + x2 * (-1.0f / 39916800))))));
-  cosX = 1.0f + x2 * (-0.5f + x2 * (1.0f / 24 + x2 * (-1.0f / 720 + x2 * (1.0f / 40320 + x2 * (-1.0f / 3628800 + x2 * (1.0f / 479001600))))));
+  float s = -1.0f / 39916800;  // -1/11!
+  for (float c : {1.0f / 362880, -1.0f / 5040, 1.0f / 120, -1.0f / 6, 1.0f}) s = s * x2 + c;
+  float k = 1.0f / 479001600;  // 1/12!
+  for (float c : {-1.0f / 3628800, 1.0f / 40320, -1.0f / 720, 1.0f / 24, -0.5f, 1.0f}) k = k * x2 + c;
+  sinX = x * s;
+  cosX = k;
 }
 
 void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
@@ -186,8 +190,8 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
     Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAtAngle(in.arc, sinPsi, cosPsi)));
     float projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
     if (thetaNodes_.size() == 1) {
-      // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms are exact in
-      // float.
+      // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms of cos and
+      // sin reach float precision.
       float theta = meanLongitudinalAngle(projectedIn, in.w.y), thetaSqr = theta * theta;
       float c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr / 6.0f);
       sum += weight * transmissionProduct(projectedIn * c + in.w.y * sn, std::abs(projectedOut * c + omegaO.y * sn));

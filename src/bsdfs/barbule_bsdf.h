@@ -47,7 +47,11 @@ struct BarbuleParameters {
 };
 
 // Gauss-Legendre node counts of the deterministic averages over visible normals: the TRT lobe
-// (offsets across the lit arc x longitudinal angles) and the lobe-selection estimate.
+// (offsets across the lit arc x longitudinal angles; one longitudinal node sits at the mean angle)
+// and the lobe-selection estimate. Against 24 x 8 nodes, the default 4 x 1 has a relative L1
+// error of the TRT lobe over outgoing directions of about 0.7 % on average and 3 % at worst
+// (grazing incidence, where the film's transmission changes fast along the arc); 8 x 2 reaches
+// 0.1 % / 0.6 % at four times the cost. The sampling density does not depend on these counts.
 struct BarbuleQuadrature {
   int offsetNodes = 4;
   int thetaNodes = 1;

@@ -44,7 +44,9 @@ double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n
 using SpectrumLanes = float __attribute__((vector_size(16)));
 static_assert(kSpectrumSamples == 4, "one SIMD register per path spectrum");
 
-inline SpectrumLanes toLanes(const std::array<float, kSpectrumSamples>& a) { return SpectrumLanes{a[0], a[1], a[2], a[3]}; }
+inline SpectrumLanes toLanes(const std::array<float, kSpectrumSamples>& a) {
+  return SpectrumLanes{a[0], a[1], a[2], a[3]};
+}
 inline Spectrum toSpectrum(SpectrumLanes v) {
   Spectrum s;
   for (int i = 0; i < kSpectrumSamples; ++i) s[i] = v[i];
