@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/bsdf_command.h"
 #include "app/feather_command.h"
 #include "app/montage_command.h"
 #include "app/render_command.h"
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   columba::addRenderCommand(app);
   columba::addFeatherCommand(app);
+  columba::addBSDFCommand(app);
   columba::addMontageCommand(app);
   try {
     app.parse(argc, argv);

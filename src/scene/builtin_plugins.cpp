@@ -1,4 +1,5 @@
 // The table of every plug-in Columba ships, by scene element and type name.
+#include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
 #include "bsdfs/plastic.h"
@@ -55,6 +56,8 @@ const PluginRegistry& PluginRegistry::builtin() {
     r.add("bsdf", "dielectric", makeDielectricBSDF);
     r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
+    r.add("bsdf", "barbulebsdf", makeBarbuleBSDF);
+    r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);
     r.add("shape", "ply", makePlyShape);
     r.add("shape", "rectangle", makeRectangleShape);
