@@ -1,16 +1,54 @@
 #include "core/spectrum.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace columba {
 
+namespace {
+// pbrt-v4's visible-wavelength density, 1/cosh^2(0.0072 (lambda - 538)) on [360, 830] nm, is
+// sampled through a table of its inverse CDF: the wavelength is interpolated linearly within
+// 1/1024 of the CDF, so the density actually drawn is constant per table segment, and that
+// density is what `pdf` reports. It spares four atanh and cosh per camera sample.
+struct VisibleWavelengthTable {
+  static constexpr int kSegments = 1024;
+  std::array<float, kSegments + 1> lambda;
+  VisibleWavelengthTable() {
+    for (int k = 0; k <= kSegments; ++k) {
+      double u = double(k) / kSegments;
+      lambda[k] = float(std::clamp(538.0 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u), double(kLambdaMin),
+                                   double(kLambdaMax)));
+    }
+    lambda.front() = kLambdaMin;
+    lambda.back() = kLambdaMax;
+  }
+  float segmentPdf(int k) const { return 1.0f / (kSegments * (lambda[k + 1] - lambda[k])); }
+};
+const VisibleWavelengthTable& visibleTable() {
+  static const VisibleWavelengthTable table;
+  return table;
+}
+
+// Wavelength for `u` and the density it was drawn with.
+float drawVisibleWavelength(float u, float* pdf) {
+  const VisibleWavelengthTable& t = visibleTable();
+  float x = clampf(u, 0.0f, 1.0f) * VisibleWavelengthTable::kSegments;
+  int k = std::min(int(x), VisibleWavelengthTable::kSegments - 1);
+  *pdf = t.segmentPdf(k);
+  return lerp(x - float(k), t.lambda[k], t.lambda[k + 1]);
+}
+}  // namespace
+
 float visibleWavelengthPdf(float lambda) {
   if (lambda < kLambdaMin || lambda > kLambdaMax) return 0.0f;
-  return 0.003939804229326285f / sqr(std::cosh(0.0072f * (lambda - 538.0f)));
+  const VisibleWavelengthTable& t = visibleTable();
+  int k = int(std::upper_bound(t.lambda.begin(), t.lambda.end(), lambda) - t.lambda.begin()) - 1;
+  return t.segmentPdf(std::clamp(k, 0, VisibleWavelengthTable::kSegments - 1));
 }
 
 float sampleVisibleWavelength(float u) {
-  return 538.0f - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
+  float pdf;
+  return drawVisibleWavelength(u, &pdf);
 }
 
 Wavelengths Wavelengths::sampleVisible(float u) {
@@ -18,8 +56,7 @@ Wavelengths Wavelengths::sampleVisible(float u) {
   for (int i = 0; i < kSpectrumSamples; ++i) {
     float ui = u + float(i) / kSpectrumSamples;
     if (ui >= 1.0f) ui -= 1.0f;
-    wl.lambda[i] = clampf(sampleVisibleWavelength(ui), kLambdaMin, kLambdaMax);
-    wl.pdf[i] = visibleWavelengthPdf(wl.lambda[i]);
+    wl.lambda[i] = drawVisibleWavelength(ui, &wl.pdf[i]);
   }
   return wl;
 }

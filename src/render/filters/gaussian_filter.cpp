@@ -17,6 +17,10 @@ GaussianFilter::GaussianFilter(float stddev) : stddev_(stddev), radius_(4.0f * s
   }
   cdf_.front() = 0.0f;
   cdf_.back() = 1.0f;
+  for (int j = 0, i = 0; j < kGuideSize; ++j) {
+    while (i + 1 < kCdfSize - 1 && cdf_[i + 1] <= float(j) / kGuideSize) ++i;
+    guide_[j] = i;
+  }
 }
 
 double GaussianFilter::evalAxis(double x) const {
@@ -28,8 +32,9 @@ float GaussianFilter::eval(Vec2 offset) const { return float(evalAxis(offset.x) 
 
 // Inverts the truncated normal's CDF, erf(x / (stddev sqrt 2)) mapped from [-limit, limit].
 float GaussianFilter::sampleAxis(float u) const {
-  int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
-  i = std::clamp(i, 0, kCdfSize - 2);
+  u = clampf(u, 0.0f, 1.0f);
+  int i = guide_[std::min(int(u * kGuideSize), kGuideSize - 1)];
+  while (i + 1 < kCdfSize - 1 && cdf_[i + 1] <= u) ++i;
   float width = cdf_[i + 1] - cdf_[i];
   float t = width > 0.0f ? clampf((u - cdf_[i]) / width, 0.0f, 1.0f) : 0.5f;
   return -radius_ + 2.0f * radius_ * (float(i) + t) / float(kCdfSize - 1);

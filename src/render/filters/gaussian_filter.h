@@ -25,6 +25,9 @@ class GaussianFilter : public ReconstructionFilter {
   double cdfLimit_;           // erf(radius / (stddev sqrt 2))
   static constexpr int kCdfSize = 4097;
   std::array<float, kCdfSize> cdf_;  // at offsets -radius + 2 radius i / (size - 1)
+  // guide_[j]: the last CDF entry at or below j / kGuideSize, where the search for u starts.
+  static constexpr int kGuideSize = 1024;
+  std::array<int, kGuideSize> guide_;
   double evalAxis(double x) const;
   float sampleAxis(float u) const;
 };
