@@ -353,14 +353,15 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
   }
 }
 
-TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheMirroredCoverage) {
+TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
   const BSDFContext ctx;
   for (const ParameterSet& set : parameterSets()) {
     BarbuleBSDF bsdf(set.params);
     PCG32 rng(41);
     for (int i = 0; i < 2000; ++i) {
+      // Light along `below` crosses the layer on the same line as light along -below from above.
       Vec3 above = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-      Vec3 below(above.x, above.y, -above.z);
+      Vec3 below = -above;
       Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
       EXPECT_TRUE(bsdf.eval(ctx, below, wo, kWavelengths).isZero());
       EXPECT_EQ(bsdf.pdf(ctx, below, wo, kWavelengths), 0.0f);

@@ -18,8 +18,11 @@
 //   value is symmetric; TRT needs a point lit from both directions either way), but it is meant
 //   for emitter sampling.
 // - omega_i below the vane (omega_i . n <= 0) reflects nothing; light passes with the coverage of
-//   the mirrored direction (z -> -z), as the reference does. Outgoing directions below the vane
-//   are allowed: the lower part of the arc reflects down through the gaps.
+//   -omega_i, the same line through the layer, so T is the same in both directions of travel
+//   (the reference mirrors z instead, which picks another line through the tilted
+//   cross-sections and makes shadow rays from below disagree with camera rays from above).
+//   Outgoing directions below the vane are allowed: the lower part of the arc reflects down
+//   through the gaps.
 // - Reciprocity: f_R is symmetric in its two directions when both are above the vane (I_R at
 //   omega_i . m = omega_o . m, D(m), a symmetric visibility and longitudinal shadowing). f_TRT is
 //   not: it averages over the normals lit from omega_i and is scaled by omega_i's coverage.

@@ -16,12 +16,13 @@ struct Frame {
     return Frame(Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
                  Vec3(b, sign + n.y * n.y * a, -n.y), n);
   }
-  // Frame with normal `n` and `t` as close as possible to `tangent`.
-  static Frame fromNormalTangent(const Vec3& n, const Vec3& tangent) {
-    Vec3 t = tangent - dot(tangent, n) * n;
-    if (lengthSquared(t) < 1e-12f) return fromNormal(n);
-    t = normalize(t);
-    return Frame(cross(t, n), t, n);
+  // Frame with normal `n` whose first axis s (local x) is as close as possible to `sDirection`:
+  // shapes pass dp/du, so a BSDF's local x follows the surface's u direction as in Mitsuba.
+  static Frame fromNormalAndS(const Vec3& n, const Vec3& sDirection) {
+    Vec3 s = sDirection - dot(sDirection, n) * n;
+    if (lengthSquared(s) < 1e-12f) return fromNormal(n);
+    s = normalize(s);
+    return Frame(s, cross(n, s), n);
   }
   Vec3 toLocal(const Vec3& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
   Vec3 toWorld(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }

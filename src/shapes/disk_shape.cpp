@@ -29,7 +29,7 @@ SurfaceInteraction DiskShape::interaction(const Ray& ray, const HitRecord& hit) 
   float r = std::sqrt(local.x * local.x + local.y * local.y);
   float phi = std::atan2(local.y, local.x);
   si.uv = Vec2(r, (phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi));
-  si.shading = Frame::fromNormalTangent(si.ng, toWorld_.vector(Vec3(1, 0, 0)));
+  si.shading = Frame::fromNormalAndS(si.ng, toWorld_.vector(Vec3(1, 0, 0)));
   return si;
 }
 

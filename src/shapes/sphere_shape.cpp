@@ -66,7 +66,7 @@ SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit
   si.ng = toWorldNormal(localNormal(local));
   float phi = std::atan2(local.y, local.x);
   si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
-  si.shading = Frame::fromNormalTangent(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));
+  si.shading = Frame::fromNormalAndS(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));  // dp/du
   return si;
 }
 

@@ -47,6 +47,17 @@ unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
   return id;
 }
 
+Vec3 TriangleMesh::dpdu(size_t tri) const {
+  const uint32_t* idx = &mesh_.indices[3 * tri];
+  const Vec3 &p0 = mesh_.positions[idx[0]], &p1 = mesh_.positions[idx[1]], &p2 = mesh_.positions[idx[2]];
+  if (!mesh_.uvs.empty()) {
+    Vec2 d02 = mesh_.uvs[idx[0]] - mesh_.uvs[idx[2]], d12 = mesh_.uvs[idx[1]] - mesh_.uvs[idx[2]];
+    float det = d02.x * d12.y - d02.y * d12.x;
+    if (std::abs(det) > 1e-12f) return ((p0 - p2) * d12.y - (p1 - p2) * d02.y) / det;
+  }
+  return p1 - p0;  // no usable texture coordinates: the first edge keeps the frame stable
+}
+
 Vec3 TriangleMesh::faceNormal(size_t tri) const {
   const Vec3& a = mesh_.positions[mesh_.indices[3 * tri]];
   Vec3 n = normalize(cross(mesh_.positions[mesh_.indices[3 * tri + 1]] - a, mesh_.positions[mesh_.indices[3 * tri + 2]] - a));
@@ -69,8 +80,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
   }
   if (!mesh_.uvs.empty()) si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
   else si.uv = Vec2(b1, b2);
-  // Tangent along the first edge, so anisotropic BSDFs get a stable direction.
-  si.shading = Frame::fromNormalTangent(ns, mesh_.positions[idx[1]] - mesh_.positions[idx[0]]);
+  si.shading = Frame::fromNormalAndS(ns, dpdu(hit.primID));
   return si;
 }
 

@@ -28,6 +28,8 @@ class TriangleMesh : public Shape {
 
  private:
   Vec3 faceNormal(size_t tri) const;
+  // Surface derivative along u (the shading frame's first axis, as in Mitsuba).
+  Vec3 dpdu(size_t tri) const;
   MeshData mesh_;
   bool flip_;
   float area_ = 0.0f;
