@@ -68,12 +68,14 @@ void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
   weights.assign(rule.weights.begin(), rule.weights.end());
 }
 
-// Light from below the vane is treated with the mirrored direction (z -> -z).
-Vec3 mirroredAbove(const Vec3& w) { return {w.x, w.y, std::abs(w.z)}; }
+// Light crossing the vane from below follows the same line as light along -w from above, so it
+// meets the same gaps: transmission is symmetric under w -> -w. (Mirroring only z would pick a
+// different line through the tilted cross-sections.)
+Vec3 towardAbove(const Vec3& w) { return w.z < 0.0f ? -w : w; }
 
 // Fraction of light along w passing through the gaps.
 float gapTransmission(const BarbuleCrossSection& geometry, const Vec3& w) {
-  InPlaneDirection p = inPlane(mirroredAbove(w));
+  InPlaneDirection p = inPlane(towardAbove(w));
   if (!(p.cosTheta > 0.0f)) return 1.0f;
   return 1.0f - geometry.coverage(geometry.litArc(p.dir), p.dir);
 }
