@@ -3,6 +3,7 @@
 // an independent double-precision intersector to check the strips against.
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -82,6 +83,29 @@ class EmbreeScene {
     r.mask = ~0u;
     rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f;
+  }
+
+  // Nearest hits of four rays traced as one packet (tfar and primID per lane; primID
+  // RTC_INVALID_GEOMETRY_ID for a miss).
+  std::array<std::pair<float, unsigned>, 4> intersect4(const std::array<Ray, 4>& rays) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(16) int valid[4] = {-1, -1, -1, -1};
+    alignas(16) RTCRayHit4 rh{};
+    for (int i = 0; i < 4; ++i) {
+      const Ray& ray = rays[size_t(i)];
+      rh.ray.org_x[i] = ray.o.x; rh.ray.org_y[i] = ray.o.y; rh.ray.org_z[i] = ray.o.z;
+      rh.ray.dir_x[i] = ray.d.x; rh.ray.dir_y[i] = ray.d.y; rh.ray.dir_z[i] = ray.d.z;
+      rh.ray.tnear[i] = ray.tmin;
+      rh.ray.tfar[i] = ray.tmax;
+      rh.ray.mask[i] = ~0u;
+      rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect4(valid, scene_, &context, &rh);
+    std::array<std::pair<float, unsigned>, 4> hits;
+    for (int i = 0; i < 4; ++i)
+      hits[size_t(i)] = {rh.ray.tfar[i], rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? RTC_INVALID_GEOMETRY_ID : rh.hit.primID[i]};
+    return hits;
   }
 
   RTCDevice device() const { return device_; }

@@ -89,6 +89,31 @@ TEST(FeatherShape, OccludedAgreesWithIntersect) {
   }
 }
 
+TEST(FeatherShape, RayPacketsAgreeWithSingleRays) {
+  FeatherShape shape(syntheticBarbs(2, 1.0f, 0.3f, 0.1f), tiltedPlacement());
+  EmbreeScene scene(shape);
+  PCG32 rng(17);
+  int hits = 0;
+  for (int packet = 0; packet < 250; ++packet) {
+    std::array<Ray, 4> rays;
+    for (Ray& ray : rays) {
+      BarbStrip s = shape.strip(rng.nextUInt() % shape.primitiveCount());
+      Vec3 target = s.point(rng.nextFloat(), 0.5f * (rng.nextFloat() - 0.5f));
+      ray = rayToward(target + randomUnitVector(rng) * (0.3f * s.radius), randomUnitVector(rng), 0.02f);
+    }
+    auto packed = scene.intersect4(rays);
+    for (size_t i = 0; i < rays.size(); ++i) {
+      auto single = scene.intersect(rays[i]);
+      ASSERT_EQ(packed[i].second != RTC_INVALID_GEOMETRY_ID, single.has_value()) << "packet " << packet << ", ray " << i;
+      if (!single) continue;
+      ++hits;
+      EXPECT_EQ(packed[i].first, single->first.t);
+      EXPECT_EQ(packed[i].second, single->first.primID);
+    }
+  }
+  EXPECT_GT(hits, 250);
+}
+
 TEST(FeatherShape, RaysThroughMitreJointsHitOnceWithoutGap) {
   FeatherShape shape(syntheticBarbs(1, 1.5f, 0.8f, 0.15f), tiltedPlacement());
   EmbreeScene scene(shape);

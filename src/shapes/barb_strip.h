@@ -14,8 +14,8 @@
 
 namespace columba {
 
-// Unit direction of the segment p0 -> p1. Shared by the loader and the intersector so both see
-// bit-identical mitre planes.
+// Unit direction of the segment p0 -> p1. Strip axes and mitre planes are all derived from these
+// directions, so neighbouring strips see bit-identical planes.
 inline Vec3 segmentDirection(const Vec3& p0, const Vec3& p1) { return normalize(p1 - p0); }
 
 // Normal of the plane bisecting the joint between an incoming and an outgoing unit direction,
@@ -30,6 +30,16 @@ struct StripHit {
   float t = 0.0f;
   float axial = 0.0f;  // distance along the segment from its start vertex, divided by its length
   float angle = 0.0f;  // phi, the signed angle from n toward b
+  Vec3 normal;         // the cylinder's outward unit normal at the hit
+};
+
+// The cross-section of a strip: the cylinder's radius and the strip's half-width R sin(phi_max)
+// at both ends. Every barb tapers alike, so shapes keep one profile per segment index.
+struct StripProfile {
+  float radius = 0.0f;
+  float halfWidthStart = 0.0f, halfWidthEnd = 0.0f;
+
+  float halfWidthAt(float axial) const { return lerp(clampf(axial, 0.0f, 1.0f), halfWidthStart, halfWidthEnd); }
 };
 
 struct BarbStrip {
@@ -41,15 +51,11 @@ struct BarbStrip {
   float radius = 0.0f;
   float halfWidthStart = 0.0f, halfWidthEnd = 0.0f;  // R sin(phi_max) at both ends
 
-  // The segment from `points[i]` to `points[i + 1]` of a polyline with `count` points, with
-  // strip normal `n` (unit, perpendicular to the segment).
-  static BarbStrip fromPolyline(const Vec3* points, int count, int i, const Vec3& n, float radius,
-                                float halfWidthStart, float halfWidthEnd);
-
-  // Nearest hit with t in (tmin, tmax) of the ray o + t d (d need not be unit). Points within a
-  // few float ulps of a mitre plane count as inside on both sides, so rays through a joint
-  // cannot slip between the two strips; the duplicate is at the same point.
-  bool intersect(const Vec3& o, const Vec3& d, float tmin, float tmax, StripHit& hit) const;
+  // The segment from `p0` along the unit direction `axis` for `length`, with strip normal `n`
+  // (unit, perpendicular to `axis`). `incoming` and `outgoing` are the unit directions of the
+  // neighbouring segments of the barb, null at its first and last vertex (square cuts).
+  static BarbStrip fromSegment(const Vec3& p0, const Vec3& axis, float length, const Vec3* incoming,
+                               const Vec3* outgoing, const Vec3& n, const StripProfile& profile);
 
   // A box containing the strip.
   void bounds(Vec3& lo, Vec3& hi) const;
@@ -58,7 +64,29 @@ struct BarbStrip {
   Vec3 normal(float angle) const { return n * std::cos(angle) + b * std::sin(angle); }
   // Unit tangent of the cross-section circle at `angle`, toward increasing angle.
   Vec3 circumferential(float angle) const { return b * std::cos(angle) - n * std::sin(angle); }
-  float halfWidthAt(float axial) const { return lerp(clampf(axial, 0.0f, 1.0f), halfWidthStart, halfWidthEnd); }
 };
+
+// A BarbStrip as the intersector reads it, precomputed at load into one 64-byte cache line per
+// segment: the radius and half-widths are the shape's (see StripProfile), b = cross(axis, n) is
+// recomputed (bit-identical to BarbStrip::b), and the end planes are stored in the strip's own
+// frame, where the intersector tests them.
+struct alignas(64) PackedStrip {
+  Vec3 p0;
+  float length = 0.0f;
+  Vec3 axis, n;
+  Vec3 startMitre, endMitre;  // components along (b, n, axis) of BarbStrip's unit plane normals
+
+  PackedStrip() = default;
+  explicit PackedStrip(const BarbStrip& s);
+
+  Vec3 b() const { return cross(axis, n); }
+
+  // Nearest hit with t in (tmin, tmax) of the ray o + t d (d need not be unit). Points within a
+  // few float ulps of a mitre plane count as inside on both sides, so rays through a joint
+  // cannot slip between the two strips; the duplicate is at the same point.
+  bool intersect(const StripProfile& profile, const Vec3& o, const Vec3& d, float tmin, float tmax,
+                 StripHit& hit) const;
+};
+static_assert(sizeof(PackedStrip) == 64, "a packed strip fills one cache line");
 
 }  // namespace columba

@@ -46,10 +46,11 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
   b->upper_x = hi.x; b->upper_y = hi.y; b->upper_z = hi.z;
 }
 
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+// The rays of a packet of width kWidth, or of args->N when kWidth is 0. rtcIntersect1 passes
+// single rays: with the width known at compile time, the packet indexing folds away.
+template <unsigned kWidth> void intersectPacket(const RTCIntersectFunctionNArguments* args) {
   const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
-  const BarbStrip strip = shape->strip(args->primID);
-  const unsigned N = args->N;
+  const unsigned N = kWidth ? kWidth : args->N;
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
   RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, N);
   for (unsigned i = 0; i < N; ++i) {
@@ -57,12 +58,11 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     Vec3 o(RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i));
     Vec3 d(RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i));
     StripHit h;
-    if (!strip.intersect(o, d, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), h)) continue;
+    if (!shape->intersectStrip(args->primID, o, d, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), h)) continue;
     RTCRayN_tfar(ray, N, i) = h.t;
-    Vec3 ng = strip.normal(h.angle);
-    RTCHitN_Ng_x(hit, N, i) = ng.x;
-    RTCHitN_Ng_y(hit, N, i) = ng.y;
-    RTCHitN_Ng_z(hit, N, i) = ng.z;
+    RTCHitN_Ng_x(hit, N, i) = h.normal.x;
+    RTCHitN_Ng_y(hit, N, i) = h.normal.y;
+    RTCHitN_Ng_z(hit, N, i) = h.normal.z;
     RTCHitN_u(hit, N, i) = h.axial;
     RTCHitN_v(hit, N, i) = h.angle;
     RTCHitN_primID(hit, N, i) = args->primID;
@@ -71,16 +71,22 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   }
 }
 
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+  if (args->N == 1)
+    intersectPacket<1>(args);
+  else
+    intersectPacket<0>(args);
+}
+
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
-  const BarbStrip strip = shape->strip(args->primID);
   const unsigned N = args->N;
   for (unsigned i = 0; i < N; ++i) {
     if (!args->valid[i]) continue;
     Vec3 o(RTCRayN_org_x(args->ray, N, i), RTCRayN_org_y(args->ray, N, i), RTCRayN_org_z(args->ray, N, i));
     Vec3 d(RTCRayN_dir_x(args->ray, N, i), RTCRayN_dir_y(args->ray, N, i), RTCRayN_dir_z(args->ray, N, i));
     StripHit h;
-    if (strip.intersect(o, d, RTCRayN_tnear(args->ray, N, i), RTCRayN_tfar(args->ray, N, i), h))
+    if (shape->intersectStrip(args->primID, o, d, RTCRayN_tnear(args->ray, N, i), RTCRayN_tfar(args->ray, N, i), h))
       RTCRayN_tfar(args->ray, N, i) = -std::numeric_limits<float>::infinity();
   }
 }
@@ -102,22 +108,23 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     gather(ply.barbuleMu, ply.barbIndices);
     gather(ply.barbuleHeight, ply.barbIndices);
   }
-  positions_ = std::move(ply.positions);
   barbuleH_ = std::move(ply.barbuleH);
   barbuleMu_ = std::move(ply.barbuleMu);
   barbuleHeight_ = std::move(ply.barbuleHeight);
 
   const float scale = linearScale(toWorld);
-  halfWidth_ = 0.5f * params.barbWidth * scale;
-  radius_ = halfWidth_ / std::sin(params.cover);
+  const float halfWidth = 0.5f * params.barbWidth * scale;
+  radius_ = halfWidth / std::sin(params.cover);
   ramusHalfAngle_ = safeAsin(0.5f * params.ramusWidth * scale / radius_);
   cover_ = params.cover;
   cosSpan_ = std::cos(params.span);
   sinSpan_ = std::sin(params.span);
 
-  stripNormals_.resize(barbCount_ * kBarbSegments);
+  for (int i = 0; i < kBarbSegments; ++i) profiles_[i] = {radius_, halfWidth * taper(i), halfWidth * taper(i + 1)};
+
+  strips_.resize(barbCount_ * kBarbSegments);
   tbb::parallel_for(size_t(0), barbCount_, [&](size_t barb) {
-    const Vec3* p = &positions_[barb * kBarbVertices];
+    const Vec3* p = &ply.positions[barb * kBarbVertices];
     const Vec3* vn = &ply.normals[barb * kBarbVertices];
     auto fail = [&](const std::string& msg) {
       throw InputError(ply.faceLocation(barb), "face " + std::to_string(barb) + ": " + msg);
@@ -144,17 +151,23 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
       alongCross += dot(target, cross(dir[i], e[i]));
     }
     float angle = std::atan2(alongCross, alongE);
-    Vec3* n = &stripNormals_[barb * kBarbSegments];
-    n[0] = normalize(e[0] * std::cos(angle) + cross(dir[0], e[0]) * std::sin(angle));
-    for (int i = 1; i < kBarbSegments; ++i) n[i] = transportAcrossJoint(n[i - 1], mitreNormal(dir[i - 1], dir[i]));
+    Vec3 n = normalize(e[0] * std::cos(angle) + cross(dir[0], e[0]) * std::sin(angle));
+    PackedStrip* strips = &strips_[barb * kBarbSegments];
+    for (int i = 0; i < kBarbSegments; ++i) {
+      if (i > 0) n = transportAcrossJoint(n, mitreNormal(dir[i - 1], dir[i]));
+      strips[i] = PackedStrip(BarbStrip::fromSegment(p[i], dir[i], length(p[i + 1] - p[i]), i > 0 ? &dir[i - 1] : nullptr,
+                                                     i + 1 < kBarbSegments ? &dir[i + 1] : nullptr, n, profiles_[i]));
+    }
   });
 }
 
 BarbStrip FeatherShape::strip(size_t primID) const {
-  size_t barb = primID / kBarbSegments;
-  int seg = int(primID % kBarbSegments);
-  return BarbStrip::fromPolyline(&positions_[barb * kBarbVertices], kBarbVertices, seg,
-                                 stripNormals_[primID], radius_, halfWidth_ * taper(seg), halfWidth_ * taper(seg + 1));
+  const int seg = int(primID % kBarbSegments);
+  const PackedStrip& s = strips_[primID];
+  // The neighbours' axes are the segment directions the mitre planes were built from.
+  const Vec3* incoming = seg > 0 ? &strips_[primID - 1].axis : nullptr;
+  const Vec3* outgoing = seg + 1 < kBarbSegments ? &strips_[primID + 1].axis : nullptr;
+  return BarbStrip::fromSegment(s.p0, s.axis, s.length, incoming, outgoing, s.n, profiles_[seg]);
 }
 
 unsigned FeatherShape::addToEmbree(RTCDevice device, RTCScene scene) const {
@@ -171,13 +184,16 @@ unsigned FeatherShape::addToEmbree(RTCDevice device, RTCScene scene) const {
 }
 
 SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hit) const {
-  const BarbStrip s = strip(hit.primID);
+  // BarbStrip's point, normal and circumferential direction, on the packed strip and with one
+  // cosine and sine.
+  const PackedStrip& s = strips_[hit.primID];
+  const Vec3 b = s.b();
   const size_t barb = hit.primID / kBarbSegments;
   const int seg = int(hit.primID % kBarbSegments);
-  const float angle = hit.v;
+  const float angle = hit.v, cosAngle = std::cos(angle), sinAngle = std::sin(angle);
   SurfaceInteraction si;
-  si.p = s.point(hit.u, angle);
-  si.ng = s.normal(angle);
+  si.p = s.p0 + s.axis * (hit.u * s.length) + s.n * (radius_ * (cosAngle - 1.0f)) + b * (radius_ * sinAngle);
+  si.ng = s.n * cosAngle + b * sinAngle;
   si.t = hit.t;
   si.shape = this;
   const float along = clampf(hit.u, 0.0f, 1.0f);
@@ -185,7 +201,7 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   Vec3 t = s.axis;
   if (std::abs(angle) >= ramusHalfAngle_) {
     // Barbules point toward the tip and away from the ramus on either side.
-    Vec3 outward = s.circumferential(angle) * (angle > 0.0f ? 1.0f : -1.0f);
+    Vec3 outward = (b * cosAngle - s.n * sinAngle) * (angle > 0.0f ? 1.0f : -1.0f);
     t = s.axis * cosSpan_ + outward * sinSpan_;
   }
   si.shading = Frame(cross(t, si.ng), t, si.ng);
@@ -200,7 +216,7 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
 }
 
 size_t FeatherShape::memoryBytes() const {
-  return positions_.capacity() * sizeof(Vec3) + stripNormals_.capacity() * sizeof(Vec3) +
+  return strips_.capacity() * sizeof(PackedStrip) +
          (barbuleH_.capacity() + barbuleMu_.capacity() + barbuleHeight_.capacity()) * sizeof(float);
 }
 

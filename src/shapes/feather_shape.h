@@ -27,6 +27,7 @@
 //   file lacks them, so the BSDF uses its own). The reference implementation multiplied the
 //   file's H by 2.5 and negated mu; Columba does neither. The same mu applies on both sides
 //   of the ramus in each side's right-handed frame (s, t, n).
+#include <array>
 #include <memory>
 #include <vector>
 #include "core/transform.h"
@@ -62,19 +63,22 @@ class FeatherShape : public Shape {
   size_t barbCount() const { return barbCount_; }
   // The strip of Embree primitive `primID`, in world space.
   BarbStrip strip(size_t primID) const;
+  // Nearest hit of the ray o + t d, t in (tmin, tmax), with the strip of primitive `primID`.
+  bool intersectStrip(size_t primID, const Vec3& o, const Vec3& d, float tmin, float tmax, StripHit& hit) const {
+    return strips_[primID].intersect(profiles_[primID % kBarbSegments], o, d, tmin, tmax, hit);
+  }
   float radius() const { return radius_; }
   // Bytes held by the loaded geometry (not counting Embree's BVH).
   size_t memoryBytes() const;
 
  private:
-  void computeStripNormals(const std::vector<Vec3>& vertexNormals, const std::vector<uint32_t>* gather,
-                           const FeatherPlyData& ply);
-
   size_t barbCount_ = 0;
-  std::vector<Vec3> positions_;     // kBarbVertices per barb, world space, base first
-  std::vector<Vec3> stripNormals_;  // kBarbSegments per barb
+  // kBarbSegments per barb, world space, base first. Ray queries read nothing else, and the
+  // vertices are not kept: strip() recovers the mitre planes from the neighbours' axes.
+  std::vector<PackedStrip> strips_;
+  std::array<StripProfile, kBarbSegments> profiles_;  // by segment index: all barbs taper alike
   std::vector<float> barbuleH_, barbuleMu_, barbuleHeight_;  // per vertex, or empty
-  float radius_ = 0.0f, halfWidth_ = 0.0f, ramusHalfAngle_ = 0.0f;
+  float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };
 
