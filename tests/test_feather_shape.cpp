@@ -52,6 +52,33 @@ TEST(BarbStrip, ConsecutiveStripsShareTheirMitreCurve) {
   }
 }
 
+TEST(BarbStrip, BoundsContainTheWholeStrip) {
+  // Sharp zigzags: long mitre cuts, far from square.
+  FeatherShape shape(syntheticBarbs(2, 1.5f, 0.8f, 0.4f), tiltedPlacement());
+  PCG32 rng(13);
+  for (size_t prim = 0; prim < shape.primitiveCount(); ++prim) {
+    BarbStrip s = shape.strip(prim);
+    Vec3 lo, hi;
+    s.bounds(lo, hi);
+    Vec3 end = s.p0 + s.axis * s.length;
+    for (int k = 0; k < 200; ++k) {
+      // A point of the strip: across its width, then anywhere between its two cut curves.
+      float maxAngle = std::asin(std::max(s.halfWidthStart, s.halfWidthEnd) / s.radius);
+      float angle = (k < 2 ? (k ? 1.0f : -1.0f) : 2.0f * rng.nextFloat() - 1.0f) * maxAngle;
+      auto cutAxial = [&](const Vec3& plane, const Vec3& through) {
+        return -dot(s.point(0.0f, angle) - through, plane) / dot(s.axis, plane) / s.length;
+      };
+      float from = cutAxial(s.startMitre, s.p0), to = cutAxial(s.endMitre, end);
+      float axial = lerp(k % 3 == 0 ? float(k % 2) : rng.nextFloat(), from, to);
+      float halfWidth = lerp(clampf(axial, 0.0f, 1.0f), s.halfWidthStart, s.halfWidthEnd);
+      if (std::abs(s.radius * std::sin(angle)) > halfWidth) continue;  // beyond the taper
+      Vec3 p = s.point(axial, angle);
+      EXPECT_TRUE(p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z)
+          << "primitive " << prim << ", angle " << angle << ", axial " << axial;
+    }
+  }
+}
+
 TEST(FeatherShape, EmbreeHitsMatchAnIndependentReference) {
   FeatherShape shape(syntheticBarbs(3, 1.2f, 0.6f, 0.12f), tiltedPlacement());
   EmbreeScene scene(shape);

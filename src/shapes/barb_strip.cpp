@@ -23,18 +23,27 @@ BarbStrip BarbStrip::fromSegment(const Vec3& p0, const Vec3& axis, float length,
 }
 
 void BarbStrip::bounds(Vec3& lo, Vec3& hi) const {
-  float hw = std::max(halfWidthStart, halfWidthEnd);
-  float sag = radius - safeSqrt(radius * radius - hw * hw);  // depth of the strip's edges below its top line
-  // The mitre cuts reach past the end vertices by at most this much along the axis.
-  float before = (hw * std::abs(dot(startMitre, b)) + sag * std::abs(dot(startMitre, n))) / dot(startMitre, axis);
-  float after = (hw * std::abs(dot(endMitre, b)) + sag * std::abs(dot(endMitre, n))) / dot(endMitre, axis);
+  // Every cross-section of the strip is an arc of at most +-phi_max = asin(hw / R), hw the
+  // wider end's half-width. The arc lies within the trapezoid of its chord, at depth `sag` below
+  // the top line, and its end tangents, which meet the top line at +-R tan(phi_max / 2) =
+  // hw R / (2 R - sag). The strip lies within the prism over that trapezoid cut by the two mitre
+  // planes, so within the box of the prism's 8 corners.
+  const float hw = std::max(halfWidthStart, halfWidthEnd);
+  const float sag = radius - safeSqrt(radius * radius - hw * hw);
+  const float topHalfWidth = hw * radius / (2.0f * radius - sag);
+  const float sb = dot(startMitre, b), sn = dot(startMitre, n), sa = dot(startMitre, axis);
+  const float eb = dot(endMitre, b), en = dot(endMitre, n), ea = dot(endMitre, axis);
   lo = Vec3(INFINITY, INFINITY, INFINITY);
   hi = -lo;
-  for (int c = 0; c < 8; ++c) {
-    Vec3 corner = p0 + b * ((c & 1) ? hw : -hw) + n * ((c & 2) ? 0.0f : -sag) +
-                  axis * ((c & 4) ? length + after : -before);
-    lo = minv(lo, corner);
-    hi = maxv(hi, corner);
+  for (int c = 0; c < 4; ++c) {
+    const float y = (c & 2) ? 0.0f : -sag;  // relative to the top line
+    const float x = ((c & 2) ? topHalfWidth : hw) * ((c & 1) ? 1.0f : -1.0f);
+    const float zStart = -(x * sb + y * sn) / sa, zEnd = length - (x * eb + y * en) / ea;
+    for (float z : {zStart, zEnd}) {
+      Vec3 corner = p0 + b * x + n * y + axis * z;
+      lo = minv(lo, corner);
+      hi = maxv(hi, corner);
+    }
   }
   // Room for the mitre slack of intersect().
   Vec3 pad = Vec3(1, 1, 1) * (1e-5f * (maxAbsComponent(p0) + radius + length));
