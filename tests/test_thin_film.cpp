@@ -131,6 +131,26 @@ TEST(ThinFilm, FreeStandingFilmMatchesTheAirySum) {
   }
 }
 
+TEST(ThinFilm, FreeStandingFilmTransmittanceProductMatchesTheAirySum) {
+  // Two crossings of the film (the barbule's TRT lobe) at independent angles.
+  PCG32 rng(10);
+  for (int i = 0; i < 2000; ++i) {
+    std::array<float, kSpectrumSamples> lambdas;
+    for (float& l : lambdas) l = 360.0f + 470.0f * rng.nextFloat();
+    float height = 1.2f * rng.nextFloat(), cos1 = rng.nextFloat(), cos2 = rng.nextFloat();
+    Wavelengths wl = Wavelengths::fixed(lambdas);
+    FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), height, wl);
+    SpectrumLanes product = film.transmittanceProduct(cos1, cos2);
+    double tolerance = std::min(cos1, cos2) > 0.05f ? 2e-5 : 5e-4;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      ThinFilmAmplitudes a = thinFilmAmplitudes(std::max(cos1, 1e-4f), kAir, keratin(wl[k]), kAir, height, wl[k]);
+      ThinFilmAmplitudes b = thinFilmAmplitudes(std::max(cos2, 1e-4f), kAir, keratin(wl[k]), kAir, height, wl[k]);
+      double expected = 0.5 * (std::norm(a.ts) * std::norm(b.ts) + std::norm(a.tp) * std::norm(b.tp));
+      ASSERT_NEAR(product[k], expected, tolerance) << "cos " << cos1 << ", " << cos2 << " lambda " << wl[k];
+    }
+  }
+}
+
 TEST(Optics, KeratinFollowsCauchysLaw) {
   CauchyIOR k = CauchyIOR::keratin();
   EXPECT_NEAR(k(500.0f), 1.532f + 5890.0f / 250000.0f, 1e-6f);

@@ -170,12 +170,7 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
   float length = common.length();
   if (!(length > 0.0f)) return Spectrum(0.0f);
 
-  // I_TRT / R_m = 1/2 (T_s(in) T_s(out) + T_p(in) T_p(out)) with T = 1 - R of the film.
-  auto transmissionProduct = [&](float cosIn, float cosOut) {
-    FreeStandingFilm::Reflectance a = s.film.reflectance(cosIn), b = s.film.reflectance(cosOut);
-    return 0.5f * ((1.0f - a.s) * (1.0f - b.s) + (1.0f - a.p) * (1.0f - b.p));
-  };
-
+  // I_TRT / R_m = 1/2 (T_s(in) T_s(out) + T_p(in) T_p(out)): the film's transmittanceProduct.
   // Offsets through the circle angle psi (h = halfWidth sin(psi), dh = halfWidth cos(psi) dpsi):
   // the normal turns smoothly with psi, also where the interval ends at a silhouette of omega_i.
   float halfWidth = in.arc.halfWidth;
@@ -196,7 +191,8 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
       // sin reach float precision.
       float theta = meanLongitudinalAngle(projectedIn, in.w.y), thetaSqr = theta * theta;
       float c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr / 6.0f);
-      sum += weight * transmissionProduct(projectedIn * c + in.w.y * sn, std::abs(projectedOut * c + omegaO.y * sn));
+      sum += weight * s.film.transmittanceProduct(projectedIn * c + in.w.y * sn,
+                                                  std::abs(projectedOut * c + omegaO.y * sn));
       continue;
     }
     // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
@@ -221,7 +217,7 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
         float cosIn = projectedIn * c + in.w.y * sn, cosOut = std::abs(projectedOut * c + omegaO.y * sn);
         float w = thetaWeights_[j] * span * std::max(cosIn, 0.0f);
         if (!(w > 0.0f)) continue;
-        inner += w * transmissionProduct(cosIn, cosOut);
+        inner += w * s.film.transmittanceProduct(cosIn, cosOut);
         norm += w;
       }
     }

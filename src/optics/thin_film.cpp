@@ -68,18 +68,20 @@ constexpr SpectrumLanes lanes(float c) { return SpectrumLanes{c, c, c, c}; }
 }  // namespace
 
 const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {
-    lanes(1.0f), lanes(2.0f), lanes(1.0f / kTwoPi), lanes(kTwoPi), lanes(12582912.0f),
-    {lanes(1.0f / 20922789888000.0f), lanes(-1.0f / 87178291200.0f), lanes(1.0f / 479001600.0f),
-     lanes(-1.0f / 3628800.0f), lanes(1.0f / 40320.0f), lanes(-1.0f / 720.0f), lanes(1.0f / 24.0f), lanes(-0.5f),
-     lanes(1.0f)}};
+    lanes(1.0f / kPi), lanes(kPi), lanes(12582912.0f),
+    {lanes(-1.0f / 39916800.0f), lanes(1.0f / 362880.0f), lanes(-1.0f / 5040.0f), lanes(1.0f / 120.0f),
+     lanes(-1.0f / 6.0f), lanes(1.0f)}};
 
 FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
   SpectrumLanes lambda = toLanes(wl.lambda);
-  SpectrumLanes nFilm = film.a + film.b / (lambda * lambda);
-  eta_ = nFilm * (1.0f / nOutside);
-  invEtaSqr_ = 1.0f / (eta_ * eta_);
-  phaseScale_ = (4.0f * kPi * thicknessUm * 1000.0f) * nFilm / lambda;
+  SpectrumLanes eta = (film.a + film.b / (lambda * lambda)) * (1.0f / nOutside);
+  etaSqr_ = eta * eta;
+  invEtaSqr_ = 1.0f / etaSqr_;
+  etaSqrMinusOne_ = etaSqr_ - 1.0f;
+  bsSqr_ = etaSqrMinusOne_ * etaSqrMinusOne_;
+  // delta = 4 pi nFilm d cos(theta_film) / lambda and nFilm cos(theta_film) = nOutside q.
+  halfPhaseScale_ = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
 }
 
 }  // namespace columba

@@ -55,8 +55,13 @@ inline Spectrum toSpectrum(SpectrumLanes v) {
 
 // A film (index nFilm(lambda), optically denser than its surroundings) with the same medium on
 // both sides, evaluated at a path's wavelengths: the barbule cortex in air. With a lossless film
-// and equal media, R + T = 1 per polarisation, so the transmittance is 1 - R. Real arithmetic only:
-// for the interface reflectance R12 = r12^2, R = 2 R12 (1 - cos delta) / (1 + R12^2 - 2 R12 cos delta).
+// and equal media, R + T = 1 per polarisation. Real arithmetic only: from the Airy sum
+// R = 2 R12 (1 - cos delta) / ((1 - R12)^2 + 2 R12 (1 - cos delta)) with the interface reflectance
+// R12 = ((a - b) / (a + b))^2, per polarisation
+//   R = B^2 S / (A^2 + B^2 S),  T = A^2 / (A^2 + B^2 S),  A = 2 a b,  B = a^2 - b^2,  S = sin^2(delta / 2),
+// where a = c, b = q for s and a = eta c, b = q / eta for p, with c the incidence cosine, eta the
+// relative index and q = eta cos(theta_film) = sqrt(eta^2 - 1 + c^2). So A = 2 c q for both,
+// B_s = 1 - eta^2 is constant, and no interface Fresnel division is needed.
 class FreeStandingFilm {
  public:
   FreeStandingFilm() = default;
@@ -67,27 +72,37 @@ class FreeStandingFilm {
   };
   // Intensity reflectance for light meeting the film with incidence cosine `cosIncidence` (>= 0).
   Reflectance reflectance(float cosIncidence) const;
+  // Unpolarised transmittance of two crossings, 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)):
+  // light entering the film at one angle and leaving it at another (one division for all four).
+  SpectrumLanes transmittanceProduct(float cos1, float cos2) const;
 
  private:
+  // A^2 and B^2 S of the two polarisations at one incidence cosine.
+  struct Terms {
+    SpectrumLanes aSqr, sBSqrS, pBSqrS;
+  };
+  Terms terms(float cosIncidence) const;
+
   // Constants of the evaluation as full vectors, defined out of line: the arithmetic then reads
   // them as memory operands, where a visible constant is re-broadcast from a scalar at each use.
   struct Constants {
-    SpectrumLanes one, two, invTwoPi, twoPi, round;
-    SpectrumLanes cosTaylor[9];  // coefficients of y^16, y^14, ..., y^0 of cos(y)
+    SpectrumLanes invPi, pi, round;
+    SpectrumLanes sinTaylor[6];  // coefficients of y^10, y^8, ..., y^0 of sin(y) / y
   };
   static const Constants kConstants;
 
-  // cos(x) for |x| up to a few hundred: reduce to [-pi, pi] and use the even Taylor polynomial of
-  // degree 16 (error < 2e-7 there).
-  static SpectrumLanes cosReduced(SpectrumLanes x) {
+  // sin^2(x) for 0 <= x up to a few hundred: sin^2 has period pi, so reduce to [-pi/2, pi/2] and
+  // use the odd Taylor polynomial of degree 11 of sin (error < 6e-8 there).
+  static SpectrumLanes sinSqrReduced(SpectrumLanes x) {
     const Constants& k = kConstants;
-    SpectrumLanes turns = x * k.invTwoPi;
+    SpectrumLanes turns = x * k.invPi;
     SpectrumLanes whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
-    SpectrumLanes y = (turns - whole) * k.twoPi;
+    SpectrumLanes y = (turns - whole) * k.pi;
     SpectrumLanes y2 = y * y;
-    SpectrumLanes p = k.cosTaylor[0];
-    for (int i = 1; i < 9; ++i) p = p * y2 + k.cosTaylor[i];
-    return p;
+    SpectrumLanes p = k.sinTaylor[0];
+    for (int i = 1; i < 6; ++i) p = p * y2 + k.sinTaylor[i];
+    SpectrumLanes sinY = y * p;
+    return sinY * sinY;
   }
   static SpectrumLanes sqrtLanes(SpectrumLanes v) {
 #if defined(__SSE__)
@@ -97,31 +112,38 @@ class FreeStandingFilm {
 #endif
   }
 
-  SpectrumLanes eta_{};         // nFilm / nOutside
-  SpectrumLanes invEtaSqr_{};   // 1 / eta^2 (Snell's law for sin^2)
-  SpectrumLanes phaseScale_{};  // 4 pi nFilm d / lambda: delta = phaseScale cos(theta2)
+  SpectrumLanes etaSqrMinusOne_{};  // eta^2 - 1, eta = nFilm / nOutside
+  SpectrumLanes etaSqr_{}, invEtaSqr_{};
+  SpectrumLanes bsSqr_{};           // B_s^2 = (1 - eta^2)^2
+  SpectrumLanes halfPhaseScale_{};  // delta / 2 = halfPhaseScale q: 2 pi nOutside d / lambda
 };
 
+inline FreeStandingFilm::Terms FreeStandingFilm::terms(float cosIncidence) const {
+  // Exactly grazing light would make A = 0 and, where S = 0 too, the Airy sum 0/0.
+  float c = clampf(cosIncidence, 1e-4f, 1.0f), cSqr = c * c;
+  // The film is denser than its surroundings, so light always enters it (q^2 > 0).
+  SpectrumLanes qSqr = etaSqrMinusOne_ + cSqr;
+  SpectrumLanes S = sinSqrReduced(halfPhaseScale_ * sqrtLanes(qSqr));
+  SpectrumLanes aSqr = (4.0f * cSqr) * qSqr;
+  SpectrumLanes bp = etaSqr_ * cSqr - qSqr * invEtaSqr_;
+  return {aSqr, bsSqr_ * S, bp * bp * S};
+}
+
 inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
-  const SpectrumLanes kOne = kConstants.one, kTwo = kConstants.two;
-  // Exactly grazing light would make both interface reflectances 1 and the Airy sum 0/0.
-  float cScalar = clampf(cosIncidence, 1e-4f, 1.0f);
-  SpectrumLanes c = cScalar + SpectrumLanes{}, sinSqr = (1.0f - cScalar * cScalar) + SpectrumLanes{};
-  // The film is denser than its surroundings, so light always enters it (no critical angle).
-  SpectrumLanes cosFilm = sqrtLanes(kOne - sinSqr * invEtaSqr_);
-  SpectrumLanes etaCosFilm = eta_ * cosFilm, etaC = eta_ * c;
-  // Interface reflectances; one division serves both polarisations.
-  SpectrumLanes sDen = c + etaCosFilm, pDen = etaC + cosFilm;
-  SpectrumLanes inv = kOne / (sDen * pDen);
-  SpectrumLanes rs = (c - etaCosFilm) * pDen * inv, rp = (etaC - cosFilm) * sDen * inv;
-  SpectrumLanes Rs = rs * rs, Rp = rp * rp;
-  SpectrumLanes Ts = kOne - Rs, Tp = kOne - Rp;
-  SpectrumLanes oneMinusCos = kOne - cosReduced(phaseScale_ * cosFilm);
-  // 1 + R^2 - 2 R cos(delta) = (1 - R)^2 + 2 R (1 - cos(delta)) > 0.
-  SpectrumLanes sNum = kTwo * Rs * oneMinusCos, pNum = kTwo * Rp * oneMinusCos;
-  SpectrumLanes sDenFilm = Ts * Ts + sNum, pDenFilm = Tp * Tp + pNum;
-  SpectrumLanes invFilm = kOne / (sDenFilm * pDenFilm);
-  return {sNum * pDenFilm * invFilm, pNum * sDenFilm * invFilm};
+  Terms t = terms(cosIncidence);
+  // One division serves both polarisations.
+  SpectrumLanes sDen = t.aSqr + t.sBSqrS, pDen = t.aSqr + t.pBSqrS;
+  SpectrumLanes inv = 1.0f / (sDen * pDen);
+  return {t.sBSqrS * pDen * inv, t.pBSqrS * sDen * inv};
+}
+
+inline SpectrumLanes FreeStandingFilm::transmittanceProduct(float cos1, float cos2) const {
+  Terms a = terms(cos1), b = terms(cos2);
+  // 1/2 A1^2 A2^2 (1 / (sDen1 sDen2) + 1 / (pDen1 pDen2)) with den = A^2 + B^2 S; every den is at
+  // least A^2 > 5e-8, so the product of the four stays a normal float.
+  SpectrumLanes sProduct = (a.aSqr + a.sBSqrS) * (b.aSqr + b.sBSqrS);
+  SpectrumLanes pProduct = (a.aSqr + a.pBSqrS) * (b.aSqr + b.pBSqrS);
+  return (0.5f * a.aSqr * b.aSqr) * (sProduct + pProduct) / (sProduct * pProduct);
 }
 
 }  // namespace columba
