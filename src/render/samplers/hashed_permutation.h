@@ -35,7 +35,8 @@ inline uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
     i &= mask;
     i ^= i >> 5;
   } while (i >= n);
-  return (i + seed) % n;
+  // A power-of-two n (the low-discrepancy sampler's counts) needs no division.
+  return (n & mask) == 0 ? (i + seed) & mask : (i + seed) % n;
 }
 
 }  // namespace columba

@@ -6,6 +6,7 @@ namespace columba {
 
 void IndependentSampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
   state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+  state_.seedRandomness();
 }
 
 float IndependentSampler::get1D() { return state_.rng.nextFloat(); }

@@ -8,6 +8,7 @@ namespace columba {
 
 void MultijitterSampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
   state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+  state_.seedRandomness();
 }
 
 float MultijitterSampler::get1D() {

@@ -14,24 +14,25 @@ inline uint32_t reverseBits(uint32_t v) {
   return v;
 }
 
-// Dimension 0: the van der Corput radical inverse, as a 0.32 fixed-point fraction.
-inline uint32_t sobolDimension0(uint32_t index) { return reverseBits(index); }
-
-// Dimension 1: generator columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's
-// triangle mod 2), xor-ed together for the set bits of the index.
-inline uint32_t sobolDimension1(uint32_t index) {
+// Both dimensions are generated with their bits reversed, the order in which Owen scrambling
+// works. Dimension 0 (the van der Corput radical inverse) reversed is the index itself.
+// Dimension 1 has the generator columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's
+// triangle mod 2); reversed, r_0 = 1, r_k = r_{k-1} ^ (r_{k-1} << 1), xor-ed together for the set
+// bits of the index.
+inline uint32_t sobolDimension1Reversed(uint32_t index) {
   uint32_t result = 0;
-  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1u) result ^= v;
+  for (uint32_t r = 1; index != 0; index >>= 1, r ^= r << 1)
+    if (index & 1u) result ^= r;
   return result;
 }
 
-// Nested uniform (Owen) scrambling of a 0.32 fraction (Burley 2020, "Practical Hash-based Owen
-// Scrambling", after Laine and Karras 2011). With the bits reversed, each step below changes a
-// bit only as a function of the bits below it, so after reversing back every digit is flipped
-// depending only on the digits before it: elementary intervals map onto elementary intervals.
-inline uint32_t owenScramble(uint32_t v, uint32_t seed) {
-  v = reverseBits(v);
+// Nested uniform (Owen) scrambling (Burley 2020, "Practical Hash-based Owen Scrambling", after
+// Laine and Karras 2011) of a 0.32 fraction given with its bits reversed; returns the scrambled
+// fraction in the usual bit order. On reversed bits each step below changes a bit only as a
+// function of the bits below it, so after reversing back every digit is flipped depending only on
+// the digits before it: elementary intervals map onto elementary intervals.
+inline uint32_t owenScrambleReversed(uint32_t reversed, uint32_t seed) {
+  uint32_t v = reversed;
   v ^= v * 0x3d20adeau;
   v += seed;
   v *= (seed >> 16) | 1u;

@@ -7,6 +7,7 @@ namespace columba {
 
 void StratifiedSampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
   state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+  state_.seedRandomness();
 }
 
 float StratifiedSampler::get1D() {
