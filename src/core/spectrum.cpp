@@ -13,6 +13,7 @@ namespace {
 struct VisibleWavelengthTable {
   static constexpr int kSegments = 1024;
   std::array<float, kSegments + 1> lambda;
+  std::array<float, kSegments> pdf;  // density within each segment
   VisibleWavelengthTable() {
     for (int k = 0; k <= kSegments; ++k) {
       double u = double(k) / kSegments;
@@ -21,8 +22,8 @@ struct VisibleWavelengthTable {
     }
     lambda.front() = kLambdaMin;
     lambda.back() = kLambdaMax;
+    for (int k = 0; k < kSegments; ++k) pdf[k] = 1.0f / (kSegments * (lambda[k + 1] - lambda[k]));
   }
-  float segmentPdf(int k) const { return 1.0f / (kSegments * (lambda[k + 1] - lambda[k])); }
 };
 const VisibleWavelengthTable& visibleTable() {
   static const VisibleWavelengthTable table;
@@ -34,7 +35,7 @@ float drawVisibleWavelength(float u, float* pdf) {
   const VisibleWavelengthTable& t = visibleTable();
   float x = clampf(u, 0.0f, 1.0f) * VisibleWavelengthTable::kSegments;
   int k = std::min(int(x), VisibleWavelengthTable::kSegments - 1);
-  *pdf = t.segmentPdf(k);
+  *pdf = t.pdf[k];
   return lerp(x - float(k), t.lambda[k], t.lambda[k + 1]);
 }
 }  // namespace
@@ -43,7 +44,7 @@ float visibleWavelengthPdf(float lambda) {
   if (lambda < kLambdaMin || lambda > kLambdaMax) return 0.0f;
   const VisibleWavelengthTable& t = visibleTable();
   int k = int(std::upper_bound(t.lambda.begin(), t.lambda.end(), lambda) - t.lambda.begin()) - 1;
-  return t.segmentPdf(std::clamp(k, 0, VisibleWavelengthTable::kSegments - 1));
+  return t.pdf[std::clamp(k, 0, VisibleWavelengthTable::kSegments - 1)];
 }
 
 float sampleVisibleWavelength(float u) {
@@ -91,6 +92,14 @@ struct CieTable {
 const CieTable& cieTable() {
   static const CieTable table;
   return table;
+}
+
+// Linear interpolation in a table of values at whole nanometres from kLambdaMin to kLambdaMax.
+Vec3 interpolateNanometres(const std::array<Vec3, CieTable::kCount>& table, float lambda) {
+  float x = clampf(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
+  int i = std::min(int(x), CieTable::kCount - 2);
+  float f = x - float(i);
+  return table[i] * (1.0f - f) + table[i + 1] * f;
 }
 
 Vec3 xyzToUnbalancedRGB(const Vec3& c) {
@@ -168,11 +177,7 @@ std::array<float, 3> fitSigmoidPolynomial(const Vec3& target) {
 
 Vec3 cieXYZ(float lambda) {
   // Linear interpolation in the 1 nm table: the analytic fit costs seven exponentials.
-  const CieTable& t = cieTable();
-  float x = clampf(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
-  int i = std::min(int(x), CieTable::kCount - 2);
-  float f = x - float(i);
-  return t.xyz[i] * (1.0f - f) + t.xyz[i + 1] * f;
+  return interpolateNanometres(cieTable().xyz, lambda);
 }
 
 Vec3 cieXYZFit(float l) {
@@ -191,11 +196,29 @@ Vec3 xyzToLinearRGB(const Vec3& xyz) {
   return {rgb.x / w.x, rgb.y / w.y, rgb.z / w.z};
 }
 
+namespace {
+// The colour-matching functions taken to balanced linear RGB and divided by the Y integral, at the
+// CIE table's 1 nm steps: the conversion is linear, so it is applied once here instead of per
+// camera sample.
+struct RgbMatchingTable {
+  std::array<Vec3, CieTable::kCount> rgb;
+  RgbMatchingTable() {
+    const CieTable& t = cieTable();
+    for (int i = 0; i < CieTable::kCount; ++i) rgb[i] = xyzToLinearRGB(t.xyz[i] / t.yIntegral);
+  }
+};
+const RgbMatchingTable& rgbMatchingTable() {
+  static const RgbMatchingTable table;
+  return table;
+}
+}  // namespace
+
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
-  Vec3 xyz(0, 0, 0);
+  const RgbMatchingTable& t = rgbMatchingTable();
+  Vec3 rgb(0, 0, 0);
   for (int i = 0; i < kSpectrumSamples; ++i)
-    if (wl.pdf[i] > 0.0f) xyz += cieXYZ(wl[i]) * (s[i] / wl.pdf[i]);
-  return xyzToLinearRGB(xyz / (kSpectrumSamples * cieYIntegral()));
+    if (wl.pdf[i] > 0.0f) rgb += interpolateNanometres(t.rgb, wl[i]) * (s[i] / wl.pdf[i]);
+  return rgb * (1.0f / kSpectrumSamples);
 }
 
 SpectralDistribution SpectralDistribution::constant(float value) {
