@@ -7,8 +7,10 @@ std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
   float y = 1.0f - 2.0f * filmPosition.y / float(film().height());
   float r = std::sqrt(x * x + y * y);
   if (r >= 1.0f) return std::nullopt;
-  float theta = r * kHalfPi, phi = std::atan2(y, x);
-  Vec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+  // theta = r pi/2 and phi = atan2(y, x), whose cosine and sine are x / r and y / r.
+  float theta = r * kHalfPi;
+  float scale = r > 0.0f ? std::sin(theta) / r : 0.0f;
+  Vec3 d(x * scale, y * scale, std::cos(theta));
   Ray ray;
   ray.o = d * distance_;
   ray.d = -d;
