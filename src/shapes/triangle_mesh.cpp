@@ -33,6 +33,8 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
     area_ += areas[t];
   }
   if (area_ > 0.0f) triangleByArea_ = Distribution1D(std::move(areas));
+  faceFrames_.resize(primitiveCount());
+  for (size_t t = 0; t < faceFrames_.size(); ++t) faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), dpdu(t));
 }
 
 unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
@@ -66,21 +68,23 @@ Vec3 TriangleMesh::faceNormal(size_t tri) const {
 
 SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hit) const {
   const uint32_t* idx = &mesh_.indices[3 * size_t(hit.primID)];
+  const Frame& face = faceFrames_[hit.primID];
   float b1 = hit.u, b2 = hit.v, b0 = 1.0f - b1 - b2;
   SurfaceInteraction si;
   si.t = hit.t;
   si.shape = this;
   si.p = mesh_.positions[idx[0]] * b0 + mesh_.positions[idx[1]] * b1 + mesh_.positions[idx[2]] * b2;
-  si.ng = faceNormal(hit.primID);
-  Vec3 ns = si.ng;
+  si.ng = face.n;
+  si.shading = face;
   if (!mesh_.normals.empty()) {
-    ns = normalize(mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2);
+    Vec3 ns = normalize(mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2);
     if (flip_) ns = -ns;
     if (dot(ns, si.ng) < 0.0f) ns = -ns;
+    // dp/du lies in the face's plane, so the face frame's s has its direction.
+    si.shading = Frame::fromNormalAndS(ns, face.s);
   }
   if (!mesh_.uvs.empty()) si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
   else si.uv = Vec2(b1, b2);
-  si.shading = Frame::fromNormalAndS(ns, dpdu(hit.primID));
   return si;
 }
 
@@ -91,7 +95,7 @@ PositionSample TriangleMesh::samplePosition(Vec2 u) const {
   const uint32_t* idx = &mesh_.indices[3 * tri];
   PositionSample ps;
   ps.p = mesh_.positions[idx[0]] * (1.0f - b.x - b.y) + mesh_.positions[idx[1]] * b.x + mesh_.positions[idx[2]] * b.y;
-  ps.n = faceNormal(tri);
+  ps.n = faceFrames_[tri].n;
   ps.pdfArea = 1.0f / area_;
   return ps;
 }
@@ -116,8 +120,8 @@ std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, 
 
 std::shared_ptr<Object> makeRectangleShape(const Properties& props) {
   MeshData m;
+  // Flat: the face normal is the shading normal, so no vertex normals are needed.
   m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
   m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   m.indices = {0, 1, 2, 0, 2, 3};
   return finishMeshShape(props, std::move(m), props.getTransform("to_world"));

@@ -34,6 +34,8 @@ class TriangleMesh : public Shape {
   bool flip_;
   float area_ = 0.0f;
   Distribution1D triangleByArea_;
+  // Per triangle: the face normal (front side) and dp/du, the shading frame without vertex normals.
+  std::vector<Frame> faceFrames_;
 };
 
 // Reads `face_normals` and `flip_normals`, attaches the nested BSDF and area emitter.
