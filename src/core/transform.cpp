@@ -97,6 +97,11 @@ Transform Transform::lookAt(const Vec3& origin, const Vec3& target, const Vec3& 
 }
 
 Vec3 Transform::point(const Vec3& p) const {
+  // Shapes and sensors are placed by affine maps, and points are transformed per ray.
+  if (affine_)
+    return Vec3(float(m_.m[0][0] * p.x + m_.m[0][1] * p.y + m_.m[0][2] * p.z + m_.m[0][3]),
+                float(m_.m[1][0] * p.x + m_.m[1][1] * p.y + m_.m[1][2] * p.z + m_.m[1][3]),
+                float(m_.m[2][0] * p.x + m_.m[2][1] * p.y + m_.m[2][2] * p.z + m_.m[2][3]));
   double r[4];
   for (int i = 0; i < 4; ++i) r[i] = m_.m[i][0] * p.x + m_.m[i][1] * p.y + m_.m[i][2] * p.z + m_.m[i][3];
   double w = r[3] == 1.0 ? 1.0 : 1.0 / r[3];

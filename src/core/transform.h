@@ -16,9 +16,10 @@ struct Matrix4 {
 
 class Transform {
  public:
-  Transform() : m_(Matrix4::identity()), inv_(Matrix4::identity()) {}
-  explicit Transform(const Matrix4& m) : m_(m), inv_(m.inverse()) {}
-  Transform(const Matrix4& m, const Matrix4& inv) : m_(m), inv_(inv) {}
+  Transform() : Transform(Matrix4::identity(), Matrix4::identity()) {}
+  explicit Transform(const Matrix4& m) : Transform(m, m.inverse()) {}
+  Transform(const Matrix4& m, const Matrix4& inv)
+      : m_(m), inv_(inv), affine_(m.m[3][0] == 0.0 && m.m[3][1] == 0.0 && m.m[3][2] == 0.0 && m.m[3][3] == 1.0) {}
 
   static Transform translate(const Vec3& d);
   static Transform scale(const Vec3& s);
@@ -40,6 +41,7 @@ class Transform {
 
  private:
   Matrix4 m_, inv_;
+  bool affine_;  // bottom row (0, 0, 0, 1): points need no homogeneous division
 };
 
 }  // namespace columba

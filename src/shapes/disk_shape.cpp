@@ -8,6 +8,7 @@ namespace columba {
 DiskShape::DiskShape(const Transform& toWorld, bool flipNormals) : AnalyticShape(toWorld), flip_(flipNormals) {
   // An affine map scales all areas of the plane by the same factor.
   area_ = kPi * length(cross(toWorld_.vector(Vec3(1, 0, 0)), toWorld_.vector(Vec3(0, 1, 0))));
+  normal_ = toWorldNormal(localNormal(Vec3()));
 }
 
 std::optional<float> DiskShape::intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
@@ -24,7 +25,7 @@ SurfaceInteraction DiskShape::interaction(const Ray& ray, const HitRecord& hit) 
   si.t = hit.t;
   si.shape = this;
   si.p = ray.at(hit.t);
-  si.ng = toWorldNormal(localNormal(Vec3()));
+  si.ng = normal_;
   Vec3 local = toLocalPoint(si.p);
   float r = std::sqrt(local.x * local.x + local.y * local.y);
   float phi = std::atan2(local.y, local.x);
@@ -37,7 +38,7 @@ PositionSample DiskShape::samplePosition(Vec2 u) const {
   Vec2 d = sampleConcentricDisk(u);
   PositionSample ps;
   ps.p = toWorldPoint(Vec3(d.x, d.y, 0));
-  ps.n = toWorldNormal(localNormal(Vec3()));
+  ps.n = normal_;
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

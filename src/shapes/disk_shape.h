@@ -18,6 +18,7 @@ class DiskShape : public AnalyticShape {
  private:
   bool flip_;
   float area_;
+  Vec3 normal_;  // world-space front normal, the same everywhere on the disk
 };
 
 std::shared_ptr<Object> makeDiskShape(const Properties& props);
