@@ -52,11 +52,11 @@ bool given(float v) { return !std::isnan(v); }
 
 // sin and cos of |x| <= pi/2 by their Taylor polynomials of degree 11 and 12 (errors < 6e-8):
 // cheaper than the library's full-range versions at every quadrature node.
-void sinCosWithinQuarterTurn(float x, float& sinX, float& cosX) {
-  float x2 = x * x;
-  float s = -1.0f / 39916800;  // -1/11!
+void sinCosWithinQuarterTurn(FloatLanes x, FloatLanes& sinX, FloatLanes& cosX) {
+  FloatLanes x2 = x * x;
+  FloatLanes s = -1.0f / 39916800 + FloatLanes{};  // -1/11!
   for (float c : {1.0f / 362880, -1.0f / 5040, 1.0f / 120, -1.0f / 6, 1.0f}) s = s * x2 + c;
-  float k = 1.0f / 479001600;  // 1/12!
+  FloatLanes k = 1.0f / 479001600 + FloatLanes{};  // 1/12!
   for (float c : {-1.0f / 3628800, 1.0f / 40320, -1.0f / 720, 1.0f / 24, -0.5f, 1.0f}) k = k * x2 + c;
   sinX = x * s;
   cosX = k;
@@ -66,6 +66,17 @@ void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
   GaussLegendreRule rule = gaussLegendre(n);
   nodes.assign(rule.nodes.begin(), rule.nodes.end());
   weights.assign(rule.weights.begin(), rule.weights.end());
+}
+
+// The same in groups of four lanes; the last group is padded with weight 0.
+void makeLaneRule(int n, std::vector<FloatLanes>& nodes, std::vector<FloatLanes>& weights) {
+  GaussLegendreRule rule = gaussLegendre(n);
+  nodes.assign((n + kLaneCount - 1) / kLaneCount, FloatLanes{});
+  weights.assign(nodes.size(), FloatLanes{});
+  for (int k = 0; k < n; ++k) {
+    nodes[k / kLaneCount][k % kLaneCount] = float(rule.nodes[k]);
+    weights[k / kLaneCount][k % kLaneCount] = float(rule.weights[k]);
+  }
 }
 
 // Light crossing the vane from below follows the same line as light along -w from above, so it
@@ -109,8 +120,11 @@ struct BarbuleBSDF::LobeChoice {
 };
 
 BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuadrature quadrature)
-    : params_(params), role_(role), geometry_(params.b, params.phi0, params.phi1, params.mu, params.H) {
-  makeRule(quadrature.offsetNodes, offsetNodes_, offsetWeights_);
+    : params_(params),
+      role_(role),
+      geometry_(params.b, params.phi0, params.phi1, params.mu, params.H),
+      offsetNodeCount_(quadrature.offsetNodes) {
+  makeLaneRule(quadrature.offsetNodes, offsetNodes_, offsetWeights_);
   makeRule(quadrature.thetaNodes, thetaNodes_, thetaWeights_);
   makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
 }
@@ -173,59 +187,66 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
   // I_TRT / R_m = 1/2 (T_s(in) T_s(out) + T_p(in) T_p(out)): the film's transmittanceProduct.
   // Offsets through the circle angle psi (h = halfWidth sin(psi), dh = halfWidth cos(psi) dpsi):
   // the normal turns smoothly with psi, also where the interval ends at a silhouette of omega_i.
+  // The geometry of four offset nodes is evaluated at once, in SIMD lanes.
   float halfWidth = in.arc.halfWidth;
   float psiLo = std::asin(clampf(common.lo / halfWidth, -1.0f, 1.0f));
   float psiSpan = std::asin(clampf(common.hi / halfWidth, -1.0f, 1.0f)) - psiLo;
   // Weights of the mean over [lo, hi] in h.
   float weightScale = halfWidth * psiSpan / length;
   SpectrumLanes sum{};
-  for (size_t k = 0; k < offsetNodes_.size(); ++k) {
-    float psi = psiLo + offsetNodes_[k] * psiSpan;
-    float sinPsi, cosPsi;
-    sinCosWithinQuarterTurn(psi, sinPsi, cosPsi);
-    float weight = offsetWeights_[k] * weightScale * cosPsi;
-    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAtAngle(in.arc, sinPsi, cosPsi)));
-    float projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
+  for (size_t group = 0; group < offsetNodes_.size(); ++group) {
+    FloatLanes sinPsi, cosPsi;
+    sinCosWithinQuarterTurn(psiLo + offsetNodes_[group] * psiSpan, sinPsi, cosPsi);
+    FloatLanes weight = offsetWeights_[group] * (weightScale * cosPsi);
+    Vec2Lanes n = geometry.worldNormalsAtAngles(in.arc, sinPsi, cosPsi);
+    FloatLanes projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
+    int lanes = std::min(kLaneCount, offsetNodeCount_ - int(group) * kLaneCount);
     if (thetaNodes_.size() == 1) {
       // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms of cos and
       // sin reach float precision.
-      float theta = meanLongitudinalAngle(projectedIn, in.w.y), thetaSqr = theta * theta;
-      float c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr / 6.0f);
-      sum += weight * s.film.transmittanceProduct(projectedIn * c + in.w.y * sn,
-                                                  std::abs(projectedOut * c + omegaO.y * sn));
+      FloatLanes theta = meanLongitudinalAngles(projectedIn, in.w.y), thetaSqr = theta * theta;
+      FloatLanes c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr * (1.0f / 6.0f));
+      FloatLanes cosIn = projectedIn * c + in.w.y * sn, cosOut = absLanes(projectedOut * c + omegaO.y * sn);
+      for (int j = 0; j < lanes; ++j) sum += weight[j] * s.film.transmittanceProduct(cosIn[j], cosOut[j]);
       continue;
     }
-    // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
-    // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
-    LongitudinalDensity longitudinal(projectedIn, in.w.y);
-    float pieces[3] = {longitudinal.thetaMin(), longitudinal.thetaMax(), longitudinal.thetaMax()};
-    int pieceCount = 1;
-    if (omegaO.y != 0.0f) {
-      float kink = std::atan(-projectedOut / omegaO.y);
-      if (kink > pieces[0] && kink < pieces[1]) {
-        pieces[1] = kink;
-        pieceCount = 2;
-      }
-    }
-    SpectrumLanes inner{};
-    float norm = 0.0f;
-    for (int piece = 0; piece < pieceCount; ++piece) {
-      float lo = pieces[piece], span = pieces[piece + 1] - lo;
-      for (size_t j = 0; j < thetaNodes_.size(); ++j) {
-        float theta = lo + thetaNodes_[j] * span;
-        float c = std::cos(theta), sn = std::sin(theta);
-        float cosIn = projectedIn * c + in.w.y * sn, cosOut = std::abs(projectedOut * c + omegaO.y * sn);
-        float w = thetaWeights_[j] * span * std::max(cosIn, 0.0f);
-        if (!(w > 0.0f)) continue;
-        inner += w * s.film.transmittanceProduct(cosIn, cosOut);
-        norm += w;
-      }
-    }
-    if (norm > 0.0f) sum += (weight / norm) * inner;
+    for (int j = 0; j < lanes; ++j)
+      sum += weight[j] * trtLongitudinalMean(s, projectedIn[j], projectedOut[j], in.w.y, omegaO.y);
   }
   // f_TRT = rho / pi, rho = (1 / (H |cos gamma_i|)) * length * mean; |cos gamma_i| = |z| / cos(theta_i).
   float scale = length * in.plane.cosTheta / (kPi * geometry.spacing() * std::abs(in.w.z));
   return toSpectrum(scale * s.melanin * sum);
+}
+
+FloatLanes BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
+                                            float outY) const {
+  // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
+  // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
+  LongitudinalDensity longitudinal(projectedIn, inY);
+  float pieces[3] = {longitudinal.thetaMin(), longitudinal.thetaMax(), longitudinal.thetaMax()};
+  int pieceCount = 1;
+  if (outY != 0.0f) {
+    float kink = std::atan(-projectedOut / outY);
+    if (kink > pieces[0] && kink < pieces[1]) {
+      pieces[1] = kink;
+      pieceCount = 2;
+    }
+  }
+  SpectrumLanes inner{};
+  float norm = 0.0f;
+  for (int piece = 0; piece < pieceCount; ++piece) {
+    float lo = pieces[piece], span = pieces[piece + 1] - lo;
+    for (size_t j = 0; j < thetaNodes_.size(); ++j) {
+      float theta = lo + thetaNodes_[j] * span;
+      float c = std::cos(theta), sn = std::sin(theta);
+      float cosIn = projectedIn * c + inY * sn, cosOut = std::abs(projectedOut * c + outY * sn);
+      float w = thetaWeights_[j] * span * std::max(cosIn, 0.0f);
+      if (!(w > 0.0f)) continue;
+      inner += w * s.film.transmittanceProduct(cosIn, cosOut);
+      norm += w;
+    }
+  }
+  return norm > 0.0f ? inner / norm : SpectrumLanes{};
 }
 
 BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Vec3& omegaO,

@@ -101,6 +101,10 @@ class BarbuleBSDF : public BSDF {
   Lobes lobes(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
   Spectrum reflection(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
   Spectrum trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
+  // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
+  // per wavelength.
+  FloatLanes trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
+                                 float outY) const;
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
                     const LitArc& outArc) const;
@@ -110,7 +114,8 @@ class BarbuleBSDF : public BSDF {
   BarbuleParameters params_;
   Role role_;
   BarbuleCrossSection geometry_;
-  std::vector<float> offsetNodes_, offsetWeights_;
+  int offsetNodeCount_;
+  std::vector<FloatLanes> offsetNodes_, offsetWeights_;  // in groups of four lanes
   std::vector<float> thetaNodes_, thetaWeights_;
   std::vector<float> lobeNodes_, lobeWeights_;
 };

@@ -105,6 +105,16 @@ Vec2 BarbuleCrossSection::pointAtAngle(const LitArc& arc, float sinPsi, float co
   return arc.across * h + arc.toward * s;
 }
 
+Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const {
+  FloatLanes h = arc.halfWidth * sinPsi;
+  FloatLanes s = (arc.halfWidth / b_ * cosPsi - arc.q * h) * arc.invA;
+  FloatLanes nx = (arc.across.x * h + arc.toward.x * s) * invBSqr_, ny = arc.across.y * h + arc.toward.y * s;
+  FloatLanes inv = 1.0f / sqrtLanes(nx * nx + ny * ny);
+  nx *= inv;
+  ny *= inv;
+  return {nx * cosMu_ - ny * sinMu_, nx * sinMu_ + ny * cosMu_};
+}
+
 bool BarbuleCrossSection::isLit(const LitArc& arc, Vec2 n) const {
   if (!(dot2(n, arc.toward) > 0.0f)) return false;
   float h = dot2(pointWithNormal(n), arc.across);

@@ -13,6 +13,7 @@
 // across d (h = p . across, across = d turned by +90 degrees); h grows monotonically with the
 // normal angle over the lit side, so every set of lit points below is an interval of offsets.
 #include <optional>
+#include "core/lanes.h"
 #include "core/vector.h"
 
 namespace columba {
@@ -31,6 +32,11 @@ struct LitArc {
   float a = 1.0f, invA = 1.0f, q = 0.0f;
 
   float width() const { return hMax > hMin ? hMax - hMin : 0.0f; }
+};
+
+// Four in-plane unit vectors (world frame), one per lane.
+struct Vec2Lanes {
+  FloatLanes x, y;
 };
 
 // Offsets [lo, hi] (empty when hi <= lo).
@@ -68,6 +74,9 @@ class BarbuleCrossSection {
   // of the point once the ellipse is mapped to the unit circle. The point moves smoothly with psi
   // where it moves like sqrt(h) with h, at the silhouette.
   Vec2 pointAtAngle(const LitArc& arc, float sinPsi, float cosPsi) const;
+  // toWorld(normalAt(pointAtAngle(arc, sinPsi, cosPsi))) at four angles at once: the normals at
+  // a quadrature's nodes.
+  Vec2Lanes worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const;
   // Unit outward normal (local) of the central ellipse at a point on it.
   Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
   // Point (local) of the central ellipse whose outward normal is the local unit vector n.

@@ -9,9 +9,7 @@
 // t = t12 t21 / (1 - r21^2 e^{i delta}) up to the phase of t.
 #include <array>
 #include <complex>
-#if defined(__SSE__)
-#include <xmmintrin.h>
-#endif
+#include "core/lanes.h"
 #include "core/spectrum.h"
 #include "optics/dispersion.h"
 
@@ -38,11 +36,10 @@ double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3,
 double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
                              double lambdaNm);
 
-// Four wavelengths' values in one SIMD register (GCC/Clang vector extension): the film is
-// evaluated at every quadrature node of the barbule BSDF, so its arithmetic must not depend on
-// the compiler choosing to vectorise a loop.
-using SpectrumLanes = float __attribute__((vector_size(16)));
-static_assert(kSpectrumSamples == 4, "one SIMD register per path spectrum");
+// The path's four wavelengths' values in one SIMD register: the film is evaluated at every
+// quadrature node of the barbule BSDF.
+using SpectrumLanes = FloatLanes;
+static_assert(kSpectrumSamples == kLaneCount, "one SIMD register per path spectrum");
 
 inline SpectrumLanes toLanes(const std::array<float, kSpectrumSamples>& a) {
   return SpectrumLanes{a[0], a[1], a[2], a[3]};
@@ -103,13 +100,6 @@ class FreeStandingFilm {
     for (int i = 1; i < 6; ++i) p = p * y2 + k.sinTaylor[i];
     SpectrumLanes sinY = y * p;
     return sinY * sinY;
-  }
-  static SpectrumLanes sqrtLanes(SpectrumLanes v) {
-#if defined(__SSE__)
-    return _mm_sqrt_ps(v);
-#else
-    return SpectrumLanes{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
-#endif
   }
 
   SpectrumLanes etaSqrMinusOne_{};  // eta^2 - 1, eta = nFilm / nOutside
