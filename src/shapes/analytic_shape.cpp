@@ -20,15 +20,14 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 
 template <bool occlusion>
 void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, RTCRay& ray, RTCHit* hit) {
-  Vec3 o = shape->toLocalPoint(Vec3(ray.org_x, ray.org_y, ray.org_z));
-  Vec3 d = shape->toLocalVector(Vec3(ray.dir_x, ray.dir_y, ray.dir_z));
-  // The transform is affine, so the ray parameter is the same in both frames.
-  std::optional<float> t = shape->intersectLocal(o, d, ray.tnear, ray.tfar);
+  Vec3 o(ray.org_x, ray.org_y, ray.org_z), d(ray.dir_x, ray.dir_y, ray.dir_z);
+  std::optional<float> t = shape->intersectWorld(o, d, ray.tnear, ray.tfar);
   if (!t) return;
   if constexpr (occlusion) {
     ray.tfar = -INFINITY;
   } else {
-    Vec3 ng = shape->toWorldNormal(shape->localNormal(o + d * *t));
+    Vec3 local = shape->toLocalPoint(o) + shape->toLocalVector(d) * *t;
+    Vec3 ng = shape->toWorldNormal(shape->localNormal(local));
     ray.tfar = *t;
     hit->Ng_x = ng.x; hit->Ng_y = ng.y; hit->Ng_z = ng.z;
     hit->u = 0; hit->v = 0;

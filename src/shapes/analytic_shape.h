@@ -15,6 +15,11 @@ class AnalyticShape : public Shape {
 
   // Nearest hit parameter in (tmin, tmax) of the local ray o + t d (d not normalised).
   virtual std::optional<float> intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const = 0;
+  // The same for the world ray o + t d; the map is affine, so t is the same in both frames. Shapes
+  // may reject rays before transforming them.
+  virtual std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
+    return intersectLocal(toLocalPoint(o), toLocalVector(d), tmin, tmax);
+  }
   virtual Vec3 localNormal(const Vec3& localPoint) const = 0;
   // Bounds of the shape in local coordinates.
   virtual void localBounds(Vec3& lo, Vec3& hi) const = 0;

@@ -20,6 +20,18 @@ std::optional<float> DiskShape::intersectLocal(const Vec3& o, const Vec3& d, flo
   return t;
 }
 
+std::optional<float> DiskShape::intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
+  // Most rays that reach the disk's bounds miss its plane within (tmin, tmax): that needs only the
+  // local z of the ray (the same arithmetic as the full transform's).
+  const auto& toLocalZ = worldToLocal_.matrix().m[2];
+  float dz = float(toLocalZ[0] * d.x + toLocalZ[1] * d.y + toLocalZ[2] * d.z);
+  float oz = float(toLocalZ[0] * o.x + toLocalZ[1] * o.y + toLocalZ[2] * o.z + toLocalZ[3]);
+  if (dz == 0.0f) return std::nullopt;
+  float t = -oz / dz;
+  if (!(t > tmin && t < tmax)) return std::nullopt;
+  return intersectLocal(toLocalPoint(o), toLocalVector(d), tmin, tmax);
+}
+
 SurfaceInteraction DiskShape::interaction(const Ray& ray, const HitRecord& hit) const {
   SurfaceInteraction si;
   si.t = hit.t;
