@@ -11,7 +11,7 @@ mkdir -p "$out"
 if [ "${QUALITY:-final}" = draft ]; then
   vis=(-D res=256 -D spp=32); la=(-D res=256 -D spp=32); neck=(-D width=512 -D height=384 -D spp=16)
 else
-  vis=(-D res=512 -D spp=256); la=(-D res=512 -D spp=256); neck=(-D width=1024 -D height=768 -D spp=128)
+  vis=(-D res=512 -D spp=128); la=(-D res=512 -D spp=64); neck=(-D width=1024 -D height=768 -D spp=32)
 fi
 
 "$columba" feather --single --binary -o "$out/feather.ply"
