@@ -26,6 +26,7 @@
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
 #include "shapes/ply_mesh.h"
+#include "shapes/rectangle_shape.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
 

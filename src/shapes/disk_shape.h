@@ -1,25 +1,19 @@
 #pragma once
 // `disk`: the unit disk in the local xy plane, facing +z.
 #include "scene/properties.h"
-#include "shapes/analytic_shape.h"
+#include "shapes/planar_shape.h"
 
 namespace columba {
 
-class DiskShape : public AnalyticShape {
+class DiskShape : public PlanarShape {
  public:
-  DiskShape(const Transform& toWorld, bool flipNormals);
-  std::optional<float> intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
-  std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
-  Vec3 localNormal(const Vec3&) const override { return Vec3(0, 0, flip_ ? -1.0f : 1.0f); }
-  void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, 0); hi = Vec3(1, 1, 0); }
-  SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
-  float surfaceArea() const override { return area_; }
-  PositionSample samplePosition(Vec2 u) const override;
+  DiskShape(const Transform& toWorld, bool flipNormals) : PlanarShape(toWorld, flipNormals, kPi) {}
 
- private:
-  bool flip_;
-  float area_;
-  Vec3 normal_;  // world-space front normal, the same everywhere on the disk
+ protected:
+  bool contains(Vec2 local) const override { return local.x * local.x + local.y * local.y <= 1.0f; }
+  // Polar coordinates: (radius, angle / 2 pi).
+  Vec2 uvAt(Vec2 local) const override;
+  Vec2 sampleLocal(Vec2 u) const override;
 };
 
 std::shared_ptr<Object> makeDiskShape(const Properties& props);

@@ -118,15 +118,6 @@ std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, 
   return shape;
 }
 
-std::shared_ptr<Object> makeRectangleShape(const Properties& props) {
-  MeshData m;
-  // Flat: the face normal is the shading normal, so no vertex normals are needed.
-  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
-}
-
 std::shared_ptr<Object> makeCubeShape(const Properties& props) {
   MeshData m;
   // Six faces, four vertices each, wound counter-clockwise seen from outside.

@@ -1,5 +1,5 @@
 #pragma once
-// Triangle meshes in world space (obj, rectangle, cube, ...), intersected by Embree.
+// Triangle meshes in world space (obj, ply, cube), intersected by Embree.
 #include <vector>
 #include "core/distribution.h"
 #include "core/transform.h"
@@ -43,7 +43,6 @@ std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, 
 // Attaches a shape's nested BSDF (default: diffuse 0.5, as Mitsuba) and area emitter.
 void attachMaterial(const Properties& props, Shape& shape);
 
-std::shared_ptr<Object> makeRectangleShape(const Properties& props);
 std::shared_ptr<Object> makeCubeShape(const Properties& props);
 std::shared_ptr<Object> makeObjShape(const Properties& props);
 
