@@ -26,8 +26,7 @@ void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, R
   if constexpr (occlusion) {
     ray.tfar = -INFINITY;
   } else {
-    Vec3 local = shape->toLocalPoint(o) + shape->toLocalVector(d) * *t;
-    Vec3 ng = shape->toWorldNormal(shape->localNormal(local));
+    Vec3 ng = shape->worldNormal(o + d * *t);
     ray.tfar = *t;
     hit->Ng_x = ng.x; hit->Ng_y = ng.y; hit->Ng_z = ng.z;
     hit->u = 0; hit->v = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // Shapes defined implicitly in a local frame (unit disk, unit sphere) and placed by an affine
-// `to_world`. Embree calls back into the exact local intersector (user geometry).
+// `to_world`. Embree calls back into their exact intersectors (user geometry).
 #include <optional>
 #include "core/transform.h"
 #include "shapes/shape.h"
@@ -13,14 +13,12 @@ class AnalyticShape : public Shape {
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   size_t primitiveCount() const override { return 1; }
 
-  // Nearest hit parameter in (tmin, tmax) of the local ray o + t d (d not normalised).
-  virtual std::optional<float> intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const = 0;
-  // The same for the world ray o + t d; the map is affine, so t is the same in both frames. Shapes
-  // may reject rays before transforming them.
-  virtual std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
-    return intersectLocal(toLocalPoint(o), toLocalVector(d), tmin, tmax);
-  }
+  // Nearest hit parameter in (tmin, tmax) of the world ray o + t d (d not normalised). The map is
+  // affine, so t is also the parameter of the local ray.
+  virtual std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const = 0;
   virtual Vec3 localNormal(const Vec3& localPoint) const = 0;
+  // Unit geometric normal at a world point on the shape.
+  virtual Vec3 worldNormal(const Vec3& worldPoint) const { return toWorldNormal(localNormal(toLocalPoint(worldPoint))); }
   // Bounds of the shape in local coordinates.
   virtual void localBounds(Vec3& lo, Vec3& hi) const = 0;
 

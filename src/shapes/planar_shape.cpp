@@ -5,29 +5,39 @@ namespace columba {
 PlanarShape::PlanarShape(const Transform& toWorld, bool flipNormals, float localArea)
     : AnalyticShape(toWorld), flip_(flipNormals) {
   // An affine map scales all areas of the plane by the same factor.
-  area_ = localArea * length(cross(toWorld_.vector(Vec3(1, 0, 0)), toWorld_.vector(Vec3(0, 1, 0))));
-  frame_ = Frame::fromNormalAndS(toWorldNormal(localNormal(Vec3())), toWorld_.vector(Vec3(1, 0, 0)));
+  axisX_ = toWorld_.vector(Vec3(1, 0, 0));
+  axisY_ = toWorld_.vector(Vec3(0, 1, 0));
+  origin_ = toWorld_.point(Vec3(0, 0, 0));
+  area_ = localArea * length(cross(axisX_, axisY_));
+  frame_ = Frame::fromNormalAndS(toWorldNormal(localNormal(Vec3())), axisX_);
+  const auto& m = worldToLocal_.matrix().m;
+  for (int i = 0; i < 3; ++i) {
+    localRows_[i] = Vec3(float(m[i][0]), float(m[i][1]), float(m[i][2]));
+    localOffsets_[i] = float(m[i][3]);
+  }
 }
 
-std::optional<float> PlanarShape::intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
-  if (d.z == 0.0f) return std::nullopt;
-  float t = -o.z / d.z;
-  if (!(t > tmin && t < tmax)) return std::nullopt;
-  Vec3 p = o + d * t;
-  if (!contains(Vec2(p.x, p.y))) return std::nullopt;
-  return t;
+Vec3 PlanarShape::localCoordinates(const Vec3& p) const {
+  return {dot(localRows_[0], p) + localOffsets_[0], dot(localRows_[1], p) + localOffsets_[1],
+          dot(localRows_[2], p) + localOffsets_[2]};
 }
 
 std::optional<float> PlanarShape::intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
-  // Most rays that reach the shape's bounds miss its plane within (tmin, tmax): that needs only
-  // the local z of the ray (the same arithmetic as the full transform's).
-  const auto& toLocalZ = worldToLocal_.matrix().m[2];
-  float dz = float(toLocalZ[0] * d.x + toLocalZ[1] * d.y + toLocalZ[2] * d.z);
-  float oz = float(toLocalZ[0] * o.x + toLocalZ[1] * o.y + toLocalZ[2] * o.z + toLocalZ[3]);
-  if (dz == 0.0f) return std::nullopt;
-  float t = -oz / dz;
+  // The plane is where the local z vanishes: t = num / dz. Most rays that reach the shape's bounds
+  // miss the plane within (tmin, tmax), which is tested before dividing.
+  float dz = dot(localRows_[2], d);
+  float num = -(dot(localRows_[2], o) + localOffsets_[2]);
+  if (dz < 0.0f) {
+    dz = -dz;
+    num = -num;
+  }
+  if (!(num > tmin * dz && num < tmax * dz)) return std::nullopt;
+  float t = num / dz;
   if (!(t > tmin && t < tmax)) return std::nullopt;
-  return intersectLocal(toLocalPoint(o), toLocalVector(d), tmin, tmax);
+  Vec3 p = o + d * t;
+  Vec2 local(dot(localRows_[0], p) + localOffsets_[0], dot(localRows_[1], p) + localOffsets_[1]);
+  if (!contains(local)) return std::nullopt;
+  return t;
 }
 
 SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit) const {
@@ -36,8 +46,8 @@ SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit
   si.shape = this;
   // Re-projected onto the plane: ray.at(t) is off it by the rounding of t, which can exceed the
   // offset of rays spawned from the point.
-  Vec3 local = toLocalPoint(ray.at(hit.t));
-  si.p = toWorldPoint(Vec3(local.x, local.y, 0.0f));
+  Vec3 local = localCoordinates(ray.at(hit.t));
+  si.p = worldPoint(Vec2(local.x, local.y));
   si.ng = frame_.n;
   si.uv = uvAt(Vec2(local.x, local.y));
   si.shading = frame_;
@@ -45,9 +55,8 @@ SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit
 }
 
 PositionSample PlanarShape::samplePosition(Vec2 u) const {
-  Vec2 local = sampleLocal(u);
   PositionSample ps;
-  ps.p = toWorldPoint(Vec3(local.x, local.y, 0));
+  ps.p = worldPoint(sampleLocal(u));
   ps.n = frame_.n;
   ps.pdfArea = 1.0f / area_;
   return ps;

@@ -11,9 +11,9 @@ class PlanarShape : public AnalyticShape {
   // `localArea`: the shape's area in its local plane.
   PlanarShape(const Transform& toWorld, bool flipNormals, float localArea);
 
-  std::optional<float> intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
   std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
   Vec3 localNormal(const Vec3&) const override { return Vec3(0, 0, flip_ ? -1.0f : 1.0f); }
+  Vec3 worldNormal(const Vec3&) const override { return frame_.n; }
   void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, 0); hi = Vec3(1, 1, 0); }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
@@ -27,9 +27,17 @@ class PlanarShape : public AnalyticShape {
   virtual Vec2 sampleLocal(Vec2 u) const = 0;
 
  private:
+  // Local coordinates of a world point (worldToLocal_ in single precision, as rays are).
+  Vec3 localCoordinates(const Vec3& p) const;
+  // The world point at local (x, y, 0).
+  Vec3 worldPoint(Vec2 local) const { return origin_ + axisX_ * local.x + axisY_ * local.y; }
+
   bool flip_;
   float area_;
   Frame frame_;  // world shading frame, the same everywhere; frame_.n is the front normal
+  Vec3 localRows_[3];
+  float localOffsets_[3];
+  Vec3 origin_, axisX_, axisY_;  // the world images of the local origin and of the x and y axes
 };
 
 }  // namespace columba

@@ -42,7 +42,8 @@ float SphereShape::pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const
   return cosMax ? uniformConePdf(*cosMax) : Shape::pdfFrom(ref, hit);
 }
 
-std::optional<float> SphereShape::intersectLocal(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
+std::optional<float> SphereShape::intersectWorld(const Vec3& worldO, const Vec3& worldD, float tmin, float tmax) const {
+  Vec3 o = toLocalPoint(worldO), d = toLocalVector(worldD);
   // Solve |o + t d|^2 = 1 in double precision: grazing and distant rays stay accurate.
   double a = double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
   double b = 2.0 * (double(o.x) * d.x + double(o.y) * d.y + double(o.z) * d.z);
