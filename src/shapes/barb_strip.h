@@ -26,6 +26,8 @@ inline Vec3 mitreNormal(const Vec3& incoming, const Vec3& outgoing) { return nor
 // perpendicular to the next segment and makes the two cylinders mirror images in that plane.
 inline Vec3 transportAcrossJoint(const Vec3& n, const Vec3& mitre) { return normalize(n - 2.0f * dot(n, mitre) * mitre); }
 
+inline float maxAbsComponent(const Vec3& v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); }
+
 struct StripHit {
   float t = 0.0f;
   float axial = 0.0f;  // distance along the segment from its start vertex, divided by its length
@@ -52,12 +54,13 @@ struct BarbStrip {
   float halfWidthStart = 0.0f, halfWidthEnd = 0.0f;  // R sin(phi_max) at both ends
 
   // The segment from `p0` along the unit direction `axis` for `length`, with strip normal `n`
-  // (unit, perpendicular to `axis`). `incoming` and `outgoing` are the unit directions of the
-  // neighbouring segments of the barb, null at its first and last vertex (square cuts).
-  static BarbStrip fromSegment(const Vec3& p0, const Vec3& axis, float length, const Vec3* incoming,
-                               const Vec3* outgoing, const Vec3& n, const StripProfile& profile);
+  // (unit, perpendicular to `axis`) and end planes `startMitre` and `endMitre` (mitreNormal of
+  // the joints; `axis` for the square cuts at a barb's first and last vertex).
+  static BarbStrip fromSegment(const Vec3& p0, const Vec3& axis, float length, const Vec3& startMitre,
+                               const Vec3& endMitre, const Vec3& n, const StripProfile& profile);
 
-  // A box containing the strip.
+  StripProfile profile() const { return {radius, halfWidthStart, halfWidthEnd}; }
+  // A box containing the strip (PackedStrip::bounds).
   void bounds(Vec3& lo, Vec3& hi) const;
 
   Vec3 point(float axial, float angle) const;
@@ -81,12 +84,57 @@ struct alignas(64) PackedStrip {
 
   Vec3 b() const { return cross(axis, n); }
 
+  // A box containing the strip, with room for the mitre slack of intersect().
+  void bounds(const StripProfile& profile, Vec3& lo, Vec3& hi) const;
+
   // Nearest hit with t in (tmin, tmax) of the ray o + t d (d need not be unit). Points within a
   // few float ulps of a mitre plane count as inside on both sides, so rays through a joint
-  // cannot slip between the two strips; the duplicate is at the same point.
+  // cannot slip between the two strips; the duplicate is at the same point. Inline: it is the
+  // body of the Embree intersect callback.
   bool intersect(const StripProfile& profile, const Vec3& o, const Vec3& d, float tmin, float tmax,
                  StripHit& hit) const;
 };
 static_assert(sizeof(PackedStrip) == 64, "a packed strip fills one cache line");
+
+inline bool PackedStrip::intersect(const StripProfile& profile, const Vec3& o, const Vec3& d, float tmin, float tmax,
+                                   StripHit& hit) const {
+  const float radius = profile.radius;
+  const Vec3 b = this->b();
+  // Local coordinates: x along b, y along n with the cylinder axis at y = 0, z along the axis.
+  Vec3 rel = o - p0;
+  float ox = dot(rel, b), oy = dot(rel, n) + radius;
+  float dx = dot(d, b), dy = dot(d, n);
+  float a = dx * dx + dy * dy;
+  if (!(a > 1e-12f * lengthSquared(d))) return false;  // parallel to the axis
+  // Solve from the ray's point closest to the axis: this avoids the cancellation of the
+  // textbook discriminant when the ray starts far from a thin cylinder.
+  float tc = -(ox * dx + oy * dy) / a;
+  float cx = ox + tc * dx, cy = oy + tc * dy;
+  float gap = radius * radius - (cx * cx + cy * cy);
+  if (gap < 0.0f) return false;
+  float dt = std::sqrt(gap / a);
+  // Rays leaving a neighbouring strip often cross this cylinder only behind their start.
+  if (tc + dt <= tmin) return false;
+  float oz = dot(rel, axis), dz = dot(d, axis);
+  // Slack for the mitre planes: a few ulps of the coordinates the hit point was computed from.
+  float slack = 1e-6f * (maxAbsComponent(p0) + std::abs(ox) + std::abs(oy) + std::abs(oz) + radius);
+  for (float t : {tc - dt, tc + dt}) {
+    if (t <= tmin) continue;
+    if (t >= tmax) return false;
+    float px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
+    if (py <= 0.0f) continue;  // the half of the cylinder away from the strip
+    float axial = pz / length;
+    if (std::abs(px) > profile.halfWidthAt(axial)) continue;
+    float below = py - radius;  // height relative to the top line
+    if (px * startMitre.x + below * startMitre.y + pz * startMitre.z < -slack) continue;
+    if (px * endMitre.x + below * endMitre.y + (pz - length) * endMitre.z > slack) continue;
+    hit.t = t;
+    hit.axial = axial;
+    hit.angle = std::atan2(px, py);
+    hit.normal = normalize(b * px + n * py);
+    return true;
+  }
+  return false;
+}
 
 }  // namespace columba

@@ -40,7 +40,7 @@ template <typename T> void gather(std::vector<T>& values, const std::vector<uint
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
   const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
   Vec3 lo, hi;
-  shape->strip(args->primID).bounds(lo, hi);
+  shape->stripBounds(args->primID, lo, hi);
   RTCBounds* b = args->bounds_o;
   b->lower_x = lo.x; b->lower_y = lo.y; b->lower_z = lo.z;
   b->upper_x = hi.x; b->upper_y = hi.y; b->upper_z = hi.z;
@@ -139,11 +139,16 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
         fail("the barb turns by " + std::to_string(int(radToDeg(safeAcos(dot(dir[i - 1], dir[i]))))) +
              " degrees at vertex " + std::to_string(i) + " (at most 120 can be mitred)");
     }
+    // End planes: mitreNormal at the joints, square cuts at both ends of the barb.
+    Vec3 mitre[kBarbVertices];
+    mitre[0] = dir[0];
+    for (int i = 1; i < kBarbSegments; ++i) mitre[i] = mitreNormal(dir[i - 1], dir[i]);
+    mitre[kBarbSegments] = dir[kBarbSegments - 1];
     // Transport a basis (e, cross(dir, e)) of the first segment's normal plane along the barb,
     // then pick the one transported normal that best matches the vane normals.
     Vec3 e[kBarbSegments];
     e[0] = perpendicularTo(dir[0], vn[0] + vn[1]);
-    for (int i = 1; i < kBarbSegments; ++i) e[i] = transportAcrossJoint(e[i - 1], mitreNormal(dir[i - 1], dir[i]));
+    for (int i = 1; i < kBarbSegments; ++i) e[i] = transportAcrossJoint(e[i - 1], mitre[i]);
     float alongE = 0.0f, alongCross = 0.0f;
     for (int i = 0; i < kBarbSegments; ++i) {
       Vec3 target = vn[i] + vn[i + 1];
@@ -154,9 +159,9 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     Vec3 n = normalize(e[0] * std::cos(angle) + cross(dir[0], e[0]) * std::sin(angle));
     PackedStrip* strips = &strips_[barb * kBarbSegments];
     for (int i = 0; i < kBarbSegments; ++i) {
-      if (i > 0) n = transportAcrossJoint(n, mitreNormal(dir[i - 1], dir[i]));
-      strips[i] = PackedStrip(BarbStrip::fromSegment(p[i], dir[i], length(p[i + 1] - p[i]), i > 0 ? &dir[i - 1] : nullptr,
-                                                     i + 1 < kBarbSegments ? &dir[i + 1] : nullptr, n, profiles_[i]));
+      if (i > 0) n = transportAcrossJoint(n, mitre[i]);
+      strips[i] = PackedStrip(
+          BarbStrip::fromSegment(p[i], dir[i], length(p[i + 1] - p[i]), mitre[i], mitre[i + 1], n, profiles_[i]));
     }
   });
 }
@@ -165,9 +170,9 @@ BarbStrip FeatherShape::strip(size_t primID) const {
   const int seg = int(primID % kBarbSegments);
   const PackedStrip& s = strips_[primID];
   // The neighbours' axes are the segment directions the mitre planes were built from.
-  const Vec3* incoming = seg > 0 ? &strips_[primID - 1].axis : nullptr;
-  const Vec3* outgoing = seg + 1 < kBarbSegments ? &strips_[primID + 1].axis : nullptr;
-  return BarbStrip::fromSegment(s.p0, s.axis, s.length, incoming, outgoing, s.n, profiles_[seg]);
+  const Vec3 startMitre = seg > 0 ? mitreNormal(strips_[primID - 1].axis, s.axis) : s.axis;
+  const Vec3 endMitre = seg + 1 < kBarbSegments ? mitreNormal(s.axis, strips_[primID + 1].axis) : s.axis;
+  return BarbStrip::fromSegment(s.p0, s.axis, s.length, startMitre, endMitre, s.n, profiles_[seg]);
 }
 
 unsigned FeatherShape::addToEmbree(RTCDevice device, RTCScene scene) const {

@@ -67,6 +67,10 @@ class FeatherShape : public Shape {
   bool intersectStrip(size_t primID, const Vec3& o, const Vec3& d, float tmin, float tmax, StripHit& hit) const {
     return strips_[primID].intersect(profiles_[primID % kBarbSegments], o, d, tmin, tmax, hit);
   }
+  // A box containing the strip of primitive `primID`.
+  void stripBounds(size_t primID, Vec3& lo, Vec3& hi) const {
+    strips_[primID].bounds(profiles_[primID % kBarbSegments], lo, hi);
+  }
   float radius() const { return radius_; }
   // Bytes held by the loaded geometry (not counting Embree's BVH).
   size_t memoryBytes() const;
