@@ -19,7 +19,7 @@ GaussianFilter::GaussianFilter(float stddev) : stddev_(stddev), radius_(4.0f * s
   cdf_.back() = 1.0f;
   for (int j = 0, i = 0; j < kGuideSize; ++j) {
     while (i + 1 < kCdfSize - 1 && cdf_[i + 1] <= float(j) / kGuideSize) ++i;
-    guide_[j] = i;
+    guide_[j] = uint16_t(i);
   }
 }
 

@@ -4,6 +4,7 @@
 // tabulated at construction on a fine grid of offsets (piecewise-constant density within
 // 1/1000 pixel cells): solving erf per camera sample was a measurable part of a render's time.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include "render/reconstruction_filter.h"
 
@@ -26,8 +27,10 @@ class GaussianFilter : public ReconstructionFilter {
   static constexpr int kCdfSize = 4097;
   std::array<float, kCdfSize> cdf_;  // at offsets -radius + 2 radius i / (size - 1)
   // guide_[j]: the last CDF entry at or below j / kGuideSize, where the search for u starts.
-  static constexpr int kGuideSize = 1024;
-  std::array<int, kGuideSize> guide_;
+  // Neighbouring CDF entries differ by at least 7.8e-4 (8 / (4096 sqrt(2 pi)) at the centre,
+  // whatever the stddev), more than a guide cell, so the search takes at most one step.
+  static constexpr int kGuideSize = 4096;
+  std::array<uint16_t, kGuideSize> guide_;
   double evalAxis(double x) const;
   float sampleAxis(float u) const;
 };
