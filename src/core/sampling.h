@@ -7,10 +7,12 @@ namespace columba {
 inline Vec2 sampleConcentricDisk(Vec2 u) {
   float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
   if (a == 0.0f && b == 0.0f) return {0, 0};
-  float r, phi;
-  if (std::abs(a) > std::abs(b)) { r = a; phi = (kPi / 4.0f) * (b / a); }
-  else { r = b; phi = kHalfPi - (kPi / 4.0f) * (a / b); }
-  return {r * std::cos(phi), r * std::sin(phi)};
+  // The angle is phi = (pi/4) (b/a), or pi/2 - (pi/4) (a/b), whose cosine and sine swap.
+  bool first = std::abs(a) > std::abs(b);
+  float r = first ? a : b, x = (kPi / 4.0f) * (first ? b / a : a / b);
+  float sinX, cosX;
+  sinCosWithinQuarterTurn(x, sinX, cosX);
+  return first ? Vec2(r * cosX, r * sinX) : Vec2(r * sinX, r * cosX);
 }
 
 inline Vec3 sampleCosineHemisphere(Vec2 u) {

@@ -8,9 +8,10 @@ std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
   float r = std::sqrt(x * x + y * y);
   if (r >= 1.0f) return std::nullopt;
   // theta = r pi/2 and phi = atan2(y, x), whose cosine and sine are x / r and y / r.
-  float theta = r * kHalfPi;
-  float scale = r > 0.0f ? std::sin(theta) / r : 0.0f;
-  Vec3 d(x * scale, y * scale, std::cos(theta));
+  float sinTheta, cosTheta;
+  sinCosWithinQuarterTurn(r * kHalfPi, sinTheta, cosTheta);
+  float scale = r > 0.0f ? sinTheta / r : 0.0f;
+  Vec3 d(x * scale, y * scale, cosTheta);
   Ray ray;
   ray.o = d * distance_;
   ray.d = -d;
