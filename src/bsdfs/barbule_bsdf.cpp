@@ -50,18 +50,6 @@ constexpr float kMinLobeShare = 0.01f;
 
 bool given(float v) { return !std::isnan(v); }
 
-// sin and cos of |x| <= pi/2 by their Taylor polynomials of degree 11 and 12 (errors < 6e-8):
-// cheaper than the library's full-range versions at every quadrature node.
-void sinCosWithinQuarterTurn(FloatLanes x, FloatLanes& sinX, FloatLanes& cosX) {
-  FloatLanes x2 = x * x;
-  FloatLanes s = -1.0f / 39916800 + FloatLanes{};  // -1/11!
-  for (float c : {1.0f / 362880, -1.0f / 5040, 1.0f / 120, -1.0f / 6, 1.0f}) s = s * x2 + c;
-  FloatLanes k = 1.0f / 479001600 + FloatLanes{};  // 1/12!
-  for (float c : {-1.0f / 3628800, 1.0f / 40320, -1.0f / 720, 1.0f / 24, -0.5f, 1.0f}) k = k * x2 + c;
-  sinX = x * s;
-  cosX = k;
-}
-
 void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
   GaussLegendreRule rule = gaussLegendre(n);
   nodes.assign(rule.nodes.begin(), rule.nodes.end());
@@ -200,16 +188,19 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
     FloatLanes weight = offsetWeights_[group] * (weightScale * cosPsi);
     Vec2Lanes n = geometry.worldNormalsAtAngles(in.arc, sinPsi, cosPsi);
     FloatLanes projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
-    int lanes = std::min(kLaneCount, offsetNodeCount_ - int(group) * kLaneCount);
     if (thetaNodes_.size() == 1) {
       // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms of cos and
       // sin reach float precision.
       FloatLanes theta = meanLongitudinalAngles(projectedIn, in.w.y), thetaSqr = theta * theta;
       FloatLanes c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr * (1.0f / 6.0f));
       FloatLanes cosIn = projectedIn * c + in.w.y * sn, cosOut = absLanes(projectedOut * c + omegaO.y * sn);
-      for (int j = 0; j < lanes; ++j) sum += weight[j] * s.film.transmittanceProduct(cosIn[j], cosOut[j]);
+      // The film per wavelength with the nodes in lanes (padding lanes weigh 0), summed over them.
+      FloatLanes perWavelength[kSpectrumSamples];
+      for (int k = 0; k < kSpectrumSamples; ++k) perWavelength[k] = weight * s.film.transmittanceProducts(k, cosIn, cosOut);
+      sum += laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
       continue;
     }
+    int lanes = std::min(kLaneCount, offsetNodeCount_ - int(group) * kLaneCount);
     for (int j = 0; j < lanes; ++j)
       sum += weight[j] * trtLongitudinalMean(s, projectedIn[j], projectedOut[j], in.w.y, omegaO.y);
   }

@@ -21,5 +21,22 @@ inline FloatLanes sqrtLanes(FloatLanes v) {
 }
 
 inline FloatLanes absLanes(FloatLanes v) { return v < 0.0f ? -v : v; }
+inline FloatLanes clampLanes(FloatLanes v, float lo, float hi) {
+  v = v < lo ? lo + FloatLanes{} : v;
+  return v > hi ? hi + FloatLanes{} : v;
+}
+
+// {sum of a's lanes, sum of b's, sum of c's, sum of d's}.
+inline FloatLanes laneSums(FloatLanes a, FloatLanes b, FloatLanes c, FloatLanes d) {
+#if defined(__SSE__)
+  // Pairwise: (a0 + a2, b0 + b2, a1 + a3, b1 + b3), the same for c and d, then the halves.
+  __m128 ab = _mm_add_ps(_mm_unpacklo_ps(a, b), _mm_unpackhi_ps(a, b));
+  __m128 cd = _mm_add_ps(_mm_unpacklo_ps(c, d), _mm_unpackhi_ps(c, d));
+  return _mm_add_ps(_mm_movelh_ps(ab, cd), _mm_movehl_ps(cd, ab));
+#else
+  auto sum = [](FloatLanes v) { return (v[0] + v[2]) + (v[1] + v[3]); };
+  return FloatLanes{sum(a), sum(b), sum(c), sum(d)};
+#endif
+}
 
 }  // namespace columba

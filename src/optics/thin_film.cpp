@@ -76,12 +76,12 @@ FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float 
                                    const Wavelengths& wl) {
   SpectrumLanes lambda = toLanes(wl.lambda);
   SpectrumLanes eta = (film.a + film.b / (lambda * lambda)) * (1.0f / nOutside);
-  etaSqr_ = eta * eta;
-  invEtaSqr_ = 1.0f / etaSqr_;
-  etaSqrMinusOne_ = etaSqr_ - 1.0f;
-  bsSqr_ = etaSqrMinusOne_ * etaSqrMinusOne_;
+  medium_.etaSqr = eta * eta;
+  medium_.invEtaSqr = 1.0f / medium_.etaSqr;
+  medium_.etaSqrMinusOne = medium_.etaSqr - 1.0f;
+  medium_.bsSqr = medium_.etaSqrMinusOne * medium_.etaSqrMinusOne;
   // delta = 4 pi nFilm d cos(theta_film) / lambda and nFilm cos(theta_film) = nOutside q.
-  halfPhaseScale_ = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
+  medium_.halfPhaseScale = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
 }
 
 }  // namespace columba

@@ -72,13 +72,30 @@ class FreeStandingFilm {
   // Unpolarised transmittance of two crossings, 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)):
   // light entering the film at one angle and leaving it at another (one division for all four).
   SpectrumLanes transmittanceProduct(float cos1, float cos2) const;
+  // The same at the path's wavelength k for four pairs of cosines, one per lane (a quadrature's
+  // nodes).
+  FloatLanes transmittanceProducts(int k, FloatLanes cos1, FloatLanes cos2) const;
 
  private:
-  // A^2 and B^2 S of the two polarisations at one incidence cosine.
-  struct Terms {
-    SpectrumLanes aSqr, sBSqrS, pBSqrS;
+  // The film's constants, one wavelength per lane (or one wavelength in every lane).
+  struct Medium {
+    FloatLanes etaSqrMinusOne;  // eta^2 - 1, eta = nFilm / nOutside
+    FloatLanes etaSqr, invEtaSqr;
+    FloatLanes bsSqr;           // B_s^2 = (1 - eta^2)^2
+    FloatLanes halfPhaseScale;  // delta / 2 = halfPhaseScale q: 2 pi nOutside d / lambda
   };
-  Terms terms(float cosIncidence) const;
+  // A^2 and B^2 S of the two polarisations, per lane.
+  struct Terms {
+    FloatLanes aSqr, sBSqrS, pBSqrS;
+  };
+  // From the incidence cosines' squares, clamped to [1e-8, 1]: exactly grazing light would make
+  // A = 0 and, where S = 0 too, the Airy sum 0/0.
+  static Terms terms(const Medium& m, FloatLanes cSqr);
+  static FloatLanes clampedCosSqr(FloatLanes c) {
+    c = clampLanes(c, 1e-4f, 1.0f);
+    return c * c;
+  }
+  static FloatLanes product(const Terms& a, const Terms& b);
 
   // Constants of the evaluation as full vectors, defined out of line: the arithmetic then reads
   // them as memory operands, where a visible constant is re-broadcast from a scalar at each use.
@@ -102,25 +119,28 @@ class FreeStandingFilm {
     return sinY * sinY;
   }
 
-  SpectrumLanes etaSqrMinusOne_{};  // eta^2 - 1, eta = nFilm / nOutside
-  SpectrumLanes etaSqr_{}, invEtaSqr_{};
-  SpectrumLanes bsSqr_{};           // B_s^2 = (1 - eta^2)^2
-  SpectrumLanes halfPhaseScale_{};  // delta / 2 = halfPhaseScale q: 2 pi nOutside d / lambda
+  Medium medium_{};  // at the path's wavelengths
 };
 
-inline FreeStandingFilm::Terms FreeStandingFilm::terms(float cosIncidence) const {
-  // Exactly grazing light would make A = 0 and, where S = 0 too, the Airy sum 0/0.
-  float c = clampf(cosIncidence, 1e-4f, 1.0f), cSqr = c * c;
+inline FreeStandingFilm::Terms FreeStandingFilm::terms(const Medium& m, FloatLanes cSqr) {
   // The film is denser than its surroundings, so light always enters it (q^2 > 0).
-  SpectrumLanes qSqr = etaSqrMinusOne_ + cSqr;
-  SpectrumLanes S = sinSqrReduced(halfPhaseScale_ * sqrtLanes(qSqr));
-  SpectrumLanes aSqr = (4.0f * cSqr) * qSqr;
-  SpectrumLanes bp = etaSqr_ * cSqr - qSqr * invEtaSqr_;
-  return {aSqr, bsSqr_ * S, bp * bp * S};
+  FloatLanes qSqr = m.etaSqrMinusOne + cSqr;
+  FloatLanes S = sinSqrReduced(m.halfPhaseScale * sqrtLanes(qSqr));
+  FloatLanes aSqr = 4.0f * cSqr * qSqr;
+  FloatLanes bp = m.etaSqr * cSqr - qSqr * m.invEtaSqr;
+  return {aSqr, m.bsSqr * S, bp * bp * S};
+}
+
+inline FloatLanes FreeStandingFilm::product(const Terms& a, const Terms& b) {
+  // 1/2 A1^2 A2^2 (1 / (sDen1 sDen2) + 1 / (pDen1 pDen2)) with den = A^2 + B^2 S; every den is at
+  // least A^2 > 5e-8, so the product of the four stays a normal float.
+  FloatLanes sProduct = (a.aSqr + a.sBSqrS) * (b.aSqr + b.sBSqrS);
+  FloatLanes pProduct = (a.aSqr + a.pBSqrS) * (b.aSqr + b.pBSqrS);
+  return (0.5f * a.aSqr * b.aSqr) * (sProduct + pProduct) / (sProduct * pProduct);
 }
 
 inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
-  Terms t = terms(cosIncidence);
+  Terms t = terms(medium_, clampedCosSqr(cosIncidence + FloatLanes{}));
   // One division serves both polarisations.
   SpectrumLanes sDen = t.aSqr + t.sBSqrS, pDen = t.aSqr + t.pBSqrS;
   SpectrumLanes inv = 1.0f / (sDen * pDen);
@@ -128,12 +148,14 @@ inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosInci
 }
 
 inline SpectrumLanes FreeStandingFilm::transmittanceProduct(float cos1, float cos2) const {
-  Terms a = terms(cos1), b = terms(cos2);
-  // 1/2 A1^2 A2^2 (1 / (sDen1 sDen2) + 1 / (pDen1 pDen2)) with den = A^2 + B^2 S; every den is at
-  // least A^2 > 5e-8, so the product of the four stays a normal float.
-  SpectrumLanes sProduct = (a.aSqr + a.sBSqrS) * (b.aSqr + b.sBSqrS);
-  SpectrumLanes pProduct = (a.aSqr + a.pBSqrS) * (b.aSqr + b.pBSqrS);
-  return (0.5f * a.aSqr * b.aSqr) * (sProduct + pProduct) / (sProduct * pProduct);
+  return product(terms(medium_, clampedCosSqr(cos1 + FloatLanes{})), terms(medium_, clampedCosSqr(cos2 + FloatLanes{})));
+}
+
+inline FloatLanes FreeStandingFilm::transmittanceProducts(int k, FloatLanes cos1, FloatLanes cos2) const {
+  Medium m{medium_.etaSqrMinusOne[k] + FloatLanes{}, medium_.etaSqr[k] + FloatLanes{},
+           medium_.invEtaSqr[k] + FloatLanes{}, medium_.bsSqr[k] + FloatLanes{},
+           medium_.halfPhaseScale[k] + FloatLanes{}};
+  return product(terms(m, clampedCosSqr(cos1)), terms(m, clampedCosSqr(cos2)));
 }
 
 }  // namespace columba
