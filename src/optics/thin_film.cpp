@@ -67,10 +67,7 @@ namespace {
 constexpr SpectrumLanes lanes(float c) { return SpectrumLanes{c, c, c, c}; }
 }  // namespace
 
-const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {
-    lanes(1.0f / kPi), lanes(kPi), lanes(12582912.0f),
-    {lanes(-1.0f / 39916800.0f), lanes(1.0f / 362880.0f), lanes(-1.0f / 5040.0f), lanes(1.0f / 120.0f),
-     lanes(-1.0f / 6.0f), lanes(1.0f)}};
+const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {lanes(1.0f / kPi), lanes(kPi), lanes(12582912.0f)};
 
 FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {

@@ -97,25 +97,24 @@ class FreeStandingFilm {
   }
   static FloatLanes product(const Terms& a, const Terms& b);
 
-  // Constants of the evaluation as full vectors, defined out of line: the arithmetic then reads
-  // them as memory operands, where a visible constant is re-broadcast from a scalar at each use.
+  // Constants of the range reduction as full vectors, defined out of line: the arithmetic then
+  // reads them as memory operands, where a visible constant is re-broadcast from a scalar at each
+  // use.
   struct Constants {
     SpectrumLanes invPi, pi, round;
-    SpectrumLanes sinTaylor[6];  // coefficients of y^10, y^8, ..., y^0 of sin(y) / y
   };
   static const Constants kConstants;
 
   // sin^2(x) for 0 <= x up to a few hundred: sin^2 has period pi, so reduce to [-pi/2, pi/2] and
-  // use the odd Taylor polynomial of degree 11 of sin (error < 6e-8 there).
+  // use the Taylor polynomial there.
   static SpectrumLanes sinSqrReduced(SpectrumLanes x) {
     const Constants& k = kConstants;
     SpectrumLanes turns = x * k.invPi;
     SpectrumLanes whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
     SpectrumLanes y = (turns - whole) * k.pi;
-    SpectrumLanes y2 = y * y;
-    SpectrumLanes p = k.sinTaylor[0];
-    for (int i = 1; i < 6; ++i) p = p * y2 + k.sinTaylor[i];
-    SpectrumLanes sinY = y * p;
+    SpectrumLanes sinOverY, cosY;
+    sincAndCosWithinQuarterTurn(y, sinOverY, cosY);
+    SpectrumLanes sinY = y * sinOverY;
     return sinY * sinY;
   }
 

@@ -3,14 +3,15 @@
 namespace columba {
 
 std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
-  float x = 2.0f * filmPosition.x / float(film().width()) - 1.0f;
-  float y = 1.0f - 2.0f * filmPosition.y / float(film().height());
-  float r = std::sqrt(x * x + y * y);
-  if (r >= 1.0f) return std::nullopt;
-  // theta = r pi/2 and phi = atan2(y, x), whose cosine and sine are x / r and y / r.
-  float sinTheta, cosTheta;
-  sinCosWithinQuarterTurn(r * kHalfPi, sinTheta, cosTheta);
-  float scale = r > 0.0f ? sinTheta / r : 0.0f;
+  float x = filmPosition.x * xScale_ - 1.0f;
+  float y = 1.0f - filmPosition.y * yScale_;
+  float rSqr = x * x + y * y;
+  if (rSqr >= 1.0f) return std::nullopt;
+  // theta = r pi/2 and phi = atan2(y, x), whose cosine and sine are x / r and y / r:
+  // sin(theta) / r = (pi/2) sin(theta) / theta.
+  float sinOverTheta, cosTheta;
+  sincAndCosWithinQuarterTurn(std::sqrt(rSqr) * kHalfPi, sinOverTheta, cosTheta);
+  float scale = kHalfPi * sinOverTheta;
   Vec3 d(x * scale, y * scale, cosTheta);
   Ray ray;
   ray.o = d * distance_;

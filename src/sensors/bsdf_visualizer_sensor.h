@@ -10,11 +10,15 @@ namespace columba {
 class BSDFVisualizerSensor : public Sensor {
  public:
   BSDFVisualizerSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler, float distance)
-      : Sensor(std::move(film), std::move(sampler)), distance_(distance) {}
+      : Sensor(std::move(film), std::move(sampler)),
+        distance_(distance),
+        xScale_(2.0f / float(this->film().width())),
+        yScale_(2.0f / float(this->film().height())) {}
   std::optional<Ray> generateRay(Vec2 filmPosition) const override;
 
  private:
   float distance_;  // how far from the origin rays start (below the scene's lights)
+  float xScale_, yScale_;  // film pixels to the image disk's [-1, 1]
 };
 
 std::shared_ptr<Object> makeBSDFVisualizerSensor(const Properties& props);
