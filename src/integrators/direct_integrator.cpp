@@ -24,9 +24,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     Vec3 wi = hit->shading.toLocal(-dir);
 
     for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
-      float uEmitter = sampler.get1D();
-      Vec2 uLight = sampler.get2D();
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, bsdfSamples_ > 0, rays)) {
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, sampler.get2D(), bsdfSamples_ > 0, rays)) {
         float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
         L += beta * ds->value * (w / nE);
       }

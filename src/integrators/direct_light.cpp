@@ -3,12 +3,12 @@
 namespace columba {
 
 std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
-                                                   const Vec3& wiLocal, const Wavelengths& wl, float uEmitter,
-                                                   Vec2 uPosition, bool needBsdfPdf, uint64_t& rays) {
+                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
+                                                   bool needBsdfPdf, uint64_t& rays) {
   float pmf = 0.0f;
-  const Emitter* emitter = scene.sampleEmitter(uEmitter, &pmf);
+  const Emitter* emitter = scene.sampleEmitter(u.x, &pmf);
   if (!emitter) return std::nullopt;
-  auto es = emitter->sample(hit.p, uPosition, wl);
+  auto es = emitter->sample(hit.p, u, wl);
   if (!es || es->pdf <= 0.0f) return std::nullopt;
   Vec3 woLocal = hit.shading.toLocal(es->direction);
   Spectrum f = bsdf.eval(hit.bsdfContext, wiLocal, woLocal, wl);

@@ -12,11 +12,12 @@ struct DirectLightSample {
   bool deltaLight = false;
 };
 
-// nullopt when nothing was sampled or the contribution is zero (e.g. occluded). `bsdfPdf` is
-// only computed when `needBsdfPdf` (for MIS).
+// nullopt when nothing was sampled or the contribution is zero (e.g. occluded). `u.x` chooses the
+// emitter and, remapped, with `u.y` the point on it. `bsdfPdf` is only computed when
+// `needBsdfPdf` (for MIS).
 std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
-                                                   const Vec3& wiLocal, const Wavelengths& wl, float uEmitter,
-                                                   Vec2 uPosition, bool needBsdfPdf, uint64_t& rays);
+                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
+                                                   bool needBsdfPdf, uint64_t& rays);
 
 // Radiance of the emitters a ray that left `from` sees at `hit` (or at infinity if there is no
 // hit), with the density emitter sampling from `from` would have chosen that direction.

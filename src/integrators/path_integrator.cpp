@@ -32,10 +32,9 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
 
     const BSDF& bsdf = *hit->shape->bsdf;
     Vec3 wi = hit->shading.toLocal(-dir);
-    float uEmitter = sampler.get1D();
     Vec2 uLight = sampler.get2D();
     if (!bsdf.isDeltaOnly()) {
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uEmitter, uLight, true, rays))
+      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uLight, true, rays))
         L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
     }
 

@@ -112,9 +112,11 @@ Spectrum Scene::transmittance(const Ray& ray, const Wavelengths& wl, uint64_t& r
   return blocker ? Spectrum(0.0f) : result;
 }
 
-const Emitter* Scene::sampleEmitter(float u, float* pmf) const {
+const Emitter* Scene::sampleEmitter(float& u, float* pmf) const {
   if (emitters_.empty()) return nullptr;
-  size_t i = std::min(size_t(u * float(emitters_.size())), emitters_.size() - 1);
+  float scaled = u * float(emitters_.size());
+  size_t i = std::min(size_t(scaled), emitters_.size() - 1);
+  u = std::min(scaled - float(i), 0x1.fffffep-1f);
   *pmf = emitterPmf();
   return emitters_[i].get();
 }

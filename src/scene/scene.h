@@ -34,8 +34,9 @@ class Scene {
 
   const std::vector<std::shared_ptr<Emitter>>& emitters() const { return emitters_; }
   const std::vector<const Emitter*>& infiniteEmitters() const { return infiniteEmitters_; }
-  // Emitter choice for next-event estimation (uniform over emitters).
-  const Emitter* sampleEmitter(float u, float* pmf) const;
+  // Emitter choice for next-event estimation (uniform over emitters). `u` is remapped to a fresh
+  // uniform value in [0, 1) for reuse (as Mitsuba does), unchanged when there is one emitter.
+  const Emitter* sampleEmitter(float& u, float* pmf) const;
   float emitterPmf() const { return emitters_.empty() ? 0.0f : 1.0f / float(emitters_.size()); }
 
   const Sensor& sensor() const { return *sensor_; }
