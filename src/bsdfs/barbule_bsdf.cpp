@@ -177,8 +177,8 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
   // the normal turns smoothly with psi, also where the interval ends at a silhouette of omega_i.
   // The geometry of four offset nodes is evaluated at once, in SIMD lanes.
   float halfWidth = in.arc.halfWidth;
-  float psiLo = std::asin(clampf(common.lo / halfWidth, -1.0f, 1.0f));
-  float psiSpan = std::asin(clampf(common.hi / halfWidth, -1.0f, 1.0f)) - psiLo;
+  FloatLanes psiEnds = asinLanes(FloatLanes{common.lo, common.hi, 0.0f, 0.0f} / halfWidth);
+  float psiLo = psiEnds[0], psiSpan = psiEnds[1] - psiEnds[0];
   // Weights of the mean over [lo, hi] in h.
   float weightScale = halfWidth * psiSpan / length;
   SpectrumLanes sum{};

@@ -26,6 +26,16 @@ inline FloatLanes clampLanes(FloatLanes v, float lo, float hi) {
   return v > hi ? hi + FloatLanes{} : v;
 }
 
+// asin per lane for |x| <= 1 (clamped): pi/2 - sqrt(1 - |x|) P(|x|) with the degree-7 polynomial of
+// Abramowitz and Stegun 4.4.46 (error < 2e-8 before rounding), then the sign of x.
+inline FloatLanes asinLanes(FloatLanes x) {
+  FloatLanes a = clampLanes(absLanes(x), 0.0f, 1.0f), a2 = a * a, a4 = a2 * a2;
+  FloatLanes p = (1.5707963050f - 0.2145988016f * a) + a2 * (0.0889789874f - 0.0501743046f * a) +
+                 a4 * ((0.0308918810f - 0.0170881256f * a) + a2 * (0.0066700901f - 0.0012624911f * a));
+  FloatLanes magnitude = 1.5707963268f - sqrtLanes(1.0f - a) * p;
+  return x < 0.0f ? -magnitude : magnitude;
+}
+
 // {sum of a's lanes, sum of b's, sum of c's, sum of d's}.
 inline FloatLanes laneSums(FloatLanes a, FloatLanes b, FloatLanes c, FloatLanes d) {
 #if defined(__SSE__)
