@@ -6,8 +6,7 @@
 namespace columba {
 
 inline uint32_t reverseBits(uint32_t v) {
-  v = (v << 16) | (v >> 16);
-  v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
+  v = __builtin_bswap32(v);  // the byte order; then the bits within each byte
   v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
   v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
   v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
