@@ -56,17 +56,23 @@ constexpr std::array<uint8_t, kCells> segmentTable() {
 }
 constexpr std::array<uint8_t, kCells> kSegmentOfCell = segmentTable();
 
+// Each segment's slope, so that a lookup needs no division.
+constexpr std::array<float, kSamples - 1> slopeTable() {
+  std::array<float, kSamples - 1> slopes{};
+  for (int i = 0; i + 1 < kSamples; ++i)
+    slopes[i] = (kMelanin[i + 1].reflectance - kMelanin[i].reflectance) / (kMelanin[i + 1].lambda - kMelanin[i].lambda);
+  return slopes;
+}
+constexpr std::array<float, kSamples - 1> kSlope = slopeTable();
+
 }  // namespace
 
 float melaninReflectance(float lambdaNm) {
   if (!(lambdaNm > kMelanin[0].lambda)) return kMelanin[0].reflectance;
   if (lambdaNm >= kMelanin[kSamples - 1].lambda) return kMelanin[kSamples - 1].reflectance;
   int segment = kSegmentOfCell[int(lambdaNm - kMelanin[0].lambda)];
-  if (lambdaNm >= kMelanin[segment + 1].lambda) ++segment;
-  const Sample& lower = kMelanin[segment];
-  const Sample& upper = kMelanin[segment + 1];
-  float t = (lambdaNm - lower.lambda) / (upper.lambda - lower.lambda);
-  return lower.reflectance + t * (upper.reflectance - lower.reflectance);
+  segment += lambdaNm >= kMelanin[segment + 1].lambda;  // without a branch: it goes either way
+  return kMelanin[segment].reflectance + (lambdaNm - kMelanin[segment].lambda) * kSlope[segment];
 }
 
 }  // namespace columba

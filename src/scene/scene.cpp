@@ -115,10 +115,10 @@ Spectrum Scene::transmittance(const Ray& ray, const Wavelengths& wl, uint64_t& r
 const Emitter* Scene::sampleEmitter(float& u, float* pmf) const {
   if (emitters_.empty()) return nullptr;
   float scaled = u * float(emitters_.size());
-  size_t i = std::min(size_t(scaled), emitters_.size() - 1);
+  int i = std::min(int(scaled), int(emitters_.size()) - 1);
   u = std::min(scaled - float(i), 0x1.fffffep-1f);
   *pmf = emitterPmf();
-  return emitters_[i].get();
+  return emitters_[size_t(i)].get();
 }
 
 size_t Scene::primitiveCount() const {
