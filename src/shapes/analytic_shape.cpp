@@ -21,13 +21,13 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 template <bool occlusion>
 void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, RTCRay& ray, RTCHit* hit) {
   Vec3 o(ray.org_x, ray.org_y, ray.org_z), d(ray.dir_x, ray.dir_y, ray.dir_z);
-  std::optional<float> t = shape->intersectWorld(o, d, ray.tnear, ray.tfar);
-  if (!t) return;
+  float t;
+  if (!shape->intersectWorld(o, d, ray.tnear, ray.tfar, t)) return;
   if constexpr (occlusion) {
     ray.tfar = -INFINITY;
   } else {
-    Vec3 ng = shape->worldNormal(o + d * *t);
-    ray.tfar = *t;
+    Vec3 ng = shape->worldNormal(o + d * t);
+    ray.tfar = t;
     hit->Ng_x = ng.x; hit->Ng_y = ng.y; hit->Ng_z = ng.z;
     hit->u = 0; hit->v = 0;
     hit->primID = primID;

@@ -13,9 +13,11 @@ class AnalyticShape : public Shape {
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   size_t primitiveCount() const override { return 1; }
 
-  // Nearest hit parameter in (tmin, tmax) of the world ray o + t d (d not normalised). The map is
-  // affine, so t is also the parameter of the local ray.
-  virtual std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const = 0;
+  // Whether the world ray o + t d (d not normalised) hits the shape within (tmin, tmax), and the
+  // nearest such t. The map is affine, so t is also the parameter of the local ray. (A bool and an
+  // out parameter: an optional<float> return is assembled in memory, a store-forwarding stall in
+  // the hottest callback.)
+  virtual bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const = 0;
   virtual Vec3 localNormal(const Vec3& localPoint) const = 0;
   // Unit geometric normal at a world point on the shape.
   virtual Vec3 worldNormal(const Vec3& worldPoint) const { return toWorldNormal(localNormal(toLocalPoint(worldPoint))); }

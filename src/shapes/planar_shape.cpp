@@ -22,7 +22,7 @@ Vec3 PlanarShape::localCoordinates(const Vec3& p) const {
           dot(localRows_[2], p) + localOffsets_[2]};
 }
 
-std::optional<float> PlanarShape::intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const {
+bool PlanarShape::intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const {
   // The plane is where the local z vanishes: t = num / dz. Most rays that reach the shape's bounds
   // miss the plane within (tmin, tmax), which is tested before dividing.
   float dz = dot(localRows_[2], d);
@@ -31,13 +31,11 @@ std::optional<float> PlanarShape::intersectWorld(const Vec3& o, const Vec3& d, f
     dz = -dz;
     num = -num;
   }
-  if (!(num > tmin * dz && num < tmax * dz)) return std::nullopt;
-  float t = num / dz;
-  if (!(t > tmin && t < tmax)) return std::nullopt;
+  if (!(num > tmin * dz && num < tmax * dz)) return false;
+  t = num / dz;
+  if (!(t > tmin && t < tmax)) return false;
   Vec3 p = o + d * t;
-  Vec2 local(dot(localRows_[0], p) + localOffsets_[0], dot(localRows_[1], p) + localOffsets_[1]);
-  if (!contains(local)) return std::nullopt;
-  return t;
+  return contains(Vec2(dot(localRows_[0], p) + localOffsets_[0], dot(localRows_[1], p) + localOffsets_[1]));
 }
 
 SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit) const {

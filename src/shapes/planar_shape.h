@@ -11,7 +11,7 @@ class PlanarShape : public AnalyticShape {
   // `localArea`: the shape's area in its local plane.
   PlanarShape(const Transform& toWorld, bool flipNormals, float localArea);
 
-  std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
+  bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const override;
   Vec3 localNormal(const Vec3&) const override { return Vec3(0, 0, flip_ ? -1.0f : 1.0f); }
   Vec3 worldNormal(const Vec3&) const override { return frame_.n; }
   void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, 0); hi = Vec3(1, 1, 0); }

@@ -42,20 +42,26 @@ float SphereShape::pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const
   return cosMax ? uniformConePdf(*cosMax) : Shape::pdfFrom(ref, hit);
 }
 
-std::optional<float> SphereShape::intersectWorld(const Vec3& worldO, const Vec3& worldD, float tmin, float tmax) const {
+bool SphereShape::intersectWorld(const Vec3& worldO, const Vec3& worldD, float tmin, float tmax, float& t) const {
   Vec3 o = toLocalPoint(worldO), d = toLocalVector(worldD);
   // Solve |o + t d|^2 = 1 in double precision: grazing and distant rays stay accurate.
   double a = double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
   double b = 2.0 * (double(o.x) * d.x + double(o.y) * d.y + double(o.z) * d.z);
   double c = double(o.x) * o.x + double(o.y) * o.y + double(o.z) * o.z - 1.0;
   double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0 || a == 0.0) return std::nullopt;
+  if (disc < 0.0 || a == 0.0) return false;
   double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
   if (t0 > t1) std::swap(t0, t1);
-  if (t0 > tmin && t0 < tmax) return float(t0);
-  if (t1 > tmin && t1 < tmax) return float(t1);
-  return std::nullopt;
+  if (t0 > tmin && t0 < tmax) {
+    t = float(t0);
+    return true;
+  }
+  if (t1 > tmin && t1 < tmax) {
+    t = float(t1);
+    return true;
+  }
+  return false;
 }
 
 SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit) const {

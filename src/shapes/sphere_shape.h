@@ -9,7 +9,7 @@ namespace columba {
 class SphereShape : public AnalyticShape {
  public:
   SphereShape(const Transform& toWorld, bool flipNormals);
-  std::optional<float> intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax) const override;
+  bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const override;
   Vec3 localNormal(const Vec3& p) const override { return flip_ ? -p : p; }
   void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, -1); hi = Vec3(1, 1, 1); }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
