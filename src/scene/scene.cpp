@@ -112,15 +112,6 @@ Spectrum Scene::transmittance(const Ray& ray, const Wavelengths& wl, uint64_t& r
   return blocker ? Spectrum(0.0f) : result;
 }
 
-const Emitter* Scene::sampleEmitter(float& u, float* pmf) const {
-  if (emitters_.empty()) return nullptr;
-  float scaled = u * float(emitters_.size());
-  int i = std::min(int(scaled), int(emitters_.size()) - 1);
-  u = std::min(scaled - float(i), 0x1.fffffep-1f);
-  *pmf = emitterPmf();
-  return emitters_[size_t(i)].get();
-}
-
 size_t Scene::primitiveCount() const {
   size_t n = 0;
   for (const auto& s : shapes_) n += s->primitiveCount();

@@ -36,7 +36,15 @@ class Scene {
   const std::vector<const Emitter*>& infiniteEmitters() const { return infiniteEmitters_; }
   // Emitter choice for next-event estimation (uniform over emitters). `u` is remapped to a fresh
   // uniform value in [0, 1) for reuse (as Mitsuba does), unchanged when there is one emitter.
-  const Emitter* sampleEmitter(float& u, float* pmf) const;
+  // Inline: `u` is usually half of a Vec2 that would otherwise be reloaded from memory.
+  const Emitter* sampleEmitter(float& u, float* pmf) const {
+    if (emitters_.empty()) return nullptr;
+    float scaled = u * float(emitters_.size());
+    int i = std::min(int(scaled), int(emitters_.size()) - 1);
+    u = std::min(scaled - float(i), 0x1.fffffep-1f);
+    *pmf = emitterPmf();
+    return emitters_[size_t(i)].get();
+  }
   float emitterPmf() const { return emitters_.empty() ? 0.0f : 1.0f / float(emitters_.size()); }
 
   const Sensor& sensor() const { return *sensor_; }
