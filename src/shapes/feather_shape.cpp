@@ -108,9 +108,16 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     gather(ply.barbuleMu, ply.barbIndices);
     gather(ply.barbuleHeight, ply.barbIndices);
   }
-  barbuleH_ = std::move(ply.barbuleH);
-  barbuleMu_ = std::move(ply.barbuleMu);
-  barbuleHeight_ = std::move(ply.barbuleHeight);
+  if (!ply.barbuleH.empty() || !ply.barbuleMu.empty() || !ply.barbuleHeight.empty()) {
+    // Interleaved, so that a hit reads its parameters from one place; NaN where the file lacks one.
+    constexpr float kMissing = std::numeric_limits<float>::quiet_NaN();
+    barbuleParams_.resize(ply.positions.size());
+    tbb::parallel_for(size_t(0), barbuleParams_.size(), [&](size_t i) {
+      barbuleParams_[i] = {ply.barbuleH.empty() ? kMissing : ply.barbuleH[i],
+                           ply.barbuleMu.empty() ? kMissing : ply.barbuleMu[i],
+                           ply.barbuleHeight.empty() ? kMissing : ply.barbuleHeight[i]};
+    });
+  }
 
   const float scale = linearScale(toWorld);
   const float halfWidth = 0.5f * params.barbWidth * scale;
@@ -210,19 +217,20 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
     t = s.axis * cosSpan_ + outward * sinSpan_;
   }
   si.shading = Frame(cross(t, si.ng), t, si.ng);
-  const size_t v0 = barb * kBarbVertices + size_t(seg);
-  auto interpolate = [&](const std::vector<float>& values) {
-    return values.empty() ? std::numeric_limits<float>::quiet_NaN() : lerp(along, values[v0], values[v0 + 1]);
-  };
-  si.bsdfContext.barbuleH = interpolate(barbuleH_);
-  si.bsdfContext.barbuleMu = interpolate(barbuleMu_);
-  si.bsdfContext.barbuleHeight = interpolate(barbuleHeight_);
+  if (barbuleParams_.empty()) {
+    si.bsdfContext.barbuleH = si.bsdfContext.barbuleMu = si.bsdfContext.barbuleHeight =
+        std::numeric_limits<float>::quiet_NaN();
+  } else {
+    const BarbuleParameters* v = &barbuleParams_[barb * kBarbVertices + size_t(seg)];
+    si.bsdfContext.barbuleH = lerp(along, v[0].h, v[1].h);
+    si.bsdfContext.barbuleMu = lerp(along, v[0].mu, v[1].mu);
+    si.bsdfContext.barbuleHeight = lerp(along, v[0].height, v[1].height);
+  }
   return si;
 }
 
 size_t FeatherShape::memoryBytes() const {
-  return strips_.capacity() * sizeof(PackedStrip) +
-         (barbuleH_.capacity() + barbuleMu_.capacity() + barbuleHeight_.capacity()) * sizeof(float);
+  return strips_.capacity() * sizeof(PackedStrip) + barbuleParams_.capacity() * sizeof(BarbuleParameters);
 }
 
 }  // namespace columba

@@ -81,7 +81,10 @@ class FeatherShape : public Shape {
   // vertices are not kept: strip() recovers the mitre planes from the neighbours' axes.
   std::vector<PackedStrip> strips_;
   std::array<StripProfile, kBarbSegments> profiles_;  // by segment index: all barbs taper alike
-  std::vector<float> barbuleH_, barbuleMu_, barbuleHeight_;  // per vertex, or empty
+  struct BarbuleParameters {
+    float h, mu, height;  // NaN where the file lacks one
+  };
+  std::vector<BarbuleParameters> barbuleParams_;  // per vertex, or empty when the file has none
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };
