@@ -1,5 +1,7 @@
 #include "shapes/analytic_shape.h"
 
+#include "shapes/embree_user_geometry.h"
+
 namespace columba {
 
 namespace {
@@ -51,16 +53,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
 }  // namespace
 
 unsigned AnalyticShape::addToEmbree(RTCDevice device, RTCScene scene) const {
-  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(geom, 1);
-  rtcSetGeometryUserData(geom, const_cast<AnalyticShape*>(this));
-  rtcSetGeometryBoundsFunction(geom, boundsCallback, nullptr);
-  rtcSetGeometryIntersectFunction(geom, intersectCallback);
-  rtcSetGeometryOccludedFunction(geom, occludedCallback);
-  rtcCommitGeometry(geom);
-  unsigned id = rtcAttachGeometry(scene, geom);
-  rtcReleaseGeometry(geom);
-  return id;
+  return attachUserGeometry(device, scene, 1, this, boundsCallback, intersectCallback, occludedCallback);
 }
 
 }  // namespace columba

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include "shapes/embree_user_geometry.h"
 
 namespace columba {
 
@@ -183,19 +184,11 @@ BarbStrip FeatherShape::strip(size_t primID) const {
 }
 
 unsigned FeatherShape::addToEmbree(RTCDevice device, RTCScene scene) const {
-  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(geom, unsigned(primitiveCount()));
-  rtcSetGeometryUserData(geom, const_cast<FeatherShape*>(this));
-  rtcSetGeometryBoundsFunction(geom, boundsCallback, nullptr);
-  rtcSetGeometryIntersectFunction(geom, intersectCallback);
-  rtcSetGeometryOccludedFunction(geom, occludedCallback);
   // No build quality of its own: in a scene without instancing Embree builds user geometry as
   // the scene's quality says, and for it MEDIUM and HIGH build the same SAH tree (LOW's Morton
   // tree builds faster but costs half again as much traversal on the neck).
-  rtcCommitGeometry(geom);
-  unsigned id = rtcAttachGeometry(scene, geom);
-  rtcReleaseGeometry(geom);
-  return id;
+  return attachUserGeometry(device, scene, unsigned(primitiveCount()), this, boundsCallback, intersectCallback,
+                            occludedCallback);
 }
 
 SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hit) const {
