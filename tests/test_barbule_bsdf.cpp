@@ -353,6 +353,29 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
   }
 }
 
+TEST(BarbuleBSDF, EvalPdfIsEvalAndPdfTogether) {
+  BSDFContext overridden;
+  overridden.barbuleH = 1.6f;
+  overridden.barbuleMu = -0.2f;
+  for (const BSDFContext& ctx : {BSDFContext{}, overridden})
+    for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
+      BarbuleBSDF bsdf(reference(0.58f), role);
+      PCG32 rng(37);
+      int nonZero = 0;
+      for (int i = 0; i < 5000; ++i) {
+        // Both directions on the whole sphere: the evaluation twin reflects toward a camera below too.
+        Vec3 wi = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+        Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+        BSDFEvalPdf both = bsdf.evalPdf(ctx, wi, wo, kWavelengths);
+        Spectrum f = bsdf.eval(ctx, wi, wo, kWavelengths);
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.value[k], f[k]);
+        ASSERT_EQ(both.pdf, bsdf.pdf(ctx, wi, wo, kWavelengths));
+        nonZero += !f.isZero();
+      }
+      EXPECT_GT(nonZero, 500);
+    }
+}
+
 TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
   const BSDFContext ctx;
   for (const ParameterSet& set : parameterSets()) {

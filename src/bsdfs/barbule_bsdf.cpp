@@ -127,8 +127,8 @@ BarbuleBSDF::Shading::Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, c
 
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
   if (!given(ctx.barbuleH) && !given(ctx.barbuleMu)) return std::nullopt;
-  return BarbuleCrossSection(params_.b, params_.phi0, params_.phi1, given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
-                             given(ctx.barbuleH) ? ctx.barbuleH : params_.H);
+  return geometry_.withTiltAndSpacing(given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
+                                      given(ctx.barbuleH) ? ctx.barbuleH : params_.H);
 }
 
 BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w) const {
@@ -139,8 +139,8 @@ BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w, con
   Incident in;
   in.w = w;
   in.plane = inPlane(w);
+  in.arc = arc;  // also below the vane, where it is the arc seen by an outgoing direction
   if (!(w.z > 0.0f) || !(in.plane.cosTheta > 0.0f)) return in;
-  in.arc = arc;
   in.coverage = s.geometry.coverage(in.arc, in.plane.dir);
   in.scatters = in.arc.width() > 0.0f && in.coverage > 0.0f;
   return in;
@@ -301,9 +301,15 @@ Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const V
 Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   Shading s(*this, ctx, wl);
   LitArc wiArc = s.geometry.litArc(inPlane(wi).dir), woArc = s.geometry.litArc(inPlane(wo).dir);
-  Lobes l = role_ == Role::CameraIncident ? lobes(s, incident(s, wi, wiArc), wo, woArc)
-                                          : lobes(s, incident(s, wo, woArc), wi, wiArc);
-  return (l.reflection + l.trt) * std::abs(wo.z);
+  return evalWith(s, incident(s, wi, wiArc), wo, woArc);
+}
+
+BSDFEvalPdf BarbuleBSDF::evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  Shading s(*this, ctx, wl);
+  LitArc wiArc = s.geometry.litArc(inPlane(wi).dir), woArc = s.geometry.litArc(inPlane(wo).dir);
+  Incident fromWi = incident(s, wi, wiArc);
+  if (!fromWi.scatters) return {evalWith(s, fromWi, wo, woArc), 0.0f};
+  return {evalWith(s, fromWi, wo, woArc), samplingPdf(s, fromWi, lobeChoice(s, fromWi), wo, woArc)};
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {

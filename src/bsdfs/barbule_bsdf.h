@@ -55,10 +55,12 @@ struct BarbuleParameters {
 // error of the TRT lobe over outgoing directions of about 0.7 % on average and 3 % at worst
 // (grazing incidence, where the film's transmission changes fast along the arc); 8 x 2 reaches
 // 0.1 % / 0.6 % at four times the cost. The sampling density does not depend on these counts.
+// The lobe-selection estimate only steers sampling (pdf() repeats it exactly): one node, the
+// middle of the lit offsets, costs a third of three and leaves the samples' weights bounded.
 struct BarbuleQuadrature {
   int offsetNodes = 4;
   int thetaNodes = 1;
-  int lobeEstimateNodes = 3;
+  int lobeEstimateNodes = 1;
 };
 
 class BarbuleBSDF : public BSDF {
@@ -70,6 +72,7 @@ class BarbuleBSDF : public BSDF {
 
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;

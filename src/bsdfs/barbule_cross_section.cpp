@@ -5,13 +5,12 @@
 namespace columba {
 
 BarbuleCrossSection::BarbuleCrossSection(float b, float phi0, float phi1, float mu, float H)
-    : b_(b), bSqr_(b * b), invBSqr_(1.0f / (b * b)), cosMu_(std::cos(mu)), sinMu_(std::sin(mu)) {
+    : b_(b), bSqr_(b * b), invBSqr_(1.0f / (b * b)) {
   if (!(b > 0.0f)) throw std::invalid_argument("the barbule cross-section needs b > 0");
   float arcWidth = phi1 - phi0;
   if (!(arcWidth > 0.0f && (arcWidth <= kPi + 1e-6f || arcWidth >= kTwoPi)))
     throw std::invalid_argument("the reflective arc phi_1 - phi_0 must lie in (0, pi] or cover the whole ellipse");
-  H_ = std::max(H, contactSpacing(b, mu));
-  neighbour_ = toLocal({0.0f, H_});
+  setTiltAndSpacing(mu, H);
   wholeEllipse_ = arcWidth >= kTwoPi;
   arcStartNormal_ = {std::cos(phi0), std::sin(phi0)};
   arcEndNormal_ = {std::cos(phi1), std::sin(phi1)};
@@ -23,6 +22,20 @@ float BarbuleCrossSection::contactSpacing(float b, float mu) {
   // The neighbour's offset (0, H) in the local frame is H (sin mu, cos mu); its half lies on the
   // ellipse when (H/2)^2 (sin^2 mu / b^2 + cos^2 mu) = 1.
   return 2.0f / std::sqrt(sqr(std::sin(mu) / b) + sqr(std::cos(mu)));
+}
+
+void BarbuleCrossSection::setTiltAndSpacing(float mu, float H) {
+  cosMu_ = std::cos(mu);
+  sinMu_ = std::sin(mu);
+  H_ = std::max(H, 2.0f / std::sqrt(sinMu_ * sinMu_ * invBSqr_ + cosMu_ * cosMu_));  // contactSpacing(b, mu)
+  neighbour_ = toLocal({0.0f, H_});
+}
+
+BarbuleCrossSection BarbuleCrossSection::withTiltAndSpacing(float mu, float H) const {
+  // The arc's normals and points live in the ellipse's own frame: only the tilt and spacing change.
+  BarbuleCrossSection tilted = *this;
+  tilted.setTiltAndSpacing(mu, H);
+  return tilted;
 }
 
 Vec2 BarbuleCrossSection::pointWithNormal(Vec2 n) const {

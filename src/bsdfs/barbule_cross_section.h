@@ -51,6 +51,9 @@ class BarbuleCrossSection {
   // whole ellipse reflects). H below the contact spacing would make neighbours interpenetrate;
   // it is raised to it (barbules packed edge to edge).
   BarbuleCrossSection(float b, float phi0, float phi1, float mu, float H);
+  // The same barbule (b and arc) with another tilt and spacing: a feather's per-point values. Costs
+  // one sine and cosine, where building from scratch costs five.
+  BarbuleCrossSection withTiltAndSpacing(float mu, float H) const;
 
   // Smallest spacing at which two neighbouring ellipses do not overlap: translates K and K + w of
   // a centrally symmetric convex K overlap iff w/2 lies inside K.
@@ -99,6 +102,9 @@ class BarbuleCrossSection {
     float inv = 1.0f / std::sqrt(v.x * v.x + v.y * v.y);
     return {v.x * inv, v.y * inv};
   }
+
+  // Sets mu and H and what follows from them.
+  void setTiltAndSpacing(float mu, float H);
 
   float b_, bSqr_, invBSqr_, H_;
   float cosMu_, sinMu_;

@@ -28,12 +28,21 @@ struct BSDFSample {
   bool passThrough = false;
 };
 
+struct BSDFEvalPdf {
+  Spectrum value;  // eval()
+  float pdf = 0.0f;  // pdf()
+};
+
 class BSDF : public Object {
  public:
   // f(wi, wo) * |cos(wo)| of the non-delta components.
   virtual Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
   // Density of `sample` producing `wo`, non-delta components only (solid angle).
   virtual float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
+  // Both at once (emitter sampling with MIS needs both): models share the work of the two.
+  virtual BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+    return {eval(ctx, wi, wo, wl), pdf(ctx, wi, wo, wl)};
+  }
   // `uComponent` picks a component, `u` drives it. nullopt = absorbed / rejected.
   virtual std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                            float uComponent, Vec2 u) const = 0;

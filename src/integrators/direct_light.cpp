@@ -11,8 +11,10 @@ std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const Sur
   auto es = emitter->sample(hit.p, u, wl);
   if (!es || es->pdf <= 0.0f) return std::nullopt;
   Vec3 woLocal = hit.shading.toLocal(es->direction);
-  Spectrum f = bsdf.eval(hit.bsdfContext, wiLocal, woLocal, wl);
-  if (f.isZero()) return std::nullopt;
+  bool mis = !emitter->isDelta() && needBsdfPdf;
+  BSDFEvalPdf f = mis ? bsdf.evalPdf(hit.bsdfContext, wiLocal, woLocal, wl)
+                      : BSDFEvalPdf{bsdf.eval(hit.bsdfContext, wiLocal, woLocal, wl), 0.0f};
+  if (f.value.isZero()) return std::nullopt;
   Ray shadow = std::isfinite(es->distance) ? hit.spawnRayTo(hit.p + es->direction * es->distance)
                                            : hit.spawnRay(es->direction);
   Spectrum tr = scene.transmittance(shadow, wl, rays);
@@ -20,8 +22,8 @@ std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const Sur
   DirectLightSample s;
   s.lightPdf = es->pdf * pmf;
   s.deltaLight = emitter->isDelta();
-  s.bsdfPdf = (s.deltaLight || !needBsdfPdf) ? 0.0f : bsdf.pdf(hit.bsdfContext, wiLocal, woLocal, wl);
-  s.value = f * es->radiance * tr / s.lightPdf;
+  s.bsdfPdf = f.pdf;
+  s.value = f.value * es->radiance * tr / s.lightPdf;
   return s;
 }
 
