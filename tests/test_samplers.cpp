@@ -7,9 +7,11 @@
 #include <tuple>
 #include <vector>
 #include "chi_square.h"
+#include "render/samplers/hashed_permutation.h"
 #include "render/samplers/independent_sampler.h"
 #include "render/samplers/low_discrepancy_sampler.h"
 #include "render/samplers/multijitter_sampler.h"
+#include "render/samplers/sobol.h"
 #include "render/samplers/stratified_sampler.h"
 #include "scene/properties.h"
 
@@ -313,4 +315,38 @@ TEST(SamplerIntegration, LowDiscrepancyBeatsIndependent) {
                                                             << rmsError["independent"];
   // Independent sampling itself is unbiased with the expected O(1/sqrt(n)) error.
   EXPECT_LT(rmsError["independent"], 0.05);
+}
+
+TEST(SobolSequence, SecondDimensionMatchesItsGeneratorMatrix) {
+  // Columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1); the point is the xor of the columns of the
+  // index's set bits, here compared with its bits reversed.
+  uint32_t columns[32];
+  columns[0] = 1u << 31;
+  for (int k = 1; k < 32; ++k) columns[k] = columns[k - 1] ^ (columns[k - 1] >> 1);
+  auto direct = [&](uint32_t index) {
+    uint32_t v = 0;
+    for (int k = 0; k < 32; ++k)
+      if (index >> k & 1u) v ^= columns[k];
+    return v;
+  };
+  for (uint32_t index = 0; index < 4096; ++index) ASSERT_EQ(reverseBits(sobolDimension1Reversed(index)), direct(index));
+  uint32_t x = 12345;
+  for (int i = 0; i < 100000; ++i) {
+    x = x * 1664525u + 1013904223u;
+    ASSERT_EQ(reverseBits(sobolDimension1Reversed(x)), direct(x)) << x;
+  }
+}
+
+TEST(HashedPermutation, PowerOfTwoShortcutIsTheSamePermutation) {
+  for (uint32_t n : {1u, 2u, 16u, 64u, 1024u})
+    for (uint32_t seed : {0u, 7u, 0x9e3779b9u, 0xdeadbeefu}) {
+      std::set<uint32_t> seen;
+      for (uint32_t i = 0; i < n; ++i) {
+        uint32_t p = permutationElementPowerOfTwo(i, n - 1, seed);
+        ASSERT_EQ(p, permutationElement(i, n, seed));
+        seen.insert(p);
+      }
+      EXPECT_EQ(seen.size(), n);
+      EXPECT_LT(*seen.rbegin(), n);
+    }
 }

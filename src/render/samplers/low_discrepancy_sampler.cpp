@@ -12,14 +12,14 @@ void LowDiscrepancySampler::startPixelSample(int px, int py, int sampleIndex, ui
 
 float LowDiscrepancySampler::get1D() {
   uint64_t hash = state_.nextDimensionHash();
-  uint32_t index = permutationElement(state_.index, uint32_t(sampleCount_), uint32_t(hash));
+  uint32_t index = permutationElementPowerOfTwo(state_.index, uint32_t(sampleCount_) - 1, uint32_t(hash));
   // Dimension 0 of the sequence, bit-reversed, is the index itself.
   return fractionToFloat(owenScrambleReversed(index, uint32_t(hash >> 32)));
 }
 
 Vec2 LowDiscrepancySampler::get2D() {
   uint64_t hash = state_.nextDimensionHash();
-  uint32_t index = permutationElement(state_.index, uint32_t(sampleCount_), uint32_t(hash));
+  uint32_t index = permutationElementPowerOfTwo(state_.index, uint32_t(sampleCount_) - 1, uint32_t(hash));
   uint64_t scrambleSeeds = mixBits(hash);
   return {fractionToFloat(owenScrambleReversed(index, uint32_t(scrambleSeeds))),
           fractionToFloat(owenScrambleReversed(sobolDimension1Reversed(index), uint32_t(scrambleSeeds >> 32)))};

@@ -16,13 +16,35 @@ inline uint32_t reverseBits(uint32_t v) {
 // Both dimensions are generated with their bits reversed, the order in which Owen scrambling
 // works. Dimension 0 (the van der Corput radical inverse) reversed is the index itself.
 // Dimension 1 has the generator columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's
-// triangle mod 2); reversed, r_0 = 1, r_k = r_{k-1} ^ (r_{k-1} << 1), xor-ed together for the set
-// bits of the index.
+// triangle mod 2); reversed, r_k holds the coefficients of (1 + x)^k over GF(2), xor-ed together
+// for the set bits of the index.
+namespace detail {
+// r_k summed over the set bits k of a byte.
+struct SobolDimension1ByteTable {
+  uint32_t value[256];
+  constexpr SobolDimension1ByteTable() : value() {
+    for (uint32_t byte = 0; byte < 256; ++byte) {
+      uint32_t sum = 0, r = 1;
+      for (uint32_t bits = byte; bits != 0; bits >>= 1, r ^= r << 1)
+        if (bits & 1u) sum ^= r;
+      value[byte] = sum;
+    }
+  }
+};
+inline constexpr SobolDimension1ByteTable kSobolDimension1Bytes{};
+}  // namespace detail
+
 inline uint32_t sobolDimension1Reversed(uint32_t index) {
-  uint32_t result = 0;
-  for (uint32_t r = 1; index != 0; index >>= 1, r ^= r << 1)
-    if (index & 1u) result ^= r;
-  return result;
+  // Byte j of the index contributes (1 + x)^(8j) times its byte's sum, and over GF(2)
+  // (1 + x)^8 = 1 + x^8, (1 + x)^16 = 1 + x^16: multiplications become shifted xors.
+  const uint32_t* table = detail::kSobolDimension1Bytes.value;
+  uint32_t b0 = table[index & 0xffu], b1 = table[(index >> 8) & 0xffu];
+  uint32_t b2 = table[(index >> 16) & 0xffu], b3 = table[index >> 24];
+  b1 ^= b1 << 8;
+  b2 ^= b2 << 16;
+  b3 ^= b3 << 8;
+  b3 ^= b3 << 16;
+  return b0 ^ b1 ^ b2 ^ b3;
 }
 
 // Nested uniform (Owen) scrambling (Burley 2020, "Practical Hash-based Owen Scrambling", after
