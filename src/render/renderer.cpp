@@ -46,7 +46,9 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
           if (stopRequested()) return;  // checked per pixel: Ctrl-C answers quickly at any spp
           double sum[3] = {0, 0, 0};
-          for (int s = 0; s < spp; ++s) {
+          const float reach = film.filter().radius();
+          const bool seen = sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
+          for (int s = 0; seen && s < spp; ++s) {
             sampler->startPixelSample(x, y, s, settings.seed);
             Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
             Vec2 offset = film.filter().sample(sampler->get2D());

@@ -19,6 +19,14 @@ std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
   return ray;
 }
 
+bool BSDFVisualizerSensor::seesAnyOf(Vec2 lo, Vec2 hi) const {
+  // The point of the rectangle nearest the disk's centre, in the disk's coordinates.
+  float x0 = lo.x * xScale_ - 1.0f, x1 = hi.x * xScale_ - 1.0f;
+  float y0 = 1.0f - hi.y * yScale_, y1 = 1.0f - lo.y * yScale_;
+  float x = clampf(0.0f, x0, x1), y = clampf(0.0f, y0, y1);
+  return x * x + y * y < 1.0f;
+}
+
 std::shared_ptr<Object> makeBSDFVisualizerSensor(const Properties& props) {
   float distance = props.getFloat("distance", 0.1f);
   if (!(distance > 0.0f)) throw props.error("distance", "distance must be positive");

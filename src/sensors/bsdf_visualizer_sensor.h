@@ -15,6 +15,7 @@ class BSDFVisualizerSensor : public Sensor {
         xScale_(2.0f / float(this->film().width())),
         yScale_(2.0f / float(this->film().height())) {}
   std::optional<Ray> generateRay(Vec2 filmPosition) const override;
+  bool seesAnyOf(Vec2 lo, Vec2 hi) const override;
 
  private:
   float distance_;  // how far from the origin rays start (below the scene's lights)

@@ -14,6 +14,9 @@ class Sensor : public Object {
       : film_(std::move(film)), sampler_(std::move(sampler)) {}
   // `filmPosition` in pixels, (0, 0) the top-left corner of the image. nullopt: no ray (black).
   virtual std::optional<Ray> generateRay(Vec2 filmPosition) const = 0;
+  // Whether generateRay may return a ray anywhere in the film rectangle [lo, hi]: the renderer
+  // skips pixels whose filter footprint lies wholly where the sensor sees nothing.
+  virtual bool seesAnyOf(Vec2 /*lo*/, Vec2 /*hi*/) const { return true; }
   const Film& film() const { return *film_; }
   const Sampler& sampler() const { return *sampler_; }
 
