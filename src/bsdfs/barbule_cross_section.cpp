@@ -18,16 +18,22 @@ BarbuleCrossSection::BarbuleCrossSection(float b, float phi0, float phi1, float 
   arcEndPoint_ = pointWithNormal(arcEndNormal_);
 }
 
+namespace {
+// The neighbour's offset (0, H) in the local frame is H (sin mu, cos mu); its half lies on the
+// ellipse when (H/2)^2 (sin^2 mu / b^2 + cos^2 mu) = 1.
+float contactSpacingOf(float cosMu, float sinMu, float invBSqr) {
+  return 2.0f / std::sqrt(sinMu * sinMu * invBSqr + cosMu * cosMu);
+}
+}  // namespace
+
 float BarbuleCrossSection::contactSpacing(float b, float mu) {
-  // The neighbour's offset (0, H) in the local frame is H (sin mu, cos mu); its half lies on the
-  // ellipse when (H/2)^2 (sin^2 mu / b^2 + cos^2 mu) = 1.
-  return 2.0f / std::sqrt(sqr(std::sin(mu) / b) + sqr(std::cos(mu)));
+  return contactSpacingOf(std::cos(mu), std::sin(mu), 1.0f / (b * b));
 }
 
 void BarbuleCrossSection::setTiltAndSpacing(float mu, float H) {
   cosMu_ = std::cos(mu);
   sinMu_ = std::sin(mu);
-  H_ = std::max(H, 2.0f / std::sqrt(sinMu_ * sinMu_ * invBSqr_ + cosMu_ * cosMu_));  // contactSpacing(b, mu)
+  H_ = std::max(H, contactSpacingOf(cosMu_, sinMu_, invBSqr_));
   neighbour_ = toLocal({0.0f, H_});
 }
 
