@@ -1,8 +1,7 @@
 #pragma once
 // Flat shapes in the local plane z = 0 within [-1, 1]^2, facing +z (or -z with `flip_normals`),
 // placed by an affine `to_world`: `disk` and `rectangle`. They are intersected exactly, as
-// Mitsuba 3 does (the rectangle as Embree's own quad, the disk by its own intersector), and share
-// one flat shading frame (s along the local x axis, dp/du).
+// Mitsuba 3 does, and share one flat shading frame (s along the local x axis, dp/du).
 #include "shapes/analytic_shape.h"
 
 namespace columba {
@@ -21,8 +20,6 @@ class PlanarShape : public AnalyticShape {
   PositionSample samplePosition(Vec2 u) const override;
 
  protected:
-  // The world point at local (x, y, 0).
-  Vec3 worldPoint(Vec2 local) const { return origin_ + axisX_ * local.x + axisY_ * local.y; }
   // Whether the local point (x, y) of the plane belongs to the shape.
   virtual bool contains(Vec2 local) const = 0;
   virtual Vec2 uvAt(Vec2 local) const = 0;
@@ -32,6 +29,8 @@ class PlanarShape : public AnalyticShape {
  private:
   // Local coordinates of a world point (worldToLocal_ in single precision, as rays are).
   Vec3 localCoordinates(const Vec3& p) const;
+  // The world point at local (x, y, 0).
+  Vec3 worldPoint(Vec2 local) const { return origin_ + axisX_ * local.x + axisY_ * local.y; }
 
   bool flip_;
   float area_;

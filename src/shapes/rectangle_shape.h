@@ -8,8 +8,6 @@ namespace columba {
 class RectangleShape : public PlanarShape {
  public:
   RectangleShape(const Transform& toWorld, bool flipNormals) : PlanarShape(toWorld, flipNormals, 4.0f) {}
-  // A parallelogram is one of Embree's own quads: rays meet it without a user-geometry callback.
-  unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
 
  protected:
   bool contains(Vec2 local) const override { return std::abs(local.x) <= 1.0f && std::abs(local.y) <= 1.0f; }
