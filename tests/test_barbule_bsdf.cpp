@@ -376,6 +376,39 @@ TEST(BarbuleBSDF, EvalPdfIsEvalAndPdfTogether) {
     }
 }
 
+TEST(BarbuleBSDF, VertexQueriesAreEvalPdfAndSampleTogether) {
+  BSDFContext overridden;
+  overridden.barbuleH = 1.6f;
+  overridden.barbuleMu = -0.2f;
+  for (const BSDFContext& ctx : {BSDFContext{}, overridden})
+    for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
+      BarbuleBSDF bsdf(reference(0.58f), role);
+      PCG32 rng(43);
+      int sampled = 0;
+      for (int i = 0; i < 5000; ++i) {
+        Vec3 wi = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+        Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+        float uComponent = rng.nextFloat();
+        Vec2 u(rng.nextFloat(), rng.nextFloat());
+        BSDFVertexQueries both = bsdf.evalPdfAndSample(ctx, wi, i % 2 ? &wo : nullptr, kWavelengths, uComponent, u);
+        BSDFEvalPdf expected = i % 2 ? bsdf.evalPdf(ctx, wi, wo, kWavelengths) : BSDFEvalPdf{};
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.toLight.value[k], expected.value[k]);
+        ASSERT_EQ(both.toLight.pdf, expected.pdf);
+        std::optional<BSDFSample> alone = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
+        ASSERT_EQ(both.sampled.has_value(), alone.has_value());
+        if (!alone) continue;
+        ++sampled;
+        EXPECT_EQ(both.sampled->wo.x, alone->wo.x);
+        EXPECT_EQ(both.sampled->wo.y, alone->wo.y);
+        EXPECT_EQ(both.sampled->wo.z, alone->wo.z);
+        EXPECT_EQ(both.sampled->pdf, alone->pdf);
+        EXPECT_EQ(both.sampled->passThrough, alone->passThrough);
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.sampled->weight[k], alone->weight[k]);
+      }
+      EXPECT_GT(sampled, 2000);
+    }
+}
+
 TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
   const BSDFContext ctx;
   for (const ParameterSet& set : parameterSets()) {

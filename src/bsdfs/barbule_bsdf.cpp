@@ -304,12 +304,16 @@ Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& w
   return evalWith(s, incident(s, wi, wiArc), wo, woArc);
 }
 
+BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice,
+                                     const Vec3& wo) const {
+  LitArc woArc = s.geometry.litArc(inPlane(wo).dir);
+  return {evalWith(s, fromWi, wo, woArc), samplingPdf(s, fromWi, choice, wo, woArc)};
+}
+
 BSDFEvalPdf BarbuleBSDF::evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   Shading s(*this, ctx, wl);
-  LitArc wiArc = s.geometry.litArc(inPlane(wi).dir), woArc = s.geometry.litArc(inPlane(wo).dir);
-  Incident fromWi = incident(s, wi, wiArc);
-  if (!fromWi.scatters) return {evalWith(s, fromWi, wo, woArc), 0.0f};
-  return {evalWith(s, fromWi, wo, woArc), samplingPdf(s, fromWi, lobeChoice(s, fromWi), wo, woArc)};
+  Incident in = incident(s, wi);
+  return evalPdfWith(s, in, lobeChoice(s, in), wo);
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -322,10 +326,22 @@ float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, c
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                               float uComponent, Vec2 u) const {
   Shading s(*this, ctx, wl);
-  const BarbuleCrossSection& geometry = s.geometry;
+  Incident in = incident(s, wi);
+  return sampleWith(s, in, lobeChoice(s, in), uComponent, u);
+}
+
+BSDFVertexQueries BarbuleBSDF::evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight,
+                                                const Wavelengths& wl, float uComponent, Vec2 u) const {
+  Shading s(*this, ctx, wl);
   Incident in = incident(s, wi);
   LobeChoice choice = lobeChoice(s, in);
+  return {woLight ? evalPdfWith(s, in, choice, *woLight) : BSDFEvalPdf{}, sampleWith(s, in, choice, uComponent, u)};
+}
 
+std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice,
+                                                  float uComponent, Vec2 u) const {
+  const BarbuleCrossSection& geometry = s.geometry;
+  const Vec3& wi = in.w;
   BSDFSample bs;
   if (uComponent < choice.transmission) {
     float t = in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, wi);

@@ -73,6 +73,8 @@ class BarbuleBSDF : public BSDF {
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  BSDFVertexQueries evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight, const Wavelengths& wl,
+                                     float uComponent, Vec2 u) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
@@ -111,6 +113,10 @@ class BarbuleBSDF : public BSDF {
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
                     const LitArc& outArc) const;
+  // evalPdf and sample once the geometry, film, omega_i's incident quantities and lobe choice are known.
+  BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo) const;
+  std::optional<BSDFSample> sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice, float uComponent,
+                                       Vec2 u) const;
   // f |cos wo| for the role; `fromWi` = incident(s, wi), `outArc` = wo's lit arc.
   Spectrum evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const;
 

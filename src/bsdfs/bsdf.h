@@ -33,6 +33,13 @@ struct BSDFEvalPdf {
   float pdf = 0.0f;  // pdf()
 };
 
+// What a path vertex asks of its BSDF: the value and density toward a light sample, and a sampled
+// continuation.
+struct BSDFVertexQueries {
+  BSDFEvalPdf toLight;
+  std::optional<BSDFSample> sampled;
+};
+
 class BSDF : public Object {
  public:
   // f(wi, wo) * |cos(wo)| of the non-delta components.
@@ -42,6 +49,12 @@ class BSDF : public Object {
   // Both at once (emitter sampling with MIS needs both): models share the work of the two.
   virtual BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
     return {eval(ctx, wi, wo, wl), pdf(ctx, wi, wo, wl)};
+  }
+  // evalPdf toward `woLight` (when given) and sample, for the same wi: a path tracer's emitter
+  // and BSDF sampling at one vertex. Models that derive much from wi alone share it.
+  virtual BSDFVertexQueries evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight,
+                                             const Wavelengths& wl, float uComponent, Vec2 u) const {
+    return {woLight ? evalPdf(ctx, wi, *woLight, wl) : BSDFEvalPdf{}, sample(ctx, wi, wl, uComponent, u)};
   }
   // `uComponent` picks a component, `u` drives it. nullopt = absorbed / rejected.
   virtual std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,

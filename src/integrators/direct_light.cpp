@@ -2,29 +2,43 @@
 
 namespace columba {
 
-std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
-                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
-                                                   bool needBsdfPdf, uint64_t& rays) {
-  float pmf = 0.0f;
-  const Emitter* emitter = scene.sampleEmitter(u.x, &pmf);
-  if (!emitter) return std::nullopt;
-  auto es = emitter->sample(hit.p, u, wl);
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u) {
+  LightSample light;
+  light.emitter = scene.sampleEmitter(u.x, &light.pmf);
+  if (!light.emitter) return std::nullopt;
+  auto es = light.emitter->sample(hit.p, u, wl);
   if (!es || es->pdf <= 0.0f) return std::nullopt;
-  Vec3 woLocal = hit.shading.toLocal(es->direction);
-  bool mis = !emitter->isDelta() && needBsdfPdf;
-  BSDFEvalPdf f = mis ? bsdf.evalPdf(hit.bsdfContext, wiLocal, woLocal, wl)
-                      : BSDFEvalPdf{bsdf.eval(hit.bsdfContext, wiLocal, woLocal, wl), 0.0f};
+  light.sample = *es;
+  light.woLocal = hit.shading.toLocal(es->direction);
+  return light;
+}
+
+std::optional<DirectLightSample> connectToLight(const Scene& scene, const SurfaceInteraction& hit,
+                                                const LightSample& light, const BSDFEvalPdf& f, const Wavelengths& wl,
+                                                uint64_t& rays) {
   if (f.value.isZero()) return std::nullopt;
-  Ray shadow = std::isfinite(es->distance) ? hit.spawnRayTo(hit.p + es->direction * es->distance)
-                                           : hit.spawnRay(es->direction);
+  const EmitterSample& es = light.sample;
+  Ray shadow = std::isfinite(es.distance) ? hit.spawnRayTo(hit.p + es.direction * es.distance)
+                                          : hit.spawnRay(es.direction);
   Spectrum tr = scene.transmittance(shadow, wl, rays);
   if (tr.isZero()) return std::nullopt;
   DirectLightSample s;
-  s.lightPdf = es->pdf * pmf;
-  s.deltaLight = emitter->isDelta();
-  s.bsdfPdf = f.pdf;
-  s.value = f.value * es->radiance * tr / s.lightPdf;
+  s.lightPdf = es.pdf * light.pmf;
+  s.deltaLight = light.emitter->isDelta();
+  s.bsdfPdf = s.deltaLight ? 0.0f : f.pdf;
+  s.value = f.value * es.radiance * tr / s.lightPdf;
   return s;
+}
+
+std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
+                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
+                                                   bool needBsdfPdf, uint64_t& rays) {
+  std::optional<LightSample> light = sampleLight(scene, hit, wl, u);
+  if (!light) return std::nullopt;
+  bool mis = !light->emitter->isDelta() && needBsdfPdf;
+  BSDFEvalPdf f = mis ? bsdf.evalPdf(hit.bsdfContext, wiLocal, light->woLocal, wl)
+                      : BSDFEvalPdf{bsdf.eval(hit.bsdfContext, wiLocal, light->woLocal, wl), 0.0f};
+  return connectToLight(scene, hit, *light, f, wl, rays);
 }
 
 EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,

@@ -19,6 +19,19 @@ std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const Sur
                                                    const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
                                                    bool needBsdfPdf, uint64_t& rays);
 
+// The same in two steps, for integrators that ask the BSDF for more at the same time: an emitter
+// sample seen from the hit, then, given the BSDF's value and density toward it, the shadow ray.
+struct LightSample {
+  const Emitter* emitter = nullptr;
+  EmitterSample sample;
+  float pmf = 0.0f;  // probability of choosing `emitter`
+  Vec3 woLocal;      // the direction toward it in the hit's shading frame
+};
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u);
+std::optional<DirectLightSample> connectToLight(const Scene& scene, const SurfaceInteraction& hit,
+                                                const LightSample& light, const BSDFEvalPdf& f, const Wavelengths& wl,
+                                                uint64_t& rays);
+
 // Radiance of the emitters a ray that left `from` sees at `hit` (or at infinity if there is no
 // hit), with the density emitter sampling from `from` would have chosen that direction.
 struct EmitterHit {

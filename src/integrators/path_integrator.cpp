@@ -32,14 +32,19 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
 
     const BSDF& bsdf = *hit->shape->bsdf;
     Vec3 wi = hit->shading.toLocal(-dir);
+    // Emitter sampling and BSDF sampling, with one call to the BSDF for both.
     Vec2 uLight = sampler.get2D();
-    if (!bsdf.isDeltaOnly()) {
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, uLight, true, rays))
+    std::optional<LightSample> light = bsdf.isDeltaOnly() ? std::nullopt : sampleLight(scene, *hit, wl, uLight);
+    float uComponent = sampler.get1D();
+    Vec2 uDirection = sampler.get2D();
+    BSDFVertexQueries queries =
+        bsdf.evalPdfAndSample(hit->bsdfContext, wi, light ? &light->woLocal : nullptr, wl, uComponent, uDirection);
+    if (light) {
+      if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays))
         L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
     }
 
-    float uComponent = sampler.get1D();
-    auto bs = bsdf.sample(hit->bsdfContext, wi, wl, uComponent, sampler.get2D());
+    const std::optional<BSDFSample>& bs = queries.sampled;
     if (!bs) break;
     beta *= bs->weight;
     if (beta.isZero() || !beta.isFinite()) break;
