@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -18,6 +19,20 @@
 using namespace columba;
 
 namespace {
+
+// Distance to the nearest hit of `ray` in `scene`, infinity for none.
+float nearestHit(RTCScene scene, const Ray& ray) {
+  RTCRayHit rh{};
+  rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
+  rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
+  rh.ray.tfar = INFINITY;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect1(scene, &context, &rh);
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? INFINITY : rh.ray.tfar;
+}
 
 struct Geometry {
   std::unique_ptr<FeatherShape> feather;
@@ -47,18 +62,10 @@ const Geometry& geometry() {
         ray.o = Vec3(-2.4f + 5.8f * (x + 0.5f) / 256.0f, -1.6f + 4.6f * (y + 0.5f) / 192.0f, 10.0f);
         ray.d = Vec3(0.0f, 0.0f, -1.0f);
         out.downRays.push_back(ray);
-        RTCRayHit rh{};
-        rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
-        rh.ray.dir_z = -1.0f;
-        rh.ray.tfar = INFINITY;
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        rtcIntersect1(scene, &context, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        float t = nearestHit(scene, ray);
+        if (!std::isfinite(t)) continue;
         Ray leaving;
-        leaving.o = ray.at(rh.ray.tfar * 0.9999f);
+        leaving.o = ray.at(t * 0.9999f);
         leaving.d = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
         out.leavingRays.push_back(leaving);
       }
@@ -107,18 +114,7 @@ void BM_BarbRays(benchmark::State& state) {
   size_t hits = 0;
   for (auto _ : state) {
     hits = 0;
-    for (const Ray& ray : rays) {
-      RTCRayHit rh{};
-      rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
-      rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
-      rh.ray.tfar = INFINITY;
-      rh.ray.mask = 0xFFFFFFFFu;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      rtcIntersect1(scene, &context, &rh);
-      hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    }
+    for (const Ray& ray : rays) hits += std::isfinite(nearestHit(scene, ray));
     benchmark::DoNotOptimize(hits);
   }
   state.counters["hit_fraction"] = double(hits) / double(rays.size());

@@ -353,7 +353,7 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
   }
 }
 
-TEST(BarbuleBSDF, EvalPdfIsEvalAndPdfTogether) {
+TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
   BSDFContext overridden;
   overridden.barbuleH = 1.6f;
   overridden.barbuleMu = -0.2f;
@@ -361,50 +361,36 @@ TEST(BarbuleBSDF, EvalPdfIsEvalAndPdfTogether) {
     for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(reference(0.58f), role);
       PCG32 rng(37);
-      int nonZero = 0;
+      int nonZero = 0, sampled = 0;
       for (int i = 0; i < 5000; ++i) {
         // Both directions on the whole sphere: the evaluation twin reflects toward a camera below too.
         Vec3 wi = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
         Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+        float uComponent = rng.nextFloat();
+        Vec2 u(rng.nextFloat(), rng.nextFloat());
+        // evalPdf is eval and pdf.
         BSDFEvalPdf both = bsdf.evalPdf(ctx, wi, wo, kWavelengths);
         Spectrum f = bsdf.eval(ctx, wi, wo, kWavelengths);
         for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.value[k], f[k]);
         ASSERT_EQ(both.pdf, bsdf.pdf(ctx, wi, wo, kWavelengths));
         nonZero += !f.isZero();
-      }
-      EXPECT_GT(nonZero, 500);
-    }
-}
-
-TEST(BarbuleBSDF, VertexQueriesAreEvalPdfAndSampleTogether) {
-  BSDFContext overridden;
-  overridden.barbuleH = 1.6f;
-  overridden.barbuleMu = -0.2f;
-  for (const BSDFContext& ctx : {BSDFContext{}, overridden})
-    for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
-      BarbuleBSDF bsdf(reference(0.58f), role);
-      PCG32 rng(43);
-      int sampled = 0;
-      for (int i = 0; i < 5000; ++i) {
-        Vec3 wi = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-        Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-        float uComponent = rng.nextFloat();
-        Vec2 u(rng.nextFloat(), rng.nextFloat());
-        BSDFVertexQueries both = bsdf.evalPdfAndSample(ctx, wi, i % 2 ? &wo : nullptr, kWavelengths, uComponent, u);
-        BSDFEvalPdf expected = i % 2 ? bsdf.evalPdf(ctx, wi, wo, kWavelengths) : BSDFEvalPdf{};
-        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.toLight.value[k], expected.value[k]);
-        ASSERT_EQ(both.toLight.pdf, expected.pdf);
+        // evalPdfAndSample is evalPdf (when a light direction is given) and sample.
+        BSDFVertexQueries vertex = bsdf.evalPdfAndSample(ctx, wi, i % 2 ? &wo : nullptr, kWavelengths, uComponent, u);
+        BSDFEvalPdf toLight = i % 2 ? both : BSDFEvalPdf{};
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.toLight.value[k], toLight.value[k]);
+        ASSERT_EQ(vertex.toLight.pdf, toLight.pdf);
         std::optional<BSDFSample> alone = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
-        ASSERT_EQ(both.sampled.has_value(), alone.has_value());
+        ASSERT_EQ(vertex.sampled.has_value(), alone.has_value());
         if (!alone) continue;
         ++sampled;
-        EXPECT_EQ(both.sampled->wo.x, alone->wo.x);
-        EXPECT_EQ(both.sampled->wo.y, alone->wo.y);
-        EXPECT_EQ(both.sampled->wo.z, alone->wo.z);
-        EXPECT_EQ(both.sampled->pdf, alone->pdf);
-        EXPECT_EQ(both.sampled->passThrough, alone->passThrough);
-        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.sampled->weight[k], alone->weight[k]);
+        EXPECT_EQ(vertex.sampled->wo.x, alone->wo.x);
+        EXPECT_EQ(vertex.sampled->wo.y, alone->wo.y);
+        EXPECT_EQ(vertex.sampled->wo.z, alone->wo.z);
+        EXPECT_EQ(vertex.sampled->pdf, alone->pdf);
+        EXPECT_EQ(vertex.sampled->passThrough, alone->passThrough);
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.sampled->weight[k], alone->weight[k]);
       }
+      EXPECT_GT(nonZero, 500);
       EXPECT_GT(sampled, 2000);
     }
 }
