@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include "core/lanes.h"
 
 namespace columba {
 
@@ -53,11 +54,18 @@ float sampleVisibleWavelength(float u) {
 }
 
 Wavelengths Wavelengths::sampleVisible(float u) {
+  static_assert(kSpectrumSamples == kLaneCount, "one wavelength per lane");
+  const VisibleWavelengthTable& t = visibleTable();
+  // The hero and three more at equal offsets in sample space, wrapped into [0, 1), in lanes:
+  // which of them wrap depends on u, so branches would be mispredicted.
+  FloatLanes ui = u + FloatLanes{0.0f, 0.25f, 0.5f, 0.75f};
+  ui = ui >= 1.0f ? ui - 1.0f : ui;
+  FloatLanes x = clampLanes(ui, 0.0f, 1.0f) * float(VisibleWavelengthTable::kSegments);
   Wavelengths wl;
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    float ui = u + float(i) / kSpectrumSamples;
-    if (ui >= 1.0f) ui -= 1.0f;
-    wl.lambda[i] = drawVisibleWavelength(ui, &wl.pdf[i]);
+    int k = std::min(int(x[i]), VisibleWavelengthTable::kSegments - 1);
+    wl.pdf[i] = t.pdf[k];
+    wl.lambda[i] = lerp(x[i] - float(k), t.lambda[k], t.lambda[k + 1]);
   }
   return wl;
 }
@@ -215,9 +223,18 @@ const RgbMatchingTable& rgbMatchingTable() {
 
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
   const RgbMatchingTable& t = rgbMatchingTable();
+  // Per wavelength: the weight s / pdf (0 where the pdf is), and the table position, in lanes.
+  FloatLanes pdf{wl.pdf[0], wl.pdf[1], wl.pdf[2], wl.pdf[3]};
+  FloatLanes value{s[0], s[1], s[2], s[3]};
+  FloatLanes weight = pdf > 0.0f ? value / pdf : FloatLanes{};
+  FloatLanes lambda{wl.lambda[0], wl.lambda[1], wl.lambda[2], wl.lambda[3]};
+  FloatLanes x = clampLanes(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
   Vec3 rgb(0, 0, 0);
-  for (int i = 0; i < kSpectrumSamples; ++i)
-    if (wl.pdf[i] > 0.0f) rgb += interpolateNanometres(t.rgb, wl[i]) * (s[i] / wl.pdf[i]);
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    int k = std::min(int(x[i]), CieTable::kCount - 2);
+    float f = x[i] - float(k);
+    rgb += (t.rgb[k] * (1.0f - f) + t.rgb[k + 1] * f) * weight[i];
+  }
   return rgb * (1.0f / kSpectrumSamples);
 }
 
