@@ -44,11 +44,11 @@ Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int column
     int x0 = margin + int(i % columns) * (tileWidth + margin);
     int y0 = titleHeight + margin + int(i / columns) * (tileHeight + labelHeight + margin);
     canvas.drawImage(x0, y0, resizeImage(src, tileWidth, h));
-    // Labels shrink, then shorten, to stay within their tile.
+    // Labels shrink, then shorten, to stay within their tile; a wide image leaves its tile's foot empty.
     std::string label = entries[i].label;
     int scale = Canvas::textWidth(label, 2) <= tileWidth ? 2 : 1;
     while (label.size() > 4 && Canvas::textWidth(label, scale) > tileWidth) label = label.substr(0, label.size() - 4) + "...";
-    canvas.text(float(x0), float(y0 + tileHeight + 8), label, ink, scale);
+    canvas.text(float(x0), float(y0 + h + 8), label, ink, scale);  // right under its image
   }
   return canvas.image();
 }
