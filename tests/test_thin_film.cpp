@@ -187,3 +187,27 @@ TEST(Optics, MelaninTableMatchesTheMeasuredData) {
   EXPECT_NEAR(melaninReflectance(100.0f), 0.0300f, 1e-6f);
   EXPECT_NEAR(melaninReflectance(1500.0f), 0.0593f, 1e-6f);
 }
+
+TEST(ThinFilm, FreeStandingFilmWeightedProductsMatchThePairwiseProducts) {
+  // The quadrature's entry point against the per-pair transmittanceProduct, in both
+  // implementations where the processor runs both.
+  const Wavelengths wl = Wavelengths::fixed({405.0f, 498.0f, 577.0f, 689.0f});
+  FreeStandingFilm film(CauchyIOR::keratin(), 1.000277f, 0.58f, wl);
+  PCG32 rng(5);
+  for (int i = 0; i < 2000; ++i) {
+    FloatLanes weight, cos1, cos2;
+    for (int j = 0; j < kLaneCount; ++j) {
+      weight[j] = rng.nextFloat();
+      // Including grazing and slightly negative cosines, which the film clamps.
+      cos1[j] = rng.nextFloat() * 1.01f - 0.005f;
+      cos2[j] = rng.nextFloat() * 1.01f - 0.005f;
+    }
+    SpectrumLanes expected{};
+    for (int j = 0; j < kLaneCount; ++j) expected += weight[j] * film.transmittanceProduct(cos1[j], cos2[j]);
+    std::vector<SpectrumLanes> results = {film.weightedTransmittanceProducts(weight, cos1, cos2),
+                                          film.weightedTransmittanceProductsPortable(weight, cos1, cos2)};
+    if (FreeStandingFilm::hasAvx2()) results.push_back(film.weightedTransmittanceProductsAvx2(weight, cos1, cos2));
+    for (const SpectrumLanes& r : results)
+      for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_NEAR(r[k], expected[k], 2e-5f * (1.0f + expected[k])) << i;
+  }
+}

@@ -194,10 +194,8 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omeg
       FloatLanes theta = meanLongitudinalAngles(projectedIn, in.w.y), thetaSqr = theta * theta;
       FloatLanes c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr * (1.0f / 6.0f));
       FloatLanes cosIn = projectedIn * c + in.w.y * sn, cosOut = absLanes(projectedOut * c + omegaO.y * sn);
-      // The film per wavelength with the nodes in lanes (padding lanes weigh 0), summed over them.
-      FloatLanes perWavelength[kSpectrumSamples];
-      for (int k = 0; k < kSpectrumSamples; ++k) perWavelength[k] = weight * s.film.transmittanceProducts(k, cosIn, cosOut);
-      sum += laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
+      // The film at the nodes in lanes (padding lanes weigh 0), summed over them per wavelength.
+      sum += s.film.weightedTransmittanceProducts(weight, cosIn, cosOut);
       continue;
     }
     int lanes = std::min(kLaneCount, offsetNodeCount_ - int(group) * kLaneCount);

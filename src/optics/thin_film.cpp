@@ -1,5 +1,7 @@
 #include "optics/thin_film.h"
 
+#include <immintrin.h>
+
 #include <cmath>
 
 namespace columba {
@@ -79,6 +81,51 @@ FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float 
   medium_.bsSqr = medium_.etaSqrMinusOne * medium_.etaSqrMinusOne;
   // delta = 4 pi nFilm d cos(theta_film) / lambda and nFilm cos(theta_film) = nOutside q.
   medium_.halfPhaseScale = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
+}
+
+
+bool FreeStandingFilm::hasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return avx2;
+}
+
+SpectrumLanes FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1,
+                                                              FloatLanes cos2) const {
+  return hasAvx2() ? weightedTransmittanceProductsAvx2(weight, cos1, cos2)
+                   : weightedTransmittanceProductsPortable(weight, cos1, cos2);
+}
+
+SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1,
+                                                                      FloatLanes cos2) const {
+  // A wavelength at a time, the four pairs in lanes.
+  FloatLanes cSqr1 = clampedCosSqr(cos1), cSqr2 = clampedCosSqr(cos2);
+  FloatLanes perWavelength[kSpectrumSamples];
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    MediumAt m = mediumAt(k);
+    perWavelength[k] = weight * product(terms(m, cSqr1), terms(m, cSqr2));
+  }
+  return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
+}
+
+namespace {
+using FloatLanes8 = float __attribute__((vector_size(32)));
+}  // namespace
+
+__attribute__((target("avx2,fma"))) SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsAvx2(
+    FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const {
+  // A wavelength at a time, both crossings of the four pairs in eight lanes: cos1 low, cos2 high.
+  FloatLanes8 cSqr = clampedCosSqr(FloatLanes8{cos1[0], cos1[1], cos1[2], cos1[3], cos2[0], cos2[1], cos2[2], cos2[3]});
+  auto low = [](FloatLanes8 v) { return FloatLanes{v[0], v[1], v[2], v[3]}; };
+  auto high = [](FloatLanes8 v) { return FloatLanes{v[4], v[5], v[6], v[7]}; };
+  FloatLanes perWavelength[kSpectrumSamples];
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    MediumAt m = mediumAt(k);
+    FloatLanes8 qSqr = m.etaSqrMinusOne + cSqr;
+    TermsOf<FloatLanes8> t = terms(m, cSqr, qSqr, FloatLanes8(_mm256_sqrt_ps(__m256(qSqr))));
+    Terms first{low(t.aSqr), low(t.sBSqrS), low(t.pBSqrS)}, second{high(t.aSqr), high(t.sBSqrS), high(t.pBSqrS)};
+    perWavelength[k] = weight * product(first, second);
+  }
+  return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
 }
 
 }  // namespace columba

@@ -9,6 +9,7 @@
 // t = t12 t21 / (1 - r21^2 e^{i delta}) up to the phase of t.
 #include <array>
 #include <complex>
+#include <type_traits>
 #include "core/lanes.h"
 #include "core/spectrum.h"
 #include "optics/dispersion.h"
@@ -72,9 +73,17 @@ class FreeStandingFilm {
   // Unpolarised transmittance of two crossings, 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)):
   // light entering the film at one angle and leaving it at another (one division for all four).
   SpectrumLanes transmittanceProduct(float cos1, float cos2) const;
-  // The same at the path's wavelength k for four pairs of cosines, one per lane (a quadrature's
-  // nodes).
-  FloatLanes transmittanceProducts(int k, FloatLanes cos1, FloatLanes cos2) const;
+  // The same for four pairs of cosines, one per lane (a quadrature's nodes), weighted and summed
+  // over the lanes: the sum at each of the path's wavelengths. On processors with AVX2 and FMA
+  // both crossings of a wavelength are evaluated at once in eight lanes.
+  SpectrumLanes weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
+  // Its two implementations (public so that tests compare them): four lanes on any x86-64, and
+  // eight lanes, which needs a processor with AVX2 and FMA.
+  SpectrumLanes weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
+  __attribute__((target("avx2,fma"))) SpectrumLanes weightedTransmittanceProductsAvx2(FloatLanes weight,
+                                                                                      FloatLanes cos1,
+                                                                                      FloatLanes cos2) const;
+  static bool hasAvx2();
 
  private:
   // The film's constants, one wavelength per lane (or one wavelength in every lane).
@@ -84,22 +93,39 @@ class FreeStandingFilm {
     FloatLanes bsSqr;           // B_s^2 = (1 - eta^2)^2
     FloatLanes halfPhaseScale;  // delta / 2 = halfPhaseScale q: 2 pi nOutside d / lambda
   };
-  // A^2 and B^2 S of the two polarisations, per lane.
-  struct Terms {
-    FloatLanes aSqr, sBSqrS, pBSqrS;
+  // One wavelength's constants, for evaluating it in every lane.
+  struct MediumAt {
+    float etaSqrMinusOne, etaSqr, invEtaSqr, bsSqr, halfPhaseScale;
   };
+  MediumAt mediumAt(int k) const {
+    return {medium_.etaSqrMinusOne[k], medium_.etaSqr[k], medium_.invEtaSqr[k], medium_.bsSqr[k],
+            medium_.halfPhaseScale[k]};
+  }
+  // A^2 and B^2 S of the two polarisations, per lane.
+  template <typename Lanes> struct TermsOf {
+    Lanes aSqr, sBSqrS, pBSqrS;
+  };
+  using Terms = TermsOf<FloatLanes>;
   // From the incidence cosines' squares, clamped to [1e-8, 1]: exactly grazing light would make
-  // A = 0 and, where S = 0 too, the Airy sum 0/0.
-  static Terms terms(const Medium& m, FloatLanes cSqr);
-  static FloatLanes clampedCosSqr(FloatLanes c) {
-    c = clampLanes(c, 1e-4f, 1.0f);
+  // A = 0 and, where S = 0 too, the Airy sum 0/0. `m` is a Medium (a wavelength per lane) or a
+  // MediumAt; Lanes is four or, in the AVX2 path, eight lanes (always inlined into its caller,
+  // whose instruction set it then uses).
+  template <typename M, typename Lanes>
+  __attribute__((always_inline)) static TermsOf<Lanes> terms(const M& m, Lanes cSqr, Lanes qSqr, Lanes q);
+  template <typename M> static Terms terms(const M& m, FloatLanes cSqr) {
+    FloatLanes qSqr = m.etaSqrMinusOne + cSqr;  // the film is denser, so light always enters it
+    return terms(m, cSqr, qSqr, sqrtLanes(qSqr));
+  }
+  template <typename Lanes> __attribute__((always_inline)) static Lanes clampedCosSqr(Lanes c) {
+    c = c < 1e-4f ? 1e-4f + Lanes{} : c;
+    c = c > 1.0f ? 1.0f + Lanes{} : c;
     return c * c;
   }
   static FloatLanes product(const Terms& a, const Terms& b);
 
-  // Constants of the range reduction as full vectors, defined out of line: the arithmetic then
-  // reads them as memory operands, where a visible constant is re-broadcast from a scalar at each
-  // use.
+  // Constants of the range reduction as full vectors, defined out of line: four-lane arithmetic
+  // then reads them as memory operands, where a visible constant is re-broadcast from a scalar at
+  // each use.
   struct Constants {
     SpectrumLanes invPi, pi, round;
   };
@@ -107,26 +133,32 @@ class FreeStandingFilm {
 
   // sin^2(x) for 0 <= x up to a few hundred: sin^2 has period pi, so reduce to [-pi/2, pi/2] and
   // use the Taylor polynomial there.
-  static SpectrumLanes sinSqrReduced(SpectrumLanes x) {
-    const Constants& k = kConstants;
-    SpectrumLanes turns = x * k.invPi;
-    SpectrumLanes whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
-    SpectrumLanes y = (turns - whole) * k.pi;
-    SpectrumLanes sinOverY, cosY;
+  template <typename Lanes> __attribute__((always_inline)) static Lanes sinSqrReduced(Lanes x) {
+    Lanes turns, whole, y;
+    if constexpr (std::is_same_v<Lanes, SpectrumLanes>) {
+      const Constants& k = kConstants;
+      turns = x * k.invPi;
+      whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
+      y = (turns - whole) * k.pi;
+    } else {
+      turns = x * (1.0f / kPi);
+      whole = (turns + 12582912.0f) - 12582912.0f;
+      y = (turns - whole) * kPi;
+    }
+    Lanes sinOverY, cosY;
     sincAndCosWithinQuarterTurn(y, sinOverY, cosY);
-    SpectrumLanes sinY = y * sinOverY;
+    Lanes sinY = y * sinOverY;
     return sinY * sinY;
   }
 
   Medium medium_{};  // at the path's wavelengths
 };
 
-inline FreeStandingFilm::Terms FreeStandingFilm::terms(const Medium& m, FloatLanes cSqr) {
-  // The film is denser than its surroundings, so light always enters it (q^2 > 0).
-  FloatLanes qSqr = m.etaSqrMinusOne + cSqr;
-  FloatLanes S = sinSqrReduced(m.halfPhaseScale * sqrtLanes(qSqr));
-  FloatLanes aSqr = 4.0f * cSqr * qSqr;
-  FloatLanes bp = m.etaSqr * cSqr - qSqr * m.invEtaSqr;
+template <typename M, typename Lanes>
+inline FreeStandingFilm::TermsOf<Lanes> FreeStandingFilm::terms(const M& m, Lanes cSqr, Lanes qSqr, Lanes q) {
+  Lanes S = sinSqrReduced(m.halfPhaseScale * q);
+  Lanes aSqr = 4.0f * cSqr * qSqr;
+  Lanes bp = m.etaSqr * cSqr - qSqr * m.invEtaSqr;
   return {aSqr, m.bsSqr * S, bp * bp * S};
 }
 
@@ -148,13 +180,6 @@ inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosInci
 
 inline SpectrumLanes FreeStandingFilm::transmittanceProduct(float cos1, float cos2) const {
   return product(terms(medium_, clampedCosSqr(cos1 + FloatLanes{})), terms(medium_, clampedCosSqr(cos2 + FloatLanes{})));
-}
-
-inline FloatLanes FreeStandingFilm::transmittanceProducts(int k, FloatLanes cos1, FloatLanes cos2) const {
-  Medium m{medium_.etaSqrMinusOne[k] + FloatLanes{}, medium_.etaSqr[k] + FloatLanes{},
-           medium_.invEtaSqr[k] + FloatLanes{}, medium_.bsSqr[k] + FloatLanes{},
-           medium_.halfPhaseScale[k] + FloatLanes{}};
-  return product(terms(m, clampedCosSqr(cos1)), terms(m, clampedCosSqr(cos2)));
 }
 
 }  // namespace columba
