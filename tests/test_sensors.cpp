@@ -44,9 +44,14 @@ TEST(BSDFVisualizerSensor, FootprintsWithoutRaysAreReportedEmpty) {
       anyRay = sensor.generateRay(p).has_value();
     }
     // A ray found inside proves the rectangle is seen; an empty verdict must hold for every point.
-    if (anyRay) EXPECT_TRUE(sensor.seesAnyOf(lo, hi));
-    if (sensor.seesAnyOf(lo, hi)) ++seen;
-    else ++empty;
+    if (anyRay) {
+      EXPECT_TRUE(sensor.seesAnyOf(lo, hi));
+    }
+    if (sensor.seesAnyOf(lo, hi)) {
+      ++seen;
+    } else {
+      ++empty;
+    }
   }
   EXPECT_GT(empty, 400);
   EXPECT_GT(seen, 400);
