@@ -374,11 +374,20 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
         for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(both.value[k], f[k]);
         ASSERT_EQ(both.pdf, bsdf.pdf(ctx, wi, wo, kWavelengths));
         nonZero += !f.isZero();
-        // evalPdfAndSample is evalPdf (when a light direction is given) and sample.
-        BSDFVertexQueries vertex = bsdf.evalPdfAndSample(ctx, wi, i % 2 ? &wo : nullptr, kWavelengths, uComponent, u);
-        BSDFEvalPdf toLight = i % 2 ? both : BSDFEvalPdf{};
+        // queryVertex gives what it is asked for, as the separate calls do: evalPdf or eval toward a
+        // light direction, sample, the pass-through.
+        BSDFVertexRequest request;
+        request.woLight = i % 3 ? &wo : nullptr;
+        request.lightPdf = i % 3 == 1;
+        request.sample = true;
+        request.uComponent = uComponent;
+        request.u = u;
+        request.passThrough = i % 2;
+        BSDFVertexQueries vertex = bsdf.queryVertex(ctx, wi, kWavelengths, request);
+        BSDFEvalPdf toLight = !request.woLight ? BSDFEvalPdf{} : request.lightPdf ? both : BSDFEvalPdf{f, 0.0f};
         for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.toLight.value[k], toLight.value[k]);
         ASSERT_EQ(vertex.toLight.pdf, toLight.pdf);
+        ASSERT_EQ(vertex.passThrough[0], request.passThrough ? bsdf.passThrough(ctx, wi, kWavelengths)[0] : 0.0f);
         std::optional<BSDFSample> alone = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
         ASSERT_EQ(vertex.sampled.has_value(), alone.has_value());
         if (!alone) continue;

@@ -103,6 +103,11 @@ struct BarbuleBSDF::Incident {
   bool scatters = false;  // above the vane with part of the arc lit
 };
 
+// The pass-through weight of omega_i: its coverage's complement, already known when it scatters.
+float BarbuleBSDF::transmission(const BarbuleCrossSection& geometry, const Incident& in) {
+  return in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, in.w);
+}
+
 struct BarbuleBSDF::LobeChoice {
   float transmission = 1.0f, reflection = 0.0f, trt = 0.0f;
 };
@@ -328,12 +333,21 @@ std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3
   return sampleWith(s, in, lobeChoice(s, in), uComponent, u);
 }
 
-BSDFVertexQueries BarbuleBSDF::evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight,
-                                                const Wavelengths& wl, float uComponent, Vec2 u) const {
+BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                           const BSDFVertexRequest& request) const {
   Shading s(*this, ctx, wl);
   Incident in = incident(s, wi);
-  LobeChoice choice = lobeChoice(s, in);
-  return {woLight ? evalPdfWith(s, in, choice, *woLight) : BSDFEvalPdf{}, sampleWith(s, in, choice, uComponent, u)};
+  bool needsChoice = request.sample || (request.woLight && request.lightPdf);
+  LobeChoice choice = needsChoice ? lobeChoice(s, in) : LobeChoice{};
+  BSDFVertexQueries q;
+  if (request.woLight) {
+    const Vec3& wo = *request.woLight;
+    q.toLight = request.lightPdf ? evalPdfWith(s, in, choice, wo)
+                                 : BSDFEvalPdf{evalWith(s, in, wo, s.geometry.litArc(inPlane(wo).dir)), 0.0f};
+  }
+  if (request.sample) q.sampled = sampleWith(s, in, choice, request.uComponent, request.u);
+  if (request.passThrough) q.passThrough = Spectrum(transmission(s.geometry, in));
+  return q;
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice,
@@ -342,7 +356,7 @@ std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incide
   const Vec3& wi = in.w;
   BSDFSample bs;
   if (uComponent < choice.transmission) {
-    float t = in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, wi);
+    float t = transmission(geometry, in);
     if (!(t > 0.0f)) return std::nullopt;
     bs.wo = -wi;
     bs.pdf = choice.transmission;

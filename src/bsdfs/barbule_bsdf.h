@@ -73,8 +73,8 @@ class BarbuleBSDF : public BSDF {
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  BSDFVertexQueries evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight, const Wavelengths& wl,
-                                     float uComponent, Vec2 u) const override;
+  BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                const BSDFVertexRequest& request) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
@@ -111,6 +111,7 @@ class BarbuleBSDF : public BSDF {
   FloatLanes trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
                                  float outY) const;
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
+  static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
                     const LitArc& outArc) const;
   // evalPdf and sample once the geometry, film, omega_i's incident quantities and lobe choice are known.

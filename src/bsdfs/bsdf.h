@@ -33,11 +33,21 @@ struct BSDFEvalPdf {
   float pdf = 0.0f;  // pdf()
 };
 
-// What a path vertex asks of its BSDF: the value and density toward a light sample, and a sampled
-// continuation.
+// What an integrator asks of a BSDF at one path vertex, for one wi: the value toward a light
+// sample (and, for MIS, its density), a sampled continuation, the pass-through weight. Asked
+// together, they share what the model derives from wi alone.
+struct BSDFVertexRequest {
+  const Vec3* woLight = nullptr;  // evaluate toward this direction
+  bool lightPdf = false;          // with the density of sampling it
+  bool sample = false;            // draw a continuation from uComponent and u
+  float uComponent = 0.0f;
+  Vec2 u;
+  bool passThrough = false;
+};
 struct BSDFVertexQueries {
-  BSDFEvalPdf toLight;
-  std::optional<BSDFSample> sampled;
+  BSDFEvalPdf toLight;                // pdf 0 unless asked
+  std::optional<BSDFSample> sampled;  // nullopt unless asked
+  Spectrum passThrough;               // 0 unless asked
 };
 
 class BSDF : public Object {
@@ -50,11 +60,16 @@ class BSDF : public Object {
   virtual BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
     return {eval(ctx, wi, wo, wl), pdf(ctx, wi, wo, wl)};
   }
-  // evalPdf toward `woLight` (when given) and sample, for the same wi: a path tracer's emitter
-  // and BSDF sampling at one vertex. Models that derive much from wi alone share it.
-  virtual BSDFVertexQueries evalPdfAndSample(const BSDFContext& ctx, const Vec3& wi, const Vec3* woLight,
-                                             const Wavelengths& wl, float uComponent, Vec2 u) const {
-    return {woLight ? evalPdf(ctx, wi, *woLight, wl) : BSDFEvalPdf{}, sample(ctx, wi, wl, uComponent, u)};
+  // The requested queries at one vertex; the same values as the separate calls.
+  virtual BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                        const BSDFVertexRequest& request) const {
+    BSDFVertexQueries q;
+    if (request.woLight)
+      q.toLight = request.lightPdf ? evalPdf(ctx, wi, *request.woLight, wl)
+                                   : BSDFEvalPdf{eval(ctx, wi, *request.woLight, wl), 0.0f};
+    if (request.sample) q.sampled = sample(ctx, wi, wl, request.uComponent, request.u);
+    if (request.passThrough) q.passThrough = passThrough(ctx, wi, wl);
+    return q;
   }
   // `uComponent` picks a component, `u` drives it. nullopt = absorbed / rejected.
   virtual std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,

@@ -23,8 +23,18 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     const BSDF& bsdf = *hit->shape->bsdf;
     Vec3 wi = hit->shading.toLocal(-dir);
 
+    // The pass-through weight is asked for together with the first emitter sample's evaluation.
+    std::optional<Spectrum> passThrough;
     for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
-      if (auto ds = sampleDirectLight(scene, *hit, bsdf, wi, wl, sampler.get2D(), bsdfSamples_ > 0, rays)) {
+      std::optional<LightSample> light = sampleLight(scene, *hit, wl, sampler.get2D());
+      if (!light) continue;
+      BSDFVertexRequest request;
+      request.woLight = &light->woLocal;
+      request.lightPdf = bsdfSamples_ > 0 && !light->emitter->isDelta();
+      request.passThrough = !passThrough && bsdf.hasPassThrough();
+      BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext, wi, wl, request);
+      if (request.passThrough) passThrough = queries.passThrough;
+      if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays)) {
         float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
         L += beta * ds->value * (w / nE);
       }
@@ -45,7 +55,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     }
 
     if (!bsdf.hasPassThrough()) break;
-    beta *= bsdf.passThrough(hit->bsdfContext, wi, wl);
+    beta *= passThrough ? *passThrough : bsdf.passThrough(hit->bsdfContext, wi, wl);
     if (beta.isZero()) break;
     ray = hit->spawnRay(dir);
   }

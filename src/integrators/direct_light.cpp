@@ -30,17 +30,6 @@ std::optional<DirectLightSample> connectToLight(const Scene& scene, const Surfac
   return s;
 }
 
-std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
-                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
-                                                   bool needBsdfPdf, uint64_t& rays) {
-  std::optional<LightSample> light = sampleLight(scene, hit, wl, u);
-  if (!light) return std::nullopt;
-  bool mis = !light->emitter->isDelta() && needBsdfPdf;
-  BSDFEvalPdf f = mis ? bsdf.evalPdf(hit.bsdfContext, wiLocal, light->woLocal, wl)
-                      : BSDFEvalPdf{bsdf.eval(hit.bsdfContext, wiLocal, light->woLocal, wl), 0.0f};
-  return connectToLight(scene, hit, *light, f, wl, rays);
-}
-
 EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,
                             const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl) {
   EmitterHit result;

@@ -12,15 +12,10 @@ struct DirectLightSample {
   bool deltaLight = false;
 };
 
-// nullopt when nothing was sampled or the contribution is zero (e.g. occluded). `u.x` chooses the
-// emitter and, remapped, with `u.y` the point on it. `bsdfPdf` is only computed when
-// `needBsdfPdf` (for MIS).
-std::optional<DirectLightSample> sampleDirectLight(const Scene& scene, const SurfaceInteraction& hit, const BSDF& bsdf,
-                                                   const Vec3& wiLocal, const Wavelengths& wl, Vec2 u,
-                                                   bool needBsdfPdf, uint64_t& rays);
-
-// The same in two steps, for integrators that ask the BSDF for more at the same time: an emitter
-// sample seen from the hit, then, given the BSDF's value and density toward it, the shadow ray.
+// Next-event estimation in two steps, so that integrators can ask the BSDF for more at the same
+// time: an emitter sample seen from the hit (`u.x` chooses the emitter and, remapped, with `u.y`
+// the point on it), then, given the BSDF's value and density toward it, the shadow ray. nullopt
+// when nothing was sampled or the contribution is zero (e.g. occluded).
 struct LightSample {
   const Emitter* emitter = nullptr;
   EmitterSample sample;

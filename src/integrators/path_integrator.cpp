@@ -37,8 +37,13 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     std::optional<LightSample> light = bsdf.isDeltaOnly() ? std::nullopt : sampleLight(scene, *hit, wl, uLight);
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();
-    BSDFVertexQueries queries =
-        bsdf.evalPdfAndSample(hit->bsdfContext, wi, light ? &light->woLocal : nullptr, wl, uComponent, uDirection);
+    BSDFVertexRequest request;
+    request.woLight = light ? &light->woLocal : nullptr;
+    request.lightPdf = true;
+    request.sample = true;
+    request.uComponent = uComponent;
+    request.u = uDirection;
+    BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext, wi, wl, request);
     if (light) {
       if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays))
         L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
