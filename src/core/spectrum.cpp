@@ -209,10 +209,13 @@ namespace {
 // CIE table's 1 nm steps: the conversion is linear, so it is applied once here instead of per
 // camera sample.
 struct RgbMatchingTable {
-  std::array<Vec3, CieTable::kCount> rgb;
+  std::array<FloatLanes, CieTable::kCount> rgb;  // r, g, b and a zero lane: one register per entry
   RgbMatchingTable() {
     const CieTable& t = cieTable();
-    for (int i = 0; i < CieTable::kCount; ++i) rgb[i] = xyzToLinearRGB(t.xyz[i] / t.yIntegral);
+    for (int i = 0; i < CieTable::kCount; ++i) {
+      Vec3 c = xyzToLinearRGB(t.xyz[i] / t.yIntegral);
+      rgb[i] = FloatLanes{c.x, c.y, c.z, 0.0f};
+    }
   }
 };
 const RgbMatchingTable& rgbMatchingTable() {
@@ -229,13 +232,14 @@ Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
   FloatLanes weight = pdf > 0.0f ? value / pdf : FloatLanes{};
   FloatLanes lambda{wl.lambda[0], wl.lambda[1], wl.lambda[2], wl.lambda[3]};
   FloatLanes x = clampLanes(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
-  Vec3 rgb(0, 0, 0);
+  FloatLanes rgb{};
   for (int i = 0; i < kSpectrumSamples; ++i) {
     int k = std::min(int(x[i]), CieTable::kCount - 2);
     float f = x[i] - float(k);
     rgb += (t.rgb[k] * (1.0f - f) + t.rgb[k + 1] * f) * weight[i];
   }
-  return rgb * (1.0f / kSpectrumSamples);
+  rgb *= 1.0f / kSpectrumSamples;
+  return {rgb[0], rgb[1], rgb[2]};
 }
 
 SpectralDistribution SpectralDistribution::constant(float value) {
