@@ -1,7 +1,9 @@
 #include "scene/scene.h"
 
+#include <cstring>
 #include <stdexcept>
 
+#include "core/lanes.h"
 #include "integrators/integrator.h"
 #include "scene/plugin_registry.h"
 
@@ -61,11 +63,12 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
-  rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
-  rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
-  rh.ray.tnear = ray.tmin;
+  // Origin and tnear, direction and time as whole 16-byte stores: Embree loads them as vectors,
+  // and a vector load from several narrower stores stalls until they have all retired.
+  const FloatLanes originAndNear{ray.o.x, ray.o.y, ray.o.z, ray.tmin}, directionAndTime{ray.d.x, ray.d.y, ray.d.z, 0.0f};
+  std::memcpy(&rh.ray.org_x, &originAndNear, sizeof(FloatLanes));
+  std::memcpy(&rh.ray.dir_x, &directionAndTime, sizeof(FloatLanes));
   rh.ray.tfar = ray.tmax;
-  rh.ray.time = 0.0f;
   rh.ray.mask = 0xFFFFFFFFu;
   rh.ray.id = 0;
   rh.ray.flags = 0;
