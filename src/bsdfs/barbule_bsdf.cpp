@@ -313,12 +313,6 @@ BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, c
   return {evalWith(s, fromWi, wo, woArc), samplingPdf(s, fromWi, choice, wo, woArc)};
 }
 
-BSDFEvalPdf BarbuleBSDF::evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  Shading s(*this, ctx, wl);
-  Incident in = incident(s, wi);
-  return evalPdfWith(s, in, lobeChoice(s, in), wo);
-}
-
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   Shading s(*this, ctx, wl);
   Incident in = incident(s, wi);

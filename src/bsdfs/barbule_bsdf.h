@@ -72,7 +72,6 @@ class BarbuleBSDF : public BSDF {
 
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                 const BSDFVertexRequest& request) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -114,7 +113,8 @@ class BarbuleBSDF : public BSDF {
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
                     const LitArc& outArc) const;
-  // evalPdf and sample once the geometry, film, omega_i's incident quantities and lobe choice are known.
+  // eval with pdf, and sample, once the geometry, film, omega_i's incident quantities and lobe choice
+  // are known.
   BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo) const;
   std::optional<BSDFSample> sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice, float uComponent,
                                        Vec2 u) const;

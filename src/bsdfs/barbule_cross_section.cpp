@@ -117,14 +117,8 @@ Vec2 BarbuleCrossSection::pointAt(const LitArc& arc, float h) const {
   return arc.across * h + arc.toward * s;
 }
 
-Vec2 BarbuleCrossSection::pointAtAngle(const LitArc& arc, float sinPsi, float cosPsi) const {
-  // With h = halfWidth sin(psi) and halfWidth^2 = b^2 a, sqrt(a - h^2 / b^2) = (halfWidth / b) cos(psi).
-  float h = arc.halfWidth * sinPsi;
-  float s = (arc.halfWidth / b_ * cosPsi - arc.q * h) * arc.invA;
-  return arc.across * h + arc.toward * s;
-}
-
 Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const {
+  // With h = halfWidth sin(psi) and halfWidth^2 = b^2 a, sqrt(a - h^2 / b^2) = (halfWidth / b) cos(psi).
   FloatLanes h = arc.halfWidth * sinPsi;
   FloatLanes s = (arc.halfWidth / b_ * cosPsi - arc.q * h) * arc.invA;
   FloatLanes nx = (arc.across.x * h + arc.toward.x * s) * invBSqr_, ny = arc.across.y * h + arc.toward.y * s;

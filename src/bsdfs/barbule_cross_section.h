@@ -73,12 +73,10 @@ class BarbuleCrossSection {
   // Point (local) where the ray at offset h coming along -toward first meets the central ellipse;
   // h must lie within [-halfWidth, halfWidth].
   Vec2 pointAt(const LitArc& arc, float h) const;
-  // The same front point parametrised by psi in [-pi/2, pi/2], h = halfWidth sin(psi): the angle
-  // of the point once the ellipse is mapped to the unit circle. The point moves smoothly with psi
-  // where it moves like sqrt(h) with h, at the silhouette.
-  Vec2 pointAtAngle(const LitArc& arc, float sinPsi, float cosPsi) const;
-  // toWorld(normalAt(pointAtAngle(arc, sinPsi, cosPsi))) at four angles at once: the normals at
-  // a quadrature's nodes.
+  // World normals toWorld(normalAt(p)) at four front points p at once (a quadrature's nodes), the
+  // points parametrised by psi in [-pi/2, pi/2], h = halfWidth sin(psi): the angle of the point
+  // once the ellipse is mapped to the unit circle. The point moves smoothly with psi where it
+  // moves like sqrt(h) with h, at the silhouette.
   Vec2Lanes worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const;
   // Unit outward normal (local) of the central ellipse at a point on it.
   Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }

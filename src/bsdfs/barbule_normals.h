@@ -77,13 +77,10 @@ inline bool facesWholeRange(float A, float B) { return std::abs(B) * kTanBarbule
 inline float longitudinalShadowing(float A, float B) {
   return facesWholeRange(A, B) ? 1.0f : LongitudinalDensity(A, B).shadowing();
 }
-// The mean unclipped is (B / A) (sin(thetaD) - thetaD cos(thetaD)) / sin(thetaD).
-inline constexpr float kUnclippedMeanScale = 0.00205703f;
-inline float meanLongitudinalAngle(float A, float B) {
-  return facesWholeRange(A, B) ? B / A * kUnclippedMeanScale : LongitudinalDensity(A, B).mean();
-}
-// The same for four normals seen from one direction (A per lane, B shared).
+// LongitudinalDensity(A, B).mean() for four normals seen from one direction (A per lane, B
+// shared); unclipped it is (B / A) (sin(thetaD) - thetaD cos(thetaD)) / sin(thetaD).
 inline FloatLanes meanLongitudinalAngles(FloatLanes A, float B) {
+  constexpr float kUnclippedMeanScale = 0.00205703f;
   FloatLanes theta = B / A * kUnclippedMeanScale;
   for (int j = 0; j < kLaneCount; ++j)
     if (!facesWholeRange(A[j], B)) theta[j] = LongitudinalDensity(A[j], B).mean();

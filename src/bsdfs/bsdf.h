@@ -29,7 +29,7 @@ struct BSDFSample {
 };
 
 struct BSDFEvalPdf {
-  Spectrum value;  // eval()
+  Spectrum value;    // eval()
   float pdf = 0.0f;  // pdf()
 };
 
@@ -56,17 +56,12 @@ class BSDF : public Object {
   virtual Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
   // Density of `sample` producing `wo`, non-delta components only (solid angle).
   virtual float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
-  // Both at once (emitter sampling with MIS needs both): models share the work of the two.
-  virtual BSDFEvalPdf evalPdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-    return {eval(ctx, wi, wo, wl), pdf(ctx, wi, wo, wl)};
-  }
   // The requested queries at one vertex; the same values as the separate calls.
   virtual BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                         const BSDFVertexRequest& request) const {
     BSDFVertexQueries q;
     if (request.woLight)
-      q.toLight = request.lightPdf ? evalPdf(ctx, wi, *request.woLight, wl)
-                                   : BSDFEvalPdf{eval(ctx, wi, *request.woLight, wl), 0.0f};
+      q.toLight = {eval(ctx, wi, *request.woLight, wl), request.lightPdf ? pdf(ctx, wi, *request.woLight, wl) : 0.0f};
     if (request.sample) q.sampled = sample(ctx, wi, wl, request.uComponent, request.u);
     if (request.passThrough) q.passThrough = passThrough(ctx, wi, wl);
     return q;

@@ -10,6 +10,8 @@ inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr float kInvPi = 1.0f / kPi;
 inline constexpr float kTwoPi = 2.0f * kPi;
 inline constexpr float kHalfPi = 0.5f * kPi;
+// The largest float below 1: samples must stay in [0, 1).
+inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 template <typename T> constexpr T sqr(T x) { return x * x; }
 inline float clampf(float x, float lo, float hi) { return std::min(std::max(x, lo), hi); }

@@ -31,10 +31,9 @@ const VisibleWavelengthTable& visibleTable() {
   return table;
 }
 
-// Wavelength for `u` and the density it was drawn with.
-float drawVisibleWavelength(float u, float* pdf) {
+// Wavelength at position x = u kSegments of the table (u in [0, 1]), and the density it is drawn with.
+float wavelengthAtTablePosition(float x, float* pdf) {
   const VisibleWavelengthTable& t = visibleTable();
-  float x = clampf(u, 0.0f, 1.0f) * VisibleWavelengthTable::kSegments;
   int k = std::min(int(x), VisibleWavelengthTable::kSegments - 1);
   *pdf = t.pdf[k];
   return lerp(x - float(k), t.lambda[k], t.lambda[k + 1]);
@@ -50,23 +49,18 @@ float visibleWavelengthPdf(float lambda) {
 
 float sampleVisibleWavelength(float u) {
   float pdf;
-  return drawVisibleWavelength(u, &pdf);
+  return wavelengthAtTablePosition(clampf(u, 0.0f, 1.0f) * VisibleWavelengthTable::kSegments, &pdf);
 }
 
 Wavelengths Wavelengths::sampleVisible(float u) {
   static_assert(kSpectrumSamples == kLaneCount, "one wavelength per lane");
-  const VisibleWavelengthTable& t = visibleTable();
   // The hero and three more at equal offsets in sample space, wrapped into [0, 1), in lanes:
   // which of them wrap depends on u, so branches would be mispredicted.
   FloatLanes ui = u + FloatLanes{0.0f, 0.25f, 0.5f, 0.75f};
   ui = ui >= 1.0f ? ui - 1.0f : ui;
   FloatLanes x = clampLanes(ui, 0.0f, 1.0f) * float(VisibleWavelengthTable::kSegments);
   Wavelengths wl;
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    int k = std::min(int(x[i]), VisibleWavelengthTable::kSegments - 1);
-    wl.pdf[i] = t.pdf[k];
-    wl.lambda[i] = lerp(x[i] - float(k), t.lambda[k], t.lambda[k + 1]);
-  }
+  for (int i = 0; i < kSpectrumSamples; ++i) wl.lambda[i] = wavelengthAtTablePosition(x[i], &wl.pdf[i]);
   return wl;
 }
 
@@ -103,7 +97,7 @@ const CieTable& cieTable() {
 }
 
 // Linear interpolation in a table of values at whole nanometres from kLambdaMin to kLambdaMax.
-Vec3 interpolateNanometres(const std::array<Vec3, CieTable::kCount>& table, float lambda) {
+template <typename T> T interpolateNanometres(const std::array<T, CieTable::kCount>& table, float lambda) {
   float x = clampf(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
   int i = std::min(int(x), CieTable::kCount - 2);
   float f = x - float(i);
@@ -226,18 +220,12 @@ const RgbMatchingTable& rgbMatchingTable() {
 
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
   const RgbMatchingTable& t = rgbMatchingTable();
-  // Per wavelength: the weight s / pdf (0 where the pdf is), and the table position, in lanes.
+  // Per wavelength: the weight s / pdf (0 where the pdf is), in lanes.
   FloatLanes pdf{wl.pdf[0], wl.pdf[1], wl.pdf[2], wl.pdf[3]};
   FloatLanes value{s[0], s[1], s[2], s[3]};
   FloatLanes weight = pdf > 0.0f ? value / pdf : FloatLanes{};
-  FloatLanes lambda{wl.lambda[0], wl.lambda[1], wl.lambda[2], wl.lambda[3]};
-  FloatLanes x = clampLanes(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
   FloatLanes rgb{};
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    int k = std::min(int(x[i]), CieTable::kCount - 2);
-    float f = x[i] - float(k);
-    rgb += (t.rgb[k] * (1.0f - f) + t.rgb[k + 1] * f) * weight[i];
-  }
+  for (int i = 0; i < kSpectrumSamples; ++i) rgb += interpolateNanometres(t.rgb, wl.lambda[i]) * weight[i];
   rgb *= 1.0f / kSpectrumSamples;
   return {rgb[0], rgb[1], rgb[2]};
 }

@@ -83,7 +83,6 @@ FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float 
   medium_.halfPhaseScale = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
 }
 
-
 bool FreeStandingFilm::hasAvx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return avx2;

@@ -23,6 +23,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
   const int tileCount = tilesX * tilesY;
 
+  const float reach = film.filter().radius();  // of a camera sample from its pixel's centre
   Image image(width, height);
   std::atomic<uint64_t> rays{0}, samples{0};
   std::atomic<int> tilesDone{0};
@@ -46,7 +47,6 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
           if (stopRequested()) return;  // checked per pixel: Ctrl-C answers quickly at any spp
           double sum[3] = {0, 0, 0};
-          const float reach = film.filter().radius();
           const bool seen = sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
           for (int s = 0; seen && s < spp; ++s) {
             sampler->startPixelSample(x, y, s, settings.seed);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <vector>
+#include "core/math.h"
 #include "emitters/emitter.h"
 #include "scene/scene_loader.h"
 #include "sensors/sensor.h"
@@ -41,7 +42,7 @@ class Scene {
     if (emitters_.empty()) return nullptr;
     float scaled = u * float(emitters_.size());
     int i = std::min(int(scaled), int(emitters_.size()) - 1);
-    u = std::min(scaled - float(i), 0x1.fffffep-1f);
+    u = std::min(scaled - float(i), kOneMinusEpsilon);
     *pmf = emitterPmf();
     return emitters_[size_t(i)].get();
   }

@@ -3,12 +3,10 @@
 // dimension counter. Nothing depends on call order across pixels or on threads.
 #include <algorithm>
 #include <cstdint>
+#include "core/math.h"
 #include "core/rng.h"
 
 namespace columba {
-
-// The largest float below 1: samples must stay in [0, 1).
-inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 inline float clampToUnitInterval(double v) { return std::min(float(v), kOneMinusEpsilon); }
 
