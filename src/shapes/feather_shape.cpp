@@ -65,7 +65,7 @@ template <unsigned kWidth> void intersectPacket(const RTCIntersectFunctionNArgum
     RTCHitN_Ng_y(hit, N, i) = h.normal.y;
     RTCHitN_Ng_z(hit, N, i) = h.normal.z;
     RTCHitN_u(hit, N, i) = h.axial;
-    RTCHitN_v(hit, N, i) = h.angle;
+    RTCHitN_v(hit, N, i) = h.sinAngle;
     RTCHitN_primID(hit, N, i) = args->primID;
     RTCHitN_geomID(hit, N, i) = args->geomID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l) RTCHitN_instID(hit, N, i, l) = args->context->instID[l];
@@ -198,9 +198,13 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   const Vec3 b = s.b();
   const size_t barb = hit.primID / kBarbSegments;
   const int seg = int(hit.primID % kBarbSegments);
-  const float angle = hit.v, cosAngle = std::cos(angle), sinAngle = std::sin(angle);
+  // The strip is the part of the cylinder facing n (|angle| < pi/2), so the cosine is positive.
+  const float sinAngle = hit.v, cosAngle = std::sqrt(std::max(1.0f - sinAngle * sinAngle, 0.0f));
+  const float angle = std::asin(sinAngle);
   SurfaceInteraction si;
-  si.p = s.p0 + s.axis * (hit.u * s.length) + s.n * (radius_ * (cosAngle - 1.0f)) + b * (radius_ * sinAngle);
+  // cos - 1 as -sin^2 / (1 + cos): no cancellation near the top line.
+  const float cosMinusOne = -sinAngle * sinAngle / (1.0f + cosAngle);
+  si.p = s.p0 + s.axis * (hit.u * s.length) + s.n * (radius_ * cosMinusOne) + b * (radius_ * sinAngle);
   si.ng = s.n * cosAngle + b * sinAngle;
   si.t = hit.t;
   si.shape = this;
