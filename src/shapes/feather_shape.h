@@ -16,7 +16,8 @@
 //   reflection in the mitre planes. That transport is what lets consecutive cylinders meet
 //   exactly at their mitre; it cannot follow a twist of the vane normal about the barb axis.
 // - Hits: HitRecord.u = position along the segment (0 at its start vertex, 1 at its end),
-//   HitRecord.v = angle phi from the strip normal toward b = cross(barb direction, normal).
+//   HitRecord.v = sin(phi), phi the angle from the strip normal toward b = cross(barb direction,
+//   normal).
 //   SurfaceInteraction.uv = (position along the whole barb in [0, 1], phi / cover).
 // - Shading frame: n = the cylinder's outward normal at the hit (ng), t = the barbule
 //   direction, at angle `span` from the barb axis toward the tip and away from the ramus
