@@ -11,6 +11,7 @@
 #include "render/samplers/independent_sampler.h"
 #include "render/samplers/low_discrepancy_sampler.h"
 #include "render/samplers/multijitter_sampler.h"
+#include "render/samplers/pixel_sample_state.h"
 #include "render/samplers/sobol.h"
 #include "render/samplers/stratified_sampler.h"
 #include "scene/properties.h"
@@ -229,6 +230,40 @@ TEST(SamplerStratification, LowDiscrepancyFillsAllElementaryIntervals) {
           EXPECT_TRUE(oneInEachCell(cells, n)) << nx << " x " << ny << ", pixel " << pixel << ", dim " << dimension;
         }
       }
+  }
+}
+
+// The low-discrepancy sampler fills a pixel's first dimensions for all its samples at once; every
+// value must be the one computed for its sample alone, whatever order pixels, samples and
+// dimension kinds come in.
+TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
+  for (int n : {1, 4, 16, 64}) {
+    auto sampler = makeSampler("ldsampler", n);
+    const uint64_t seed = 7;
+    int checked = 0;
+    // Pixels revisited, sample indices past the pattern (a second round), and dimensions drawn
+    // as 1D by some samples and as 2D by others.
+    for (int pass = 0; pass < 2; ++pass)
+      for (int pixel : {3, 5, 3})
+        for (int i = 0; i < 2 * n; ++i) {
+          sampler->startPixelSample(pixel, 1, i, seed);
+          PixelSampleState reference;
+          reference.start(pixel, 1, i, hashCombine(seed, 0), uint32_t(n));
+          for (int d = 0; d < 12; ++d) {
+            uint64_t hash = reference.nextDimensionHash();
+            if ((d + i + pass) % 3 == 0) {
+              Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n), hash);
+              Vec2 got = sampler->get2D();
+              ASSERT_EQ(got.x, expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+              ASSERT_EQ(got.y, expected.y) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+            } else {
+              ASSERT_EQ(sampler->get1D(), LowDiscrepancySampler::point1D(reference.index, uint32_t(n), hash))
+                  << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+            }
+            ++checked;
+          }
+        }
+    EXPECT_EQ(checked, 2 * 3 * 2 * n * 12);
   }
 }
 

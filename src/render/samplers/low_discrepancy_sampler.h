@@ -4,7 +4,14 @@
 // any power-of-two prefix of it is stratified over all elementary intervals. Each dimension
 // scrambles with its own seed and shuffles which sample index gets which point, so
 // dimensions are not correlated with each other.
+//
+// The renderer draws a pixel's samples one after another, and every sample asks for the same
+// first dimensions: those are computed for all of the pixel's samples at once, the first time
+// the pixel asks for them, in a loop the compiler vectorises. The values are the same as one at
+// a time.
+#include <array>
 #include <memory>
+#include <vector>
 #include "render/sampler.h"
 #include "render/samplers/pixel_sample_state.h"
 
@@ -21,9 +28,34 @@ class LowDiscrepancySampler : public Sampler {
   float get1D() override;
   Vec2 get2D() override;
 
+  // Dimension values one sample at a time, without the per-pixel tables.
+  static float point1D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash);
+  static Vec2 point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash);
+
  private:
+  // A dimension's values for every sample index of the current pattern: x, then y for 2D ones.
+  struct DimensionTable {
+    uint64_t generation = 0;  // PixelSampleState::patternGeneration() it was filled for
+    bool twoD = false;
+    std::vector<float> values;
+  };
+  static constexpr uint32_t kTabulatedDimensions = 8;
+  static constexpr int kMaxTabulatedSamples = 4096;
+
+  // The table of the dimension about to be drawn, filled if stale; null when not tabulated.
+  const DimensionTable* table(bool twoD, uint64_t dimensionHash) {
+    const uint32_t d = state_.dimension - 1;  // nextDimensionHash() has moved on
+    if (d >= kTabulatedDimensions || sampleCount_ > kMaxTabulatedSamples) return nullptr;
+    DimensionTable& t = tables_[d];
+    if (t.generation != state_.patternGeneration() || t.twoD != twoD) fill(t, twoD, dimensionHash);
+    return &t;
+  }
+  void fill(DimensionTable& t, bool twoD, uint64_t dimensionHash);
+
   uint64_t seed_;
   PixelSampleState state_;
+  std::array<DimensionTable, kTabulatedDimensions> tables_;
+  std::vector<uint32_t> scratch_;
 };
 
 // <sampler type="ldsampler">: sample_count (4, rounded up to a power of two as Mitsuba does),

@@ -35,6 +35,10 @@ struct PixelSampleState {
     }
     dimension = 0;
   }
+  // Changes whenever the pattern does (a new pixel, seed or round): what a sampler derived from
+  // the pattern's hashes is stale once this differs. Never 0.
+  uint64_t patternGeneration() const { return generation_; }
+
   // Seeds `rng` for the current pixel sample (samplers that jitter or draw independent values).
   void seedRandomness() { rng.seedWith(hashCombine(pixelHash_, sample_), pixelHash_); }
   // A hash unique to the next dimension of this pixel's pattern.
@@ -50,6 +54,7 @@ struct PixelSampleState {
   static constexpr uint32_t kCachedDimensions = 8;
 
   void startPattern(uint32_t round) {
+    ++generation_;
     round_ = round;
     patternHash_ = hashCombine(pixelHash_, round);
     cachedDimensions_ = 0;
@@ -62,6 +67,7 @@ struct PixelSampleState {
   uint32_t sample_ = 0, round_ = 0;
   uint64_t dimensionHashes_[kCachedDimensions] = {};
   uint32_t cachedDimensions_ = 0;  // entries of dimensionHashes_ computed for patternHash_
+  uint64_t generation_ = 0;
 };
 
 }  // namespace columba
