@@ -112,6 +112,38 @@ struct BarbuleBSDF::LobeChoice {
   float transmission = 1.0f, reflection = 0.0f, trt = 0.0f;
 };
 
+// omega_o, and what R, TRT and the sampling density share for the pair (omega_i, omega_o): the
+// offsets lit from both, and the half vector with its in-plane direction, its normal in the
+// ellipse's frame and whether that normal reflects between the two (within thetaD, lit from both).
+struct BarbuleBSDF::Outgoing {
+  Vec3 w;
+  LitArc arc;
+  OffsetInterval common;
+  Vec3 m;
+  InPlaneDirection mPlane;
+  Vec2 mLocal;
+  bool reflects = false;
+};
+
+BarbuleBSDF::Outgoing BarbuleBSDF::outgoing(const Shading& s, const Incident& in, const Vec3& wo,
+                                            const LitArc& arc) const {
+  Outgoing out;
+  out.w = wo;
+  out.arc = arc;
+  if (!in.scatters) return out;  // no lobe and no density reads the rest
+  const BarbuleCrossSection& geometry = s.geometry;
+  out.common = geometry.commonOffsets(in.arc, arc);
+  Vec3 sum = in.w + wo;
+  float lengthSqr = lengthSquared(sum);
+  if (!(lengthSqr > 0.0f)) return out;
+  out.m = sum / std::sqrt(lengthSqr);
+  if (std::abs(out.m.y) >= kSinThetaD) return out;
+  out.mPlane = inPlane(out.m);
+  out.mLocal = geometry.toLocal(out.mPlane.dir);
+  out.reflects = geometry.isLit(in.arc, out.mLocal) && geometry.isLit(arc, out.mLocal);
+  return out;
+}
+
 BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuadrature quadrature)
     : params_(params),
       role_(role),
@@ -151,29 +183,23 @@ BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w, con
   return in;
 }
 
-Spectrum BarbuleBSDF::reflection(const Shading& s, const Incident& in, const Vec3& omegaO,
-                                 const LitArc& outArc) const {
+Spectrum BarbuleBSDF::reflection(const Shading& s, const Incident& in, const Outgoing& out) const {
+  if (!out.reflects) return Spectrum(0.0f);
   const BarbuleCrossSection& geometry = s.geometry;
-  Vec3 sum = in.w + omegaO;
-  float lengthSqr = lengthSquared(sum);
-  if (!(lengthSqr > 0.0f)) return Spectrum(0.0f);
-  Vec3 m = sum / std::sqrt(lengthSqr);
-  if (std::abs(m.y) >= kSinThetaD) return Spectrum(0.0f);
-  InPlaneDirection mp = inPlane(m);
-  Vec2 local = geometry.toLocal(mp.dir);
-  if (!geometry.isLit(in.arc, local) || !geometry.isLit(outArc, local)) return Spectrum(0.0f);
-
-  float ndf = geometry.radiusOfCurvature(local) / geometry.spacing() / (2.0f * kSinThetaD * mp.cosTheta);
+  const Vec3& m = out.m;
+  const InPlaneDirection& mp = out.mPlane;
+  float ndf = geometry.radiusOfCurvature(out.mLocal) / geometry.spacing() / (2.0f * kSinThetaD * mp.cosTheta);
   float shadowIn = longitudinalShadowing(in.w.z * mp.dir.x + in.w.x * mp.dir.y, in.w.y);
-  float shadowOut = longitudinalShadowing(omegaO.z * mp.dir.x + omegaO.x * mp.dir.y, omegaO.y);
-  float scale = ndf * shadowIn * shadowOut / (4.0f * std::abs(in.w.z) * std::abs(omegaO.z));
+  float shadowOut = longitudinalShadowing(out.w.z * mp.dir.x + out.w.x * mp.dir.y, out.w.y);
+  float scale = ndf * shadowIn * shadowOut / (4.0f * std::abs(in.w.z) * std::abs(out.w.z));
   FreeStandingFilm::Reflectance film = s.film.reflectance(dot(in.w, m));
   return toSpectrum((0.5f * scale) * (film.s + film.p));
 }
 
-Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const {
+Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& out) const {
   const BarbuleCrossSection& geometry = s.geometry;
-  OffsetInterval common = geometry.commonOffsets(in.arc, outArc);
+  const OffsetInterval& common = out.common;
+  const Vec3& omegaO = out.w;
   float length = common.length();
   if (!(length > 0.0f)) return Spectrum(0.0f);
 
@@ -243,10 +269,9 @@ FloatLanes BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn,
   return norm > 0.0f ? inner / norm : SpectrumLanes{};
 }
 
-BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Vec3& omegaO,
-                                      const LitArc& outArc) const {
-  if (!in.scatters || omegaO.z == 0.0f) return {};
-  return {reflection(s, in, omegaO, outArc), trt(s, in, omegaO, outArc)};
+BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Outgoing& out) const {
+  if (!in.scatters || out.w.z == 0.0f) return {};
+  return {reflection(s, in, out), trt(s, in, out)};
 }
 
 BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident& in) const {
@@ -275,30 +300,25 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident
   return choice;
 }
 
-float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
-                               const LitArc& outArc) const {
+float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice,
+                               const Outgoing& out) const {
   if (!in.scatters) return 0.0f;
-  const BarbuleCrossSection& geometry = s.geometry;
   float density = 0.0f;
-
-  Vec3 sum = in.w + wo;
-  float lengthSqr = lengthSquared(sum);
-  if (lengthSqr > 0.0f) {
-    Vec3 m = sum / std::sqrt(lengthSqr);
-    float cosHalf = dot(in.w, m);
-    if (cosHalf > 0.0f && geometry.isLit(outArc, geometry.toLocal(inPlane(m).dir)))
-      density += choice.reflection * visibleNormalPdf(geometry, in.arc, in.w, m) / (4.0f * cosHalf);
+  if (out.reflects) {
+    float cosHalf = dot(in.w, out.m);
+    if (cosHalf > 0.0f)
+      density += choice.reflection *
+                 visibleNormalPdfOfReflecting(s.geometry, in.arc, in.w, in.plane.cosTheta, out.m, out.mPlane, out.mLocal) /
+                 (4.0f * cosHalf);
   }
-
-  float common = geometry.commonOffsets(in.arc, outArc).length();
-  density += choice.trt * common / in.arc.width() * std::abs(wo.z) * kInvPi;
+  density += choice.trt * out.common.length() / in.arc.width() * std::abs(out.w.z) * kInvPi;
   return density;
 }
 
 Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const {
-  Lobes l = role_ == Role::CameraIncident ? lobes(s, fromWi, wo, outArc)
-                                          : lobes(s, incident(s, wo, outArc), fromWi.w, fromWi.arc);
-  return (l.reflection + l.trt) * std::abs(wo.z);
+  if (role_ == Role::CameraIncident) return total(lobes(s, fromWi, outgoing(s, fromWi, wo, outArc))) * std::abs(wo.z);
+  Incident fromWo = incident(s, wo, outArc);
+  return total(lobes(s, fromWo, outgoing(s, fromWo, fromWi.w, fromWi.arc))) * std::abs(wo.z);
 }
 
 Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -307,17 +327,25 @@ Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& w
   return evalWith(s, incident(s, wi, wiArc), wo, woArc);
 }
 
+BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
+                                     const LitArc& outArc) const {
+  Outgoing out = outgoing(s, fromWi, wo, outArc);
+  // With omega_i on the camera side, value and density share the pair's geometry.
+  Spectrum value = role_ == Role::CameraIncident ? total(lobes(s, fromWi, out)) * std::abs(wo.z)
+                                                 : evalWith(s, fromWi, wo, outArc);
+  return {value, samplingPdf(s, fromWi, choice, out)};
+}
+
 BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice,
                                      const Vec3& wo) const {
-  LitArc woArc = s.geometry.litArc(inPlane(wo).dir);
-  return {evalWith(s, fromWi, wo, woArc), samplingPdf(s, fromWi, choice, wo, woArc)};
+  return evalPdfWith(s, fromWi, choice, wo, s.geometry.litArc(inPlane(wo).dir));
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   Shading s(*this, ctx, wl);
   Incident in = incident(s, wi);
   if (!in.scatters) return 0.0f;
-  return samplingPdf(s, in, lobeChoice(s, in), wo, s.geometry.litArc(inPlane(wo).dir));
+  return samplingPdf(s, in, lobeChoice(s, in), outgoing(s, in, wo, s.geometry.litArc(inPlane(wo).dir)));
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
@@ -376,9 +404,10 @@ std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incide
   LitArc outArc = geometry.litArc(inPlane(bs.wo).dir);
   if (!geometry.isLit(outArc, localNormal)) return std::nullopt;
 
-  bs.pdf = samplingPdf(s, in, choice, bs.wo, outArc);
+  BSDFEvalPdf f = evalPdfWith(s, in, choice, bs.wo, outArc);
+  bs.pdf = f.pdf;
   if (!(bs.pdf > 0.0f)) return std::nullopt;
-  bs.weight = evalWith(s, in, bs.wo, outArc) / bs.pdf;
+  bs.weight = f.value / bs.pdf;
   return bs;
 }
 
@@ -390,7 +419,8 @@ Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const 
 BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO,
                                           const Wavelengths& wl) const {
   Shading s(*this, ctx, wl);
-  return lobes(s, incident(s, omegaI), omegaO, s.geometry.litArc(inPlane(omegaO).dir));
+  Incident in = incident(s, omegaI);
+  return lobes(s, in, outgoing(s, in, omegaO, s.geometry.litArc(inPlane(omegaO).dir)));
 }
 
 float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {

@@ -95,27 +95,32 @@ class BarbuleBSDF : public BSDF {
   struct Shading;
   struct Incident;
   struct LobeChoice;
+  struct Outgoing;
 
   // The cross-section with the point's own mu and H, when the context gives any.
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
   // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
   Incident incident(const Shading& s, const Vec3& w) const;
   Incident incident(const Shading& s, const Vec3& w, const LitArc& arc) const;
-  // The lobes toward omega_o, whose lit arc is `outArc`.
-  Lobes lobes(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
-  Spectrum reflection(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
-  Spectrum trt(const Shading& s, const Incident& in, const Vec3& omegaO, const LitArc& outArc) const;
+  // omega_o, whose lit arc is `arc`, with what the pair (omega_i, omega_o) shares.
+  Outgoing outgoing(const Shading& s, const Incident& in, const Vec3& wo, const LitArc& arc) const;
+  // The lobes toward omega_o.
+  Lobes lobes(const Shading& s, const Incident& in, const Outgoing& out) const;
+  static Spectrum total(const Lobes& l) { return l.reflection + l.trt; }
+  Spectrum reflection(const Shading& s, const Incident& in, const Outgoing& out) const;
+  Spectrum trt(const Shading& s, const Incident& in, const Outgoing& out) const;
   // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
   // per wavelength.
   FloatLanes trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
                                  float outY) const;
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Vec3& wo,
-                    const LitArc& outArc) const;
+  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;
   // eval with pdf, and sample, once the geometry, film, omega_i's incident quantities and lobe choice
   // are known.
   BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo) const;
+  BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
+                          const LitArc& outArc) const;
   std::optional<BSDFSample> sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice, float uComponent,
                                        Vec2 u) const;
   // f |cos wo| for the role; `fromWi` = incident(s, wi), `outArc` = wo's lit arc.

@@ -84,13 +84,17 @@ float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, c
   InPlaneDirection mp = inPlane(m);
   Vec2 local = geometry.toLocal(mp.dir);
   if (!geometry.isLit(arc, local)) return 0.0f;
+  return visibleNormalPdfOfReflecting(geometry, arc, w, inPlane(w).cosTheta, m, mp, local);
+}
+
+float visibleNormalPdfOfReflecting(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w,
+                                   float wCosTheta, const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal) {
   // phi: dh = rho cos(gamma - phi - mu) dphi with h uniform on the lit width.
-  float A = w.z * mp.dir.x + w.x * mp.dir.y;
-  InPlaneDirection wp = inPlane(w);
-  float pdfPhi = geometry.radiusOfCurvature(local) * (A / wp.cosTheta) / arc.width();
+  float A = w.z * mPlane.dir.x + w.x * mPlane.dir.y;
+  float pdfPhi = geometry.radiusOfCurvature(mLocal) * (A / wCosTheta) / arc.width();
   // theta given phi: (w . m) / mass, and dm = cos(theta) dtheta dphi.
-  float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(wm);
-  return pdfPhi * pdfTheta / mp.cosTheta;
+  float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(dot(w, m));
+  return pdfPhi * pdfTheta / mPlane.cosTheta;
 }
 
 }  // namespace columba

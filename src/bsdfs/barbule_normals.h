@@ -99,5 +99,9 @@ struct VisibleNormal {
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u);
 // Solid-angle density of sampleVisibleNormal producing m (0 where it cannot).
 float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, const Vec3& m);
+// The same for an m already known to be lit from w with |theta_m| < thetaD (w . m > 0, `arc` not
+// empty), given inPlane(w).cosTheta, inPlane(m) and m's in-plane normal in the ellipse's frame.
+float visibleNormalPdfOfReflecting(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w,
+                                   float wCosTheta, const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal);
 
 }  // namespace columba
