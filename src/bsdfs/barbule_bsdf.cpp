@@ -117,7 +117,6 @@ struct BarbuleBSDF::LobeChoice {
 // ellipse's frame and whether that normal reflects between the two (within thetaD, lit from both).
 struct BarbuleBSDF::Outgoing {
   Vec3 w;
-  LitArc arc;
   OffsetInterval common;
   Vec3 m;
   InPlaneDirection mPlane;
@@ -129,7 +128,6 @@ BarbuleBSDF::Outgoing BarbuleBSDF::outgoing(const Shading& s, const Incident& in
                                             const LitArc& arc) const {
   Outgoing out;
   out.w = wo;
-  out.arc = arc;
   if (!in.scatters) return out;  // no lobe and no density reads the rest
   const BarbuleCrossSection& geometry = s.geometry;
   out.common = geometry.commonOffsets(in.arc, arc);
