@@ -116,8 +116,6 @@ inline bool PackedStrip::intersect(const StripProfile& profile, const Vec3& o, c
   // Rays leaving a neighbouring strip often cross this cylinder only behind their start.
   if (tc + dt <= tmin) return false;
   float oz = dot(rel, axis), dz = dot(d, axis);
-  // Slack for the mitre planes: a few ulps of the coordinates the hit point was computed from.
-  float slack = 1e-6f * (maxAbsComponent(p0) + std::abs(ox) + std::abs(oy) + std::abs(oz) + radius);
   for (float t : {tc - dt, tc + dt}) {
     if (t <= tmin) continue;
     if (t >= tmax) return false;
@@ -125,6 +123,8 @@ inline bool PackedStrip::intersect(const StripProfile& profile, const Vec3& o, c
     if (py <= 0.0f) continue;  // the half of the cylinder away from the strip
     float axial = pz / length;
     if (std::abs(px) > profile.halfWidthAt(axial)) continue;
+    // Slack for the mitre planes: a few ulps of the coordinates the hit point was computed from.
+    float slack = 1e-6f * (maxAbsComponent(p0) + std::abs(ox) + std::abs(oy) + std::abs(oz) + radius);
     float below = py - radius;  // height relative to the top line
     if (px * startMitre.x + below * startMitre.y + pz * startMitre.z < -slack) continue;
     if (px * endMitre.x + below * endMitre.y + (pz - length) * endMitre.z > slack) continue;
