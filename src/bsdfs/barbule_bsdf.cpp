@@ -304,10 +304,11 @@ float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeC
   float density = 0.0f;
   if (out.reflects) {
     float cosHalf = dot(in.w, out.m);
-    if (cosHalf > 0.0f)
-      density += choice.reflection *
-                 visibleNormalPdfOfReflecting(s.geometry, in.arc, in.w, in.plane.cosTheta, out.m, out.mPlane, out.mLocal) /
-                 (4.0f * cosHalf);
+    if (cosHalf > 0.0f) {
+      float normalPdf =
+          visibleNormalPdfOfReflecting(s.geometry, in.arc, in.w, in.plane.cosTheta, out.m, out.mPlane, out.mLocal);
+      density += choice.reflection * normalPdf / (4.0f * cosHalf);
+    }
   }
   density += choice.trt * out.common.length() / in.arc.width() * std::abs(out.w.z) * kInvPi;
   return density;

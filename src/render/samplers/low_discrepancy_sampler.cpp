@@ -85,7 +85,8 @@ float LowDiscrepancySampler::get1D() {
 
 Vec2 LowDiscrepancySampler::get2D() {
   uint64_t hash = state_.nextDimensionHash();
-  if (const DimensionTable* t = table(true, hash)) return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
+  if (const DimensionTable* t = table(true, hash))
+    return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
   return point2D(state_.index, uint32_t(sampleCount_), hash);
 }
 
