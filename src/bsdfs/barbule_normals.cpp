@@ -77,18 +77,8 @@ VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const Lit
   return out;
 }
 
-float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, const Vec3& m) {
-  if (std::abs(m.y) >= kSinThetaD || !(arc.width() > 0.0f)) return 0.0f;
-  float wm = dot(w, m);
-  if (!(wm > 0.0f)) return 0.0f;
-  InPlaneDirection mp = inPlane(m);
-  Vec2 local = geometry.toLocal(mp.dir);
-  if (!geometry.isLit(arc, local)) return 0.0f;
-  return visibleNormalPdfOfReflecting(geometry, arc, w, inPlane(w).cosTheta, m, mp, local);
-}
-
-float visibleNormalPdfOfReflecting(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w,
-                                   float wCosTheta, const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal) {
+float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float wCosTheta,
+                       const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal) {
   // phi: dh = rho cos(gamma - phi - mu) dphi with h uniform on the lit width.
   float A = w.z * mPlane.dir.x + w.x * mPlane.dir.y;
   float pdfPhi = geometry.radiusOfCurvature(mLocal) * (A / wCosTheta) / arc.width();

@@ -97,11 +97,11 @@ struct VisibleNormal {
 // A visible normal from w (w.z > 0; `arc` = geometry.litArc(inPlane(w).dir), not empty): the
 // offset from u.x, theta from u.y.
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u);
-// Solid-angle density of sampleVisibleNormal producing m (0 where it cannot).
-float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, const Vec3& m);
-// The same for an m already known to be lit from w with |theta_m| < thetaD (w . m > 0, `arc` not
-// empty), given inPlane(w).cosTheta, inPlane(m) and m's in-plane normal in the ellipse's frame.
-float visibleNormalPdfOfReflecting(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w,
-                                   float wCosTheta, const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal);
+// Solid-angle density of sampleVisibleNormal producing m, for an m it can produce: lit from w
+// (w . m > 0, `arc` not empty, m's in-plane normal on the lit part of `arc`) with
+// |theta_m| < thetaD. Takes inPlane(w).cosTheta, inPlane(m) and m's in-plane normal in the
+// ellipse's frame, which the caller has computed for those checks.
+float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float wCosTheta,
+                       const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal);
 
 }  // namespace columba
