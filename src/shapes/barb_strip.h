@@ -31,8 +31,8 @@ inline float maxAbsComponent(const Vec3& v) { return std::max(std::abs(v.x), std
 struct StripHit {
   float t = 0.0f;
   float axial = 0.0f;  // distance along the segment from its start vertex, divided by its length
-  float sinAngle = 0.0f;  // sin(phi), phi the signed angle from n toward b (|phi| < pi/2)
-  Vec3 normal;            // the cylinder's outward unit normal at the hit
+  float sinAngle = 0.0f;  // sin(phi), phi the signed angle from n toward b (|phi| < pi/2); the
+                          // normal and the angle follow from it (FeatherShape::interaction)
 };
 
 // The cross-section of a strip: the cylinder's radius and the strip's half-width R sin(phi_max)
@@ -130,10 +130,8 @@ inline bool PackedStrip::intersect(const StripProfile& profile, const Vec3& o, c
     if (px * endMitre.x + below * endMitre.y + (pz - length) * endMitre.z > slack) continue;
     hit.t = t;
     hit.axial = axial;
-    // The angle itself is left to whoever needs it: most hits are superseded by nearer ones.
-    float invRadius = 1.0f / std::sqrt(px * px + py * py);
-    hit.sinAngle = px * invRadius;
-    hit.normal = b * (px * invRadius) + n * (py * invRadius);
+    // The angle and normal are left to the surviving hit: most are superseded by nearer ones.
+    hit.sinAngle = px * (1.0f / std::sqrt(px * px + py * py));
     return true;
   }
   return false;

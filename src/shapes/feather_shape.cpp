@@ -61,9 +61,10 @@ template <unsigned kWidth> void intersectPacket(const RTCIntersectFunctionNArgum
     StripHit h;
     if (!shape->intersectStrip(args->primID, o, d, RTCRayN_tnear(ray, N, i), RTCRayN_tfar(ray, N, i), h)) continue;
     RTCRayN_tfar(ray, N, i) = h.t;
-    RTCHitN_Ng_x(hit, N, i) = h.normal.x;
-    RTCHitN_Ng_y(hit, N, i) = h.normal.y;
-    RTCHitN_Ng_z(hit, N, i) = h.normal.z;
+    // interaction() derives the normal from sin(phi); Ng is left defined, not computed.
+    RTCHitN_Ng_x(hit, N, i) = 0.0f;
+    RTCHitN_Ng_y(hit, N, i) = 0.0f;
+    RTCHitN_Ng_z(hit, N, i) = 0.0f;
     RTCHitN_u(hit, N, i) = h.axial;
     RTCHitN_v(hit, N, i) = h.sinAngle;
     RTCHitN_primID(hit, N, i) = args->primID;
