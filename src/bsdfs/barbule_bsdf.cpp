@@ -305,7 +305,7 @@ float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeC
   if (out.reflects) {
     float cosHalf = dot(in.w, out.m);
     if (cosHalf > 0.0f) {
-      float normalPdf = visibleNormalPdf(s.geometry, in.arc, in.w, in.plane.cosTheta, out.m, out.mPlane, out.mLocal);
+      float normalPdf = visibleNormalPdf(s.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
       density += choice.reflection * normalPdf / (4.0f * cosHalf);
     }
   }

@@ -78,12 +78,12 @@ VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const Lit
 }
 
 float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float wCosTheta,
-                       const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal) {
+                       float wDotM, const InPlaneDirection& mPlane, Vec2 mLocal) {
   // phi: dh = rho cos(gamma - phi - mu) dphi with h uniform on the lit width.
   float A = w.z * mPlane.dir.x + w.x * mPlane.dir.y;
   float pdfPhi = geometry.radiusOfCurvature(mLocal) * (A / wCosTheta) / arc.width();
   // theta given phi: (w . m) / mass, and dm = cos(theta) dtheta dphi.
-  float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(dot(w, m));
+  float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(wDotM);
   return pdfPhi * pdfTheta / mPlane.cosTheta;
 }
 

@@ -99,9 +99,9 @@ struct VisibleNormal {
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u);
 // Solid-angle density of sampleVisibleNormal producing m, for an m it can produce: lit from w
 // (w . m > 0, `arc` not empty, m's in-plane normal on the lit part of `arc`) with
-// |theta_m| < thetaD. Takes inPlane(w).cosTheta, inPlane(m) and m's in-plane normal in the
-// ellipse's frame, which the caller has computed for those checks.
+// |theta_m| < thetaD. Takes what the caller has computed for those checks: inPlane(w).cosTheta,
+// w . m, inPlane(m) and m's in-plane normal in the ellipse's frame.
 float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float wCosTheta,
-                       const Vec3& m, const InPlaneDirection& mPlane, Vec2 mLocal);
+                       float wDotM, const InPlaneDirection& mPlane, Vec2 mLocal);
 
 }  // namespace columba
