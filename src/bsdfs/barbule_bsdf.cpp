@@ -313,8 +313,12 @@ float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeC
   return density;
 }
 
+Spectrum BarbuleBSDF::cameraSideValue(const Shading& s, const Incident& in, const Outgoing& out) const {
+  return total(lobes(s, in, out)) * std::abs(out.w.z);
+}
+
 Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const {
-  if (role_ == Role::CameraIncident) return total(lobes(s, fromWi, outgoing(s, fromWi, wo, outArc))) * std::abs(wo.z);
+  if (role_ == Role::CameraIncident) return cameraSideValue(s, fromWi, outgoing(s, fromWi, wo, outArc));
   Incident fromWo = incident(s, wo, outArc);
   return total(lobes(s, fromWo, outgoing(s, fromWo, fromWi.w, fromWi.arc))) * std::abs(wo.z);
 }
@@ -329,14 +333,8 @@ BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, c
                                      const LitArc& outArc) const {
   Outgoing out = outgoing(s, fromWi, wo, outArc);
   // With omega_i on the camera side, value and density share the pair's geometry.
-  Spectrum value = role_ == Role::CameraIncident ? total(lobes(s, fromWi, out)) * std::abs(wo.z)
-                                                 : evalWith(s, fromWi, wo, outArc);
+  Spectrum value = role_ == Role::CameraIncident ? cameraSideValue(s, fromWi, out) : evalWith(s, fromWi, wo, outArc);
   return {value, samplingPdf(s, fromWi, choice, out)};
-}
-
-BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice,
-                                     const Vec3& wo) const {
-  return evalPdfWith(s, fromWi, choice, wo, s.geometry.litArc(inPlane(wo).dir));
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -362,8 +360,8 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
   BSDFVertexQueries q;
   if (request.woLight) {
     const Vec3& wo = *request.woLight;
-    q.toLight = request.lightPdf ? evalPdfWith(s, in, choice, wo)
-                                 : BSDFEvalPdf{evalWith(s, in, wo, s.geometry.litArc(inPlane(wo).dir)), 0.0f};
+    LitArc woArc = s.geometry.litArc(inPlane(wo).dir);
+    q.toLight = request.lightPdf ? evalPdfWith(s, in, choice, wo, woArc) : BSDFEvalPdf{evalWith(s, in, wo, woArc), 0.0f};
   }
   if (request.sample) q.sampled = sampleWith(s, in, choice, request.uComponent, request.u);
   if (request.passThrough) q.passThrough = Spectrum(transmission(s.geometry, in));

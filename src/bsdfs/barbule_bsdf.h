@@ -118,13 +118,14 @@ class BarbuleBSDF : public BSDF {
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;
   // eval with pdf, and sample, once the geometry, film, omega_i's incident quantities and lobe choice
   // are known.
-  BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo) const;
   BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
                           const LitArc& outArc) const;
   std::optional<BSDFSample> sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice, float uComponent,
                                        Vec2 u) const;
   // f |cos wo| for the role; `fromWi` = incident(s, wi), `outArc` = wo's lit arc.
   Spectrum evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const;
+  // f |cos wo| with omega_i = in.w on the camera side: the lobes of the pair `out` already holds.
+  Spectrum cameraSideValue(const Shading& s, const Incident& in, const Outgoing& out) const;
 
   BarbuleParameters params_;
   Role role_;
