@@ -34,6 +34,7 @@ scenes+=("neck_direction1 (800x600, 16 spp)|$root/scenes/neck_direction1.xml|-D 
 # Timings on shared machines swing by tens of percent from run to run, most with several threads:
 # each scene runs BENCH_REPEATS times per thread count; the table shows the median and fastest run.
 repeats=${BENCH_REPEATS:-3}
+[[ $repeats =~ ^[1-9][0-9]*$ ]] || { echo "BENCH_REPEATS must be a positive whole number, not '$repeats'" >&2; exit 1; }
 echo "== Scenes (threads: 1 and $(nproc); median and fastest of $repeats runs)"
 printf '%-40s %7s %9s %9s %12s %9s\n' scene threads median_s fastest_s "Msamples/s" "Mrays/s"
 for entry in "${scenes[@]}"; do
