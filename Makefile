@@ -1,10 +1,12 @@
-# Columba: `make demo` renders the default scene, `make test` runs the test suite.
-# Both install missing Debian packages and build Release first.
+# Columba: `make demo` renders the default scene, `make test` runs the test suite,
+# `make install [PREFIX=/usr/local]` installs the `columba` binary with its scenes and documentation.
+# All of them install missing Debian packages and build Release first.
 BUILD ?= build
 JOBS ?= $(shell nproc)
+PREFIX ?= /usr/local
 COLUMBA := $(BUILD)/columba
 
-.PHONY: deps configure build demo test bench figures clean
+.PHONY: deps configure build demo test install bench figures clean
 
 deps:
 	@./scripts/install-deps.sh
@@ -21,6 +23,13 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Installs as the current user where PREFIX is writable, through sudo otherwise (the build itself
+# stays the user's).
+install: build
+	@mkdir -p "$(PREFIX)" 2>/dev/null || true
+	@if [ -w "$(PREFIX)" ]; then cmake --install $(BUILD) --prefix "$(PREFIX)"; \
+	else sudo cmake --install $(BUILD) --prefix "$(PREFIX)"; fi
 
 bench: build
 	@./scripts/bench.sh $(BUILD)
