@@ -338,15 +338,18 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
   for (int i = 0; i < 20000; ++i) {
     Vec3 wi = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
     Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-    // barbulebsdf: f(wi, wo) |cos wo|; barbulebsdfev: f(wo, wi) |cos wo| with the model's omega_i = wo.
+    // barbulebsdf: f(wi, wo) |cos wo|. barbulebsdfev is the scatterometer quantity with the light
+    // at wo and the camera at wi: f(wo, wi) |cos wi|, i.e. barbulebsdf with the roles swapped.
     BarbuleBSDF::Lobes forward = camera.evalLobes(ctx, wi, wo, kWavelengths);
     BarbuleBSDF::Lobes swapped = camera.evalLobes(ctx, wo, wi, kWavelengths);
     Spectrum expectedCamera = (forward.reflection + forward.trt) * std::abs(wo.z);
-    Spectrum expectedLight = (swapped.reflection + swapped.trt) * std::abs(wo.z);
+    Spectrum expectedLight = (swapped.reflection + swapped.trt) * std::abs(wi.z);
     Spectrum fc = camera.eval(ctx, wi, wo, kWavelengths), fl = light.eval(ctx, wi, wo, kWavelengths);
+    Spectrum rolesSwapped = camera.eval(ctx, wo, wi, kWavelengths);
     for (int k = 0; k < kSpectrumSamples; ++k) {
       ASSERT_NEAR(fc[k], expectedCamera[k], 1e-6f * expectedCamera[k] + 1e-9f);
       ASSERT_NEAR(fl[k], expectedLight[k], 1e-6f * expectedLight[k] + 1e-9f);
+      ASSERT_NEAR(fl[k], rolesSwapped[k], 1e-6f * rolesSwapped[k] + 1e-9f);
     }
     // Both sample alike and report the same density.
     EXPECT_EQ(camera.pdf(ctx, wi, wo, kWavelengths), light.pdf(ctx, wi, wo, kWavelengths));

@@ -319,8 +319,10 @@ Spectrum BarbuleBSDF::cameraSideValue(const Shading& s, const Incident& in, cons
 
 Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const {
   if (role_ == Role::CameraIncident) return cameraSideValue(s, fromWi, outgoing(s, fromWi, wo, outArc));
+  // The scatterometer's quantity: light from wo, the camera's cosine (wi), so that a visualiser
+  // image is the power scattered per solid angle toward each camera direction.
   Incident fromWo = incident(s, wo, outArc);
-  return total(lobes(s, fromWo, outgoing(s, fromWo, fromWi.w, fromWi.arc))) * std::abs(wo.z);
+  return total(lobes(s, fromWo, outgoing(s, fromWo, fromWi.w, fromWi.arc))) * std::abs(fromWi.w.z);
 }
 
 Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {

@@ -12,7 +12,9 @@
 // - The model's incident direction omega_i is the one whose lit arc, coverage r and film entry
 //   the lobes are built on. `barbulebsdf` uses wi (the camera side) as omega_i, as a BSDF-sampled
 //   path tracer needs; `barbulebsdfev` (Role::LightIncident) evaluates with omega_i = wo, the
-//   light direction, as the paper's emitter-sampled visualisations do. Both sample the same way
+//   light direction, as the paper's emitter-sampled visualisations do, and returns what an
+//   imaging scatterometer records, f(omega_light, omega_camera) |cos theta_camera| (the camera's
+//   cosine, not the light's). Both sample the same way
 //   (from wi) and report the density of that sampler, with weight = eval / pdf; for the
 //   evaluation twin this is unbiased wherever eval is reachable from wi (always for R, whose
 //   value is symmetric; TRT needs a point lit from both directions either way), but it is meant

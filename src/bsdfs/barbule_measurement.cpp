@@ -70,7 +70,7 @@ LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, con
 Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int supersampling) {
   Image image(resolution, resolution);
   std::vector<WavelengthGroup> groups = wavelengthGroups(visibleWavelengthGrid(5.0f));
-  const float dLambda = 5.0f, cosI = std::abs(omegaI.z);
+  const float dLambda = 5.0f;
   BSDFContext ctx;
   tbb::parallel_for(0, resolution, [&](int py) {
     for (int px = 0; px < resolution; ++px) {
@@ -78,7 +78,7 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
       for (int sy = 0; sy < supersampling; ++sy)
         for (int sx = 0; sx < supersampling; ++sx) {
           float x = 2.0f * (px + (sx + 0.5f) / supersampling) / resolution - 1.0f;
-          float y = 1.0f - 2.0f * (py + (sy + 0.5f) / supersampling) / resolution;
+          float y = 2.0f * (py + (sy + 0.5f) / supersampling) / resolution - 1.0f;
           float r = std::sqrt(x * x + y * y);
           if (r >= 1.0f) continue;
           float theta = r * kHalfPi, phi = std::atan2(y, x);
@@ -86,7 +86,7 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
           for (const WavelengthGroup& g : groups) {
             BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, wo, g.wl);
             for (int k = 0; k < g.count; ++k)
-              xyz += cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * cosI * dLambda);
+              xyz += cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo.z) * dLambda);
           }
         }
       Vec3 rgb = xyzToLinearRGB(xyz / (cieYIntegral() * float(supersampling * supersampling)));

@@ -16,11 +16,12 @@ struct LobeReflectance {
 };
 LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
 
-// Linear RGB of the radiance reflected toward every direction of the upper hemisphere under a
-// light of unit spectral irradiance (flat spectrum) from `omegaI`: f(omegaI, omegaO) cos(theta_i)
-// integrated against the colour matching functions. The image disk maps to the hemisphere as
-// in the `bsdfvisualizer` sensor (theta = r pi/2, phi = atan2(y, x), image up = +y); pixels
-// outside it are black. `supersampling`^2 directions per pixel.
+// Linear RGB of what an imaging scatterometer records under a beam of unit spectral power (flat
+// spectrum) from `omegaI`: f(omegaI, omegaO) |cos theta_o| per solid angle toward every direction
+// of the upper hemisphere, integrated against the colour matching functions. The image disk maps
+// to the hemisphere as in the `bsdfvisualizer` sensor (theta = r pi/2, phi = atan2(v, u), v
+// growing downward with the row); pixels outside it are black. `supersampling`^2 directions per
+// pixel.
 Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int supersampling = 2);
 
 // Wavelengths from 360 to 830 nm every `step` nm.

@@ -3,8 +3,9 @@
 namespace columba {
 
 std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
+  // Film rows grow downward and so does v: the top half of the image looks from -y.
   float x = filmPosition.x * xScale_ - 1.0f;
-  float y = 1.0f - filmPosition.y * yScale_;
+  float y = filmPosition.y * yScale_ - 1.0f;
   float rSqr = x * x + y * y;
   if (rSqr >= 1.0f) return std::nullopt;
   // theta = r pi/2 and phi = atan2(y, x), whose cosine and sine are x / r and y / r:
@@ -22,7 +23,7 @@ std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
 bool BSDFVisualizerSensor::seesAnyOf(Vec2 lo, Vec2 hi) const {
   // The point of the rectangle nearest the disk's centre, in the disk's coordinates.
   float x0 = lo.x * xScale_ - 1.0f, x1 = hi.x * xScale_ - 1.0f;
-  float y0 = 1.0f - hi.y * yScale_, y1 = 1.0f - lo.y * yScale_;
+  float y0 = lo.y * yScale_ - 1.0f, y1 = hi.y * yScale_ - 1.0f;
   float x = clampf(0.0f, x0, x1), y = clampf(0.0f, y0, y1);
   return x * x + y * y < 1.0f;
 }

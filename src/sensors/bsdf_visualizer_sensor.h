@@ -1,7 +1,9 @@
 #pragma once
 // `bsdfvisualizer`: an imaging scatterometer. The image disk maps to the hemisphere above the
-// origin (theta = r * pi/2, phi = atan2(y, x), image up = +y); every pixel looks at the origin
-// from its direction. Pixels outside the disk are black.
+// origin: for film position (p_x, p_y) of a W x H film, u = 2 p_x / W - 1 and v = 2 p_y / H - 1
+// (v grows downward with the image row, as in the paper's implementation: what a camera at the
+// sample looking up at the instrument's dome sees), theta = r pi/2 with r = |(u, v)|,
+// phi = atan2(v, u). Every pixel looks at the origin from its direction; outside the disk, black.
 #include "scene/properties.h"
 #include "sensors/sensor.h"
 
