@@ -14,6 +14,10 @@ namespace {
 const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film",  "rfilter",
                                            "sampler", "integrator", "texture", "medium", "phase"};
 
+// Plug-ins are built recursively; real scenes nest a handful deep, and a bound keeps a hostile
+// file from exhausting the stack.
+constexpr int kMaxPluginNesting = 64;
+
 struct NamedObject {
   std::shared_ptr<Object> object;
   std::string tag, type;
@@ -27,17 +31,21 @@ class SceneBuilder {
   SceneBuilder(const Defines& defines, const PluginRegistry& registry) : vars_(defines), registry_(registry) {}
 
   void readScene(const XmlDocument& doc, ParsedScene& scene);
+  // Reads a scene file, which must not be one of the files whose <include>s led to it.
+  void readFile(const std::string& path, ParsedScene& scene);
+  std::vector<std::string> unusedDefines() const { return vars_.unusedDefines(); }
 
  private:
   void include(const XmlElement& e, ParsedScene& scene);
-  NamedObject instantiate(const XmlElement& e);
+  // `depth` counts the plug-ins enclosing `e`.
+  NamedObject instantiate(const XmlElement& e, int depth);
   Properties::Child reference(const XmlElement& e) const;
   void readParameter(const XmlElement& e, Properties& props) const;
 
   SceneVariables vars_;
   const PluginRegistry& registry_;
   std::map<std::string, NamedObject> ids_;
-  std::vector<std::string> includeStack_;
+  std::vector<std::string> includeStack_;  // the files being read, outermost first
 };
 
 void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
@@ -52,7 +60,7 @@ void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
   for (const XmlElement& e : root.children()) {
     const std::string tag = e.tag();
     if (kPluginTags.count(tag)) {
-      scene.objects.push_back(instantiate(e).object);
+      scene.objects.push_back(instantiate(e, 0).object);
     } else if (tag == "default") {
       e.allowAttributes({"name", "value"});
       e.requireNoChildren();
@@ -75,14 +83,26 @@ void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(e.location(), "included file '" + path.string() + "' not found");
   std::string key = fs::weakly_canonical(path).string();
-  if (std::find(includeStack_.begin(), includeStack_.end(), key) != includeStack_.end())
-    throw InputError(e.location(), "'" + path.string() + "' includes itself");
-  includeStack_.push_back(key);
-  readScene(*XmlDocument::fromFile(path.string()), scene);
+  auto first = std::find(includeStack_.begin(), includeStack_.end(), key);
+  if (first != includeStack_.end()) {
+    std::string cycle;
+    for (auto file = first; file != includeStack_.end(); ++file) cycle += *file + " -> ";
+    throw InputError(e.location(), "including '" + path.string() + "' closes an include cycle: " + cycle + key);
+  }
+  readFile(path.string(), scene);
+}
+
+void SceneBuilder::readFile(const std::string& path, ParsedScene& scene) {
+  std::unique_ptr<XmlDocument> doc = XmlDocument::fromFile(path);
+  includeStack_.push_back(std::filesystem::weakly_canonical(path).string());
+  readScene(*doc, scene);
   includeStack_.pop_back();
 }
 
-NamedObject SceneBuilder::instantiate(const XmlElement& e) {
+NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
+  if (depth >= kMaxPluginNesting)
+    throw InputError(e.location(), "<" + e.tag() + "> is nested more than " + std::to_string(kMaxPluginNesting) +
+                                       " plug-ins deep");
   e.allowAttributes({"type", "id", "name"});
   Properties props;
   props.tag = e.tag();
@@ -103,7 +123,7 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e) {
 
   for (const XmlElement& c : e.children()) {
     if (kPluginTags.count(c.tag())) {
-      NamedObject nested = instantiate(c);
+      NamedObject nested = instantiate(c, depth + 1);
       Properties::Child child;
       child.name = c.attribute("name", "");
       child.object = nested.object;
@@ -223,9 +243,10 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
 }  // namespace
 
 ParsedScene loadSceneFile(const std::string& path, const Defines& defines, const PluginRegistry& registry) {
-  std::unique_ptr<XmlDocument> doc = XmlDocument::fromFile(path);
   ParsedScene scene;
-  SceneBuilder(defines, registry).readScene(*doc, scene);
+  SceneBuilder builder(defines, registry);
+  builder.readFile(path, scene);
+  scene.unusedDefines = builder.unusedDefines();
   return scene;
 }
 
@@ -233,7 +254,9 @@ ParsedScene loadSceneString(const std::string& xml, const std::string& sourceNam
                             const Defines& defines, const PluginRegistry& registry) {
   XmlDocument doc(xml, sourceName, baseDir);
   ParsedScene scene;
-  SceneBuilder(defines, registry).readScene(doc, scene);
+  SceneBuilder builder(defines, registry);
+  builder.readScene(doc, scene);
+  scene.unusedDefines = builder.unusedDefines();
   return scene;
 }
 

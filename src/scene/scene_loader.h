@@ -11,6 +11,7 @@ namespace columba {
 // The top-level plug-ins of a <scene>, in document order (shapes, emitters, sensor, ...).
 struct ParsedScene {
   std::vector<std::shared_ptr<Object>> objects;
+  std::vector<std::string> unusedDefines;  // -D names that no $variable of the scene used
 };
 
 using Defines = std::map<std::string, std::string>;

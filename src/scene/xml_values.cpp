@@ -3,7 +3,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace columba {
 
@@ -59,6 +61,10 @@ double parseFloat(const std::string& text, const std::string& what, const Source
   auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
     throw badValue("number", text, what, loc);
+  // Scene values are used as floats: a larger one would silently become infinite.
+  if (std::abs(v) > double(std::numeric_limits<float>::max()))
+    throw InputError(loc, "number '" + trim(text) + "' for " + what + " is out of the range of a float (at most " +
+                              "3.4e38 in magnitude)");
   return v;
 }
 
@@ -110,6 +116,11 @@ SpectralDistribution parseSpectrum(const std::string& text, const std::string& w
 }
 
 SpectralDistribution readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc) {
+  // Devices and pipes could be read forever.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(loc, "spectrum file '" + path + "' for " + what + " is not a regular file" +
+                              (std::filesystem::exists(path, ec) ? "" : " (it does not exist)"));
   std::ifstream in(path);
   if (!in) throw InputError(loc, "cannot open spectrum file '" + path + "' for " + what);
   std::vector<float> lambdas, values;

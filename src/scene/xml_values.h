@@ -10,7 +10,8 @@
 
 namespace columba {
 
-// A finite decimal number; the whole text must be the number (surrounding spaces aside).
+// A decimal number within the range of a float; the whole text must be the number (surrounding
+// spaces aside).
 double parseFloat(const std::string& text, const std::string& what, const SourceLocation& loc);
 long long parseInteger(const std::string& text, const std::string& what, const SourceLocation& loc);
 // "true" or "false", in any letter case.
@@ -21,8 +22,8 @@ std::vector<double> parseFloatList(const std::string& text, const std::string& w
 Vec3 parseVec3(const std::string& text, const std::string& what, const SourceLocation& loc);
 // "30" (constant) or "400:0.78, 500:0.8, ..." (piecewise linear; wavelengths in nm, increasing).
 SpectralDistribution parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc);
-// A text file of "wavelength value" lines ('#' starts a comment). Errors point at the file's
-// own line; `loc` is used when the file cannot be opened.
+// A regular text file of "wavelength value" lines ('#' starts a comment). Errors point at the
+// file's own line; `loc` is used when the file is missing, not a regular file or unreadable.
 SpectralDistribution readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc);
 
 }  // namespace columba
