@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
+#include <utility>
 #include "core/rng.h"
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
@@ -166,23 +166,27 @@ TEST(Optics, KeratinFollowsCauchysLaw) {
   EXPECT_FALSE(iorFromName("1.5x"));
 }
 
-TEST(Optics, MelaninTableMatchesTheMeasuredData) {
-  std::ifstream file(std::string(COLUMBA_SHARED_DIR) + "/reference/data/melanin.r.spd");
-  ASSERT_TRUE(file) << "reference data not found";
-  double lambda, value, previousLambda = 0, previousValue = 0;
-  int count = 0;
-  while (file >> lambda >> value) {
-    EXPECT_NEAR(melaninReflectance(float(lambda)), value, 1e-6) << lambda;
-    if (count > 0) {
-      // Linear in between.
-      double mid = 0.5 * (lambda + previousLambda);
-      EXPECT_NEAR(melaninReflectance(float(mid)), 0.5 * (value + previousValue), 1e-5) << mid;
-    }
-    previousLambda = lambda;
-    previousValue = value;
-    ++count;
+// The embedded melanin table against the measured reflectance published with the paper's own
+// implementation (Huang et al. 2022, github.com/RiverIntheSky/dove_neck,
+// resources/data/ior/melanin.r.spd: 105 lines of wavelength nm and intensity reflectance, 249.79
+// to 900.06 nm). Spot values across the range, its minimum and maximum, and both ends.
+TEST(Optics, MelaninTableMatchesThePublishedMeasurements) {
+  const std::pair<double, double> published[] = {
+      {249.7909, 0.0300}, {253.6204, 0.0284}, {282.3302, 0.0199}, {331.7368, 0.0412}, {399.6706, 0.0470},
+      {460.6789, 0.0487}, {501.3511, 0.0496}, {542.0233, 0.0509}, {548.8020, 0.0510}, {603.0316, 0.0522},
+      {670.7238, 0.0551}, {704.7121, 0.0562}, {799.6139, 0.0584}, {853.8435, 0.0593}, {894.5158, 0.0595},
+      {900.0620, 0.0593}};
+  for (const auto& [lambda, value] : published) EXPECT_NEAR(melaninReflectance(float(lambda)), value, 1e-6) << lambda;
+  // Linear between neighbouring measurements.
+  EXPECT_NEAR(melaninReflectance(0.5f * (249.7909f + 253.6204f)), 0.5 * (0.0300 + 0.0284), 1e-5);
+  EXPECT_NEAR(melaninReflectance(0.5f * (542.0233f + 548.8020f)), 0.5 * (0.0509 + 0.0510), 1e-5);
+  EXPECT_NEAR(melaninReflectance(0.25f * 894.5158f + 0.75f * 900.0620f), 0.25 * 0.0595 + 0.75 * 0.0593, 1e-5);
+  // The measurements lie between 0.0199 (at 282 nm) and 0.0595 (at 895 nm); so does every value
+  // in between.
+  for (float lambda = 250.0f; lambda <= 900.0f; lambda += 0.25f) {
+    EXPECT_GE(melaninReflectance(lambda), 0.0199f - 1e-6f) << lambda;
+    EXPECT_LE(melaninReflectance(lambda), 0.0595f + 1e-6f) << lambda;
   }
-  EXPECT_EQ(count, 105);
   // Constant beyond the measured range.
   EXPECT_NEAR(melaninReflectance(100.0f), 0.0300f, 1e-6f);
   EXPECT_NEAR(melaninReflectance(1500.0f), 0.0593f, 1e-6f);
