@@ -5,6 +5,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <unistd.h>
+#include "core/illuminant.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -319,7 +320,8 @@ TEST(XmlLoader, NestedPluginsComeFirstAndInDocumentOrder) {
 TEST(XmlLoader, SpectrumForms) {
   auto p = only(load(probe(R"(<spectrum name="color" value="400:0.2, 500:0.6 600:0.4"/>
 <spectrum name="glow" value="30"/>)")));
-  EXPECT_FLOAT_EQ(p->spectra.at("glow").eval(555.0f), 30.0f);
+  // A single value for an emitter is D65 of that luminance (Mitsuba's convention).
+  EXPECT_FLOAT_EQ(p->spectra.at("glow").eval(555.0f), 30.0f * d65(555.0f));
   const SpectralDistribution& color = p->spectra.at("color");
   EXPECT_NEAR(color.eval(450.0f), 0.4f, 1e-6f);
   EXPECT_NEAR(color.eval(575.0f), 0.45f, 1e-6f);
@@ -341,7 +343,7 @@ TEST(XmlLoader, RGBIsClampedOnlyForReflectance) {
   auto p = only(load(probe(R"(<rgb name="color" value="2, 2, 2"/>
 <rgb name="glow" value="2"/>)")));
   EXPECT_FLOAT_EQ(p->spectra.at("color").eval(550.0f), 1.0f);
-  EXPECT_FLOAT_EQ(p->spectra.at("glow").eval(550.0f), 2.0f);
+  EXPECT_FLOAT_EQ(p->spectra.at("glow").eval(550.0f), 2.0f * d65(550.0f));
   auto q = only(load(probe(R"(<rgb name="color" value="0.9, 0.1, 0.1"/>)")));
   EXPECT_GT(q->spectra.at("color").eval(650.0f), 0.5f);
   EXPECT_LT(q->spectra.at("color").eval(450.0f), 0.2f);
@@ -494,7 +496,7 @@ TEST(XmlLoader, ReferenceSceneNeck) {
   auto light = object(scene, 5);
   ASSERT_EQ(light->children.size(), 2u);
   EXPECT_NEAR(light->children[0]->spectra.at("reflectance").eval(650.0f), 0.78f, 1e-6f);
-  EXPECT_FLOAT_EQ(light->children[1]->spectra.at("radiance").eval(650.0f), 10.0f);
+  EXPECT_FLOAT_EQ(light->children[1]->spectra.at("radiance").eval(650.0f), 10.0f * d65(650.0f));
   // scale (0.5, 0.05, 0.5), rotate 180 degrees about y, translate z by 1.
   Vec3 corner = light->transforms.at("to_world").point(Vec3(1, 1, 0));
   EXPECT_NEAR(corner.x, -0.5f, 1e-6f);

@@ -16,8 +16,8 @@ struct LobeReflectance {
 };
 LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
 
-// Linear RGB of what an imaging scatterometer records under a beam of unit spectral power (flat
-// spectrum) from `omegaI`: f(omegaI, omegaO) |cos theta_o| per solid angle toward every direction
+// Linear RGB of what an imaging scatterometer records under a white beam (D65 of unit luminance)
+// from `omegaI`: f(omegaI, omegaO) |cos theta_o| per solid angle toward every direction
 // of the upper hemisphere, integrated against the colour matching functions. The image disk maps
 // to the hemisphere as in the `bsdfvisualizer` sensor (theta = r pi/2, phi = atan2(v, u), v
 // growing downward with the row); pixels outside it are black. `supersampling`^2 directions per

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include "core/illuminant.h"
 #include "core/lanes.h"
 
 namespace columba {
@@ -104,31 +105,24 @@ template <typename T> T interpolateNanometres(const std::array<T, CieTable::kCou
   return table[i] * (1.0f - f) + table[i + 1] * f;
 }
 
-Vec3 xyzToUnbalancedRGB(const Vec3& c) {
+// CIE XYZ to linear sRGB/Rec.709 (IEC 61966-2-1), without white balance: D65 maps to (1, 1, 1).
+Vec3 xyzToRec709(const Vec3& c) {
   return {3.2404542f * c.x - 1.5371385f * c.y - 0.4985314f * c.z,
           -0.9692660f * c.x + 1.8760108f * c.y + 0.0415560f * c.z,
           0.0556434f * c.x - 0.2040259f * c.y + 1.0572252f * c.z};
 }
 
-// RGB of the flat spectrum before balancing; dividing by it makes that spectrum grey.
-const Vec3& equalEnergyWhite() {
-  static const Vec3 white = [] {
-    Vec3 xyz(0, 0, 0);
-    for (const Vec3& c : cieTable().xyz) xyz += c;
-    return xyzToUnbalancedRGB(xyz / cieTable().yIntegral);
-  }();
-  return white;
-}
-
 float sigmoid(float x) { return 0.5f + x / (2.0f * std::sqrt(1.0f + x * x)); }
 float normalisedLambda(float lambda) { return (lambda - kLambdaMin) / (kLambdaMax - kLambdaMin); }
 
+// The colour of a reflectance spectrum lit by D65, as Jakob & Hanika and Mitsuba define it.
 Vec3 sigmoidPolynomialRGB(const std::array<double, 3>& c) {
   Vec3 xyz(0, 0, 0);
   const CieTable& t = cieTable();
   for (int i = 0; i < CieTable::kCount; ++i) {
-    double x = normalisedLambda(kLambdaMin + float(i));
-    xyz += t.xyz[i] * sigmoid(float((c[0] * x + c[1]) * x + c[2]));
+    float lambda = kLambdaMin + float(i);
+    double x = normalisedLambda(lambda);
+    xyz += t.xyz[i] * (d65(lambda) * sigmoid(float((c[0] * x + c[1]) * x + c[2])));
   }
   return xyzToLinearRGB(xyz / t.yIntegral);
 }
@@ -192,14 +186,10 @@ Vec3 cieXYZFit(float l) {
 
 float cieYIntegral() { return cieTable().yIntegral; }
 
-Vec3 xyzToLinearRGB(const Vec3& xyz) {
-  Vec3 rgb = xyzToUnbalancedRGB(xyz);
-  const Vec3& w = equalEnergyWhite();
-  return {rgb.x / w.x, rgb.y / w.y, rgb.z / w.z};
-}
+Vec3 xyzToLinearRGB(const Vec3& xyz) { return xyzToRec709(xyz); }
 
 namespace {
-// The colour-matching functions taken to balanced linear RGB and divided by the Y integral, at the
+// The colour-matching functions taken to linear RGB and divided by the Y integral, at the
 // CIE table's 1 nm steps: the conversion is linear, so it is applied once here instead of per
 // camera sample.
 struct RgbMatchingTable {
@@ -262,7 +252,18 @@ SpectralDistribution SpectralDistribution::fromRGB(const Vec3& rgbIn, bool unbou
   return d;
 }
 
+SpectralDistribution SpectralDistribution::timesD65() const {
+  SpectralDistribution d = *this;
+  d.timesD65_ = true;
+  return d;
+}
+
 float SpectralDistribution::eval(float lambda) const {
+  float value = evalShape(lambda);
+  return timesD65_ ? value * d65(lambda) : value;
+}
+
+float SpectralDistribution::evalShape(float lambda) const {
   switch (kind_) {
     case Kind::Constant: return value_;
     case Kind::Piecewise: {
@@ -281,7 +282,7 @@ float SpectralDistribution::eval(float lambda) const {
 }
 
 float SpectralDistribution::meanValue() const {
-  if (kind_ == Kind::Constant) return value_;
+  if (kind_ == Kind::Constant && !timesD65_) return value_;
   double s = 0;
   for (int i = 0; i < CieTable::kCount; ++i) s += eval(kLambdaMin + float(i));
   return float(s / CieTable::kCount);

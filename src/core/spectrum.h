@@ -57,7 +57,8 @@ Vec3 cieXYZ(float lambda);
 // Integral of ybar over [360, 830] nm, so that a flat spectrum of 1 has Y = 1.
 float cieYIntegral();
 
-// Linear Rec.709/sRGB primaries, white-balanced so that a flat (equal-energy) spectrum is grey.
+// Linear Rec.709/sRGB primaries with the plain matrix (no white balance, as Mitsuba): D65 is
+// (1, 1, 1) and a flat (equal-energy) spectrum is slightly pink.
 Vec3 xyzToLinearRGB(const Vec3& xyz);
 // Monte Carlo estimate of a spectrum's linear RGB from its values at `wl`.
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl);
@@ -69,23 +70,29 @@ class SpectralDistribution {
   static SpectralDistribution constant(float value);
   // Piecewise-linear through (lambda, value) pairs sorted by lambda; constant beyond the ends.
   static SpectralDistribution piecewiseLinear(std::vector<float> lambdas, std::vector<float> values);
-  // A smooth spectrum whose colour is `rgb` (Jakob & Hanika 2019 sigmoid-polynomial, fitted here).
-  // `unbounded` allows values above 1 (emission); otherwise rgb is clamped to [0, 1].
+  // A smooth spectrum whose colour under D65 is `rgb` (Jakob & Hanika 2019 sigmoid-polynomial,
+  // fitted here). `unbounded` allows values above 1; otherwise rgb is clamped to [0, 1].
   static SpectralDistribution fromRGB(const Vec3& rgb, bool unbounded);
+  // This distribution times D65 (luminance 1): how a single value or an RGB colour given for an
+  // emitter becomes an illuminant.
+  SpectralDistribution timesD65() const;
 
   float eval(float lambda) const;
+  // A single value at every wavelength.
+  bool isConstant() const { return kind_ == Kind::Constant && !timesD65_; }
   Spectrum sample(const Wavelengths& wl) const {
     Spectrum s;
     for (int i = 0; i < kSpectrumSamples; ++i) s[i] = eval(wl[i]);
     return s;
   }
-  bool isConstant() const { return kind_ == Kind::Constant; }
-  float constantValue() const { return value_; }
   // Mean over the visible range, for light selection and diagnostics.
   float meanValue() const;
 
  private:
+  float evalShape(float lambda) const;  // eval without the illuminant
+
   enum class Kind { Constant, Piecewise, Sigmoid } kind_ = Kind::Constant;
+  bool timesD65_ = false;
   float value_ = 0.0f;                 // constant value, or the sigmoid's scale
   std::vector<float> lambdas_, values_;
   std::array<float, 3> coeffs_{};      // sigmoid polynomial in normalised wavelength

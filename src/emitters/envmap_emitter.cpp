@@ -35,7 +35,8 @@ EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld)
   std::array<Vec3, 3> columns;
   for (int k = 0; k < 3; ++k) {
     Vec3 primary(k == 0, k == 1, k == 2);
-    basis_[k] = SpectralDistribution::fromRGB(primary, true);
+    // Mitsuba's convention for emitted colours: the upsampled colour times D65.
+    basis_[k] = SpectralDistribution::fromRGB(primary, true).timesD65();
     columns[k] = basisRGB(basis_[k]);
   }
   rgbToBasis_ = invert3x3(columns);

@@ -129,10 +129,21 @@ std::string Properties::getPath(const std::string& name) const {
 
 SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {
   const Value* v = find(name, {Kind::Float, Kind::Integer, Kind::Spectrum}, "a <float>, <spectrum> or <rgb>");
-  if (!v) return SpectralDistribution::constant(def);
-  if (v->kind != Kind::Spectrum) return SpectralDistribution::constant(toFloat(*v, name));
-  if (v->isRGB) return SpectralDistribution::fromRGB(v->rgb, use != SpectrumUse::Reflectance);
-  return v->spectrum;
+  // Mitsuba's convention: a single value or a colour given for an emitter is an illuminant (D65
+  // scaled to that luminance, or the colour's spectrum times D65); a tabulated spectrum is taken
+  // as given.
+  SpectralDistribution s;
+  if (!v) {
+    s = SpectralDistribution::constant(def);
+  } else if (v->kind != Kind::Spectrum) {
+    s = SpectralDistribution::constant(toFloat(*v, name));
+  } else if (v->isRGB) {
+    s = SpectralDistribution::fromRGB(v->rgb, use != SpectrumUse::Reflectance);
+  } else {
+    s = v->spectrum;
+  }
+  bool illuminant = use == SpectrumUse::Emission && (!v || v->kind != Kind::Spectrum || v->isRGB || s.isConstant());
+  return illuminant ? s.timesD65() : s;
 }
 
 SourceLocation Properties::locationOf(const std::string& name) const {
