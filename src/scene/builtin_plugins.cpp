@@ -25,6 +25,7 @@
 #include "sensors/perspective_sensor.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
+#include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/rectangle_shape.h"
 #include "shapes/sphere_shape.h"

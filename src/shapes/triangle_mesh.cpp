@@ -1,7 +1,5 @@
 #include "shapes/triangle_mesh.h"
 
-#include <tiny_obj_loader.h>
-
 #include "core/sampling.h"
 #include "emitters/emitter.h"
 #include "scene/plugin_registry.h"
@@ -136,38 +134,6 @@ std::shared_ptr<Object> makeCubeShape(const Properties& props) {
       }
       for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
     }
-  return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
-}
-
-std::shared_ptr<Object> makeObjShape(const Properties& props) {
-  std::string path = props.getPath("filename");
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config))
-    throw props.error("filename", "cannot read OBJ file '" + path + "': " + reader.Error());
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  MeshData m;
-  bool useNormals = true, useUVs = true;
-  for (const auto& shape : reader.GetShapes())
-    for (const auto& idx : shape.mesh.indices) {
-      useNormals &= idx.normal_index >= 0;
-      useUVs &= idx.texcoord_index >= 0;
-    }
-  // OBJ indexes positions, normals and uvs separately: emit one vertex per face corner.
-  for (const auto& shape : reader.GetShapes())
-    for (const auto& idx : shape.mesh.indices) {
-      if (idx.vertex_index < 0) throw props.error("filename", "OBJ file '" + path + "' has a face without positions");
-      m.positions.push_back(Vec3(attrib.vertices[3 * idx.vertex_index], attrib.vertices[3 * idx.vertex_index + 1],
-                                 attrib.vertices[3 * idx.vertex_index + 2]));
-      if (useNormals)
-        m.normals.push_back(Vec3(attrib.normals[3 * idx.normal_index], attrib.normals[3 * idx.normal_index + 1],
-                                 attrib.normals[3 * idx.normal_index + 2]));
-      if (useUVs) m.uvs.push_back(Vec2(attrib.texcoords[2 * idx.texcoord_index], attrib.texcoords[2 * idx.texcoord_index + 1]));
-      m.indices.push_back(uint32_t(m.indices.size()));
-    }
-  if (m.indices.empty()) throw props.error("filename", "OBJ file '" + path + "' has no faces");
   return finishMeshShape(props, std::move(m), props.getTransform("to_world"));
 }
 

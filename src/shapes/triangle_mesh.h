@@ -44,6 +44,5 @@ std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, 
 void attachMaterial(const Properties& props, Shape& shape);
 
 std::shared_ptr<Object> makeCubeShape(const Properties& props);
-std::shared_ptr<Object> makeObjShape(const Properties& props);
 
 }  // namespace columba

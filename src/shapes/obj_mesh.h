@@ -1,0 +1,21 @@
+#pragma once
+// Mitsuba's `obj` shape: a triangle mesh read from a Wavefront OBJ file (tinyobjloader).
+//
+// `v`, `vn`, `vt` and `f` statements are used; every number must be finite and within float
+// range, every face corner's position, normal and texture index must exist. Triangles are kept,
+// quads are split along their shorter diagonal and larger polygons are triangulated as fans
+// around their first corner. Every problem is an InputError naming the file and line, and for
+// faces the face's number (counting from 1 in file order).
+#include <memory>
+#include <string>
+#include "scene/properties.h"
+#include "shapes/triangle_mesh.h"
+
+namespace columba {
+
+MeshData readObjMesh(const std::string& path);
+
+// Parameters: `filename`, `to_world`, `face_normals`, `flip_normals`; nested BSDF and emitter.
+std::shared_ptr<Object> makeObjShape(const Properties& props);
+
+}  // namespace columba
