@@ -136,3 +136,34 @@ TEST_F(PlyFileTest, ReportsDataAfterTheLastRecord) {
     EXPECT_NE(std::string(e.what()).find(f + ":22"), std::string::npos) << e.what();
   }
 }
+
+TEST_F(PlyFileTest, CountsTheFileCannotHoldAreRejectedBeforeReading) {
+  // A few bytes of data under a header that declares a billion records of 12 bytes.
+  const std::string header = "element vertex 1000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  for (const char* format : {"ascii", "binary_little_endian"}) {
+    SCOPED_TRACE(format);
+    std::string f = write("huge.ply", std::string("ply\nformat ") + format + " 1.0\n" + header + std::string(28, '1'));
+    try {
+      PlyReader ply(f, "PLY file");
+      FAIL() << "no error";
+    } catch (const InputError& e) {
+      std::string message = e.what();
+      EXPECT_NE(message.find(f + ":3:"), std::string::npos) << message;
+      EXPECT_NE(message.find("declares 1000000000 vertex records"), std::string::npos) << message;
+      EXPECT_NE(message.find("the file has 28 bytes left"), std::string::npos) << message;
+    }
+  }
+  // Exactly enough data passes: three binary floats, and an ASCII record without a line break.
+  EXPECT_NO_THROW(PlyReader(write("one.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+                                             "property float y\nproperty float z\nend_header\n" + std::string(12, '\0')),
+                            "PLY file"));
+  EXPECT_NO_THROW(PlyReader(write("one.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                             "property float y\nproperty float z\nend_header\n1 2 3"),
+                            "PLY file"));
+}
+
+TEST_F(PlyFileTest, BinaryRecordsWithoutPropertiesAreRejected) {
+  // They would take no bytes, so no file size bounds how many there are.
+  std::string f = write("empty.ply", "ply\nformat binary_little_endian 1.0\nelement nothing 1000000000000000000\nend_header\n");
+  EXPECT_THROW(PlyReader(f, "PLY file"), InputError);
+}

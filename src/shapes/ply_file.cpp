@@ -1,5 +1,6 @@
 #include "shapes/ply_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <sstream>
@@ -10,6 +11,29 @@ namespace columba {
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "binary PLY reading assumes a little-endian host");
 
 bool isIntegerType(PlyType t) { return t != PlyType::Float32 && t != PlyType::Float64; }
+
+namespace {
+
+size_t binarySize(PlyType t) {
+  switch (t) {
+    case PlyType::Int8: case PlyType::UInt8: return 1;
+    case PlyType::Int16: case PlyType::UInt16: return 2;
+    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
+    case PlyType::Float64: return 8;
+  }
+  return 1;
+}
+
+// The fewest bytes one record of `e` can take: binary, its scalars and list counts (lists may be
+// empty); ASCII, a digit and a separator per value, or the line break of an empty record.
+size_t minimumRecordBytes(const PlyElement& e, bool binary) {
+  if (!binary) return std::max<size_t>(1, 2 * e.properties.size());
+  size_t bytes = 0;
+  for (const PlyProperty& p : e.properties) bytes += binarySize(p.isList ? p.countType : p.type);
+  return bytes;
+}
+
+}  // namespace
 
 int PlyElement::findScalar(const std::string& name) const {
   for (size_t i = 0; i < properties.size(); ++i)
@@ -243,6 +267,7 @@ PlyReader::PlyReader(const std::string& path, const std::string& description)
     } else if (keyword == "end_header") {
       if (!sawFormat) fail("the header has no 'format' line");
       endHeaderLine_ = lineNo;
+      checkCountsFit(binary);
       if (binary) source_ = std::make_unique<BinarySource>(in_, path_);
       else source_ = std::make_unique<AsciiSource>(in_, path_, lineNo);
       return;
@@ -254,6 +279,29 @@ PlyReader::PlyReader(const std::string& path, const std::string& description)
 }
 
 PlyReader::~PlyReader() = default;
+
+void PlyReader::checkCountsFit(bool binary) {
+  const std::streampos dataStart = in_.tellg();
+  in_.seekg(0, std::ios::end);
+  const std::streampos fileEnd = in_.tellg();
+  in_.seekg(dataStart);
+  if (dataStart < 0 || fileEnd < 0 || !in_) throw InputError({path_, endHeaderLine_}, "cannot find the size of the file");
+  // The last ASCII record may end without a line break.
+  const size_t bytesLeft = size_t(fileEnd - dataStart), budget = bytesLeft + (binary ? 0 : 1);
+  size_t needed = 0;
+  for (const PlyElement& e : elements_) {
+    if (e.count == 0) continue;
+    const size_t recordBytes = minimumRecordBytes(e, binary);
+    if (recordBytes == 0)
+      throw headerError(e, "element " + e.name + " declares " + std::to_string(e.count) +
+                               " records but has no properties to store them");
+    if (e.count > (budget - needed) / recordBytes)
+      throw headerError(e, "element " + e.name + " declares " + std::to_string(e.count) + " " + e.name +
+                               " records of at least " + std::to_string(recordBytes) + " bytes each, but the file has " +
+                               std::to_string(bytesLeft) + " bytes left after the header");
+    needed += e.count * recordBytes;
+  }
+}
 
 InputError PlyReader::headerError(const PlyElement& e, const std::string& message) const {
   return InputError({path_, e.line}, message);

@@ -40,6 +40,7 @@ struct PlyElement {
 class PlyReader {
  public:
   // Opens `path` and reads its header; `description` names the file in "cannot open" errors.
+  // Element counts that the rest of the file is too short to hold are an error here.
   PlyReader(const std::string& path, const std::string& description);
   ~PlyReader();
   PlyReader(const PlyReader&) = delete;  // the source reads from in_
@@ -73,6 +74,10 @@ class PlyReader {
   uint32_t vertexIndex(double value, size_t vertexCount) const;
 
  private:
+  // Throws a header error for an element whose declared records cannot fit in the rest of the
+  // file, so that the counts are safe to allocate for.
+  void checkCountsFit(bool binary);
+
   std::string path_;
   std::ifstream in_;
   std::vector<PlyElement> elements_;
