@@ -9,7 +9,7 @@ namespace {
 
 FeatherShapeParams tiltedPlacement() {
   FeatherShapeParams params;
-  params.toWorld = Transform::translate(Vec3(0.08f, -0.02f, 0.01f)) * Transform::rotate(Vec3(1, 2, 0.5f), 35.0f) *
+  params.toWorld = Transform::translate(Vec3(0.08f, -0.02f, 0.01f)) * Transform::rotate(normalize(Vec3(1, 2, 0.5f)), 35.0f) *
                    Transform::scale(Vec3(0.1f, 0.1f, 0.1f));
   return params;
 }

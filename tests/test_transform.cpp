@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/transform.h"
 
 using namespace columba;
@@ -13,7 +15,7 @@ void expectNear(const Vec3& a, const Vec3& b, float tol = 1e-5f) {
 }
 
 Transform general() {
-  return Transform::translate(Vec3(0.3f, -2, 5)) * Transform::rotate(Vec3(1, 2, -0.5f), 37) *
+  return Transform::translate(Vec3(0.3f, -2, 5)) * Transform::rotate(Vec3(0, 0, 1), 37) * Transform::rotate(Vec3(1, 0, 0), -21) *
          Transform::scale(Vec3(2, 0.5f, 3)) * Transform::lookAt(Vec3(1, 2, 3), Vec3(-1, 0, 0.5f), Vec3(0, 0, 1));
 }
 
@@ -28,6 +30,25 @@ TEST(Transform, RotationIsRightHanded) {
   expectNear(Transform::rotate(Vec3(0, 0, 1), 90).vector(Vec3(1, 0, 0)), Vec3(0, 1, 0));
   expectNear(Transform::rotate(Vec3(1, 0, 0), 90).vector(Vec3(0, 1, 0)), Vec3(0, 0, 1));
   expectNear(Transform::rotate(Vec3(0, 1, 0), 90).vector(Vec3(0, 0, 1)), Vec3(1, 0, 0));
+}
+
+TEST(Transform, RotationUsesItsAxisAsGivenAsMitsubaDoes) {
+  // Mitsuba's rotate: R = cos(a) I + (1 - cos(a)) k k^T + sin(a) [k]x with the axis k as given,
+  // and the transpose as the inverse. For k = (1, 1, 0) and a = 23 degrees (the paper's
+  // simulation1 light), with t = 1 - c: R = [[c + t, t, s], [t, c + t, -s], [-s, s, c]].
+  const double a = 23.0 * M_PI / 180.0, c = std::cos(a), s = std::sin(a), t = 1.0 - c;
+  Transform r = Transform::rotate(Vec3(1, 1, 0), 23.0f);
+  // Column j of R is the image of the j-th unit vector.
+  expectNear(r.vector(Vec3(1, 0, 0)), Vec3(float(t + c), float(t), float(-s)));
+  expectNear(r.vector(Vec3(0, 1, 0)), Vec3(float(t), float(t + c), float(s)));
+  expectNear(r.vector(Vec3(0, 0, 1)), Vec3(float(s), float(-s), float(c)));
+  // Not a rotation: lengths change. The kept inverse is the transpose.
+  EXPECT_GT(length(r.vector(Vec3(1, 0, 0))), 1.01f);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_DOUBLE_EQ(r.inverseMatrix().m[i][j], r.matrix().m[j][i]);
+  // A unit axis gives the plain rotation.
+  expectNear(Transform::rotate(Vec3(0.6f, 0.8f, 0), 90).vector(Vec3(0.6f, 0.8f, 0)), Vec3(0.6f, 0.8f, 0));
+  expectNear(Transform::rotate(Vec3(0.6f, 0.8f, 0), 90).vector(Vec3(0, 0, 1)), Vec3(0.8f, -0.6f, 0));
 }
 
 TEST(Transform, LookAtMapsCameraAxes) {

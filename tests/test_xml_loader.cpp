@@ -370,6 +370,24 @@ TEST(XmlLoader, TransformOperandForms) {
   expectMatrixNear(p->transforms.at("to_world").matrix(), expected);
 }
 
+TEST(XmlLoader, RotateAxisThatIsNotUnitLengthIsKeptAndWarnedAbout) {
+  ::testing::internal::CaptureStderr();
+  auto p = only(load(probe(R"(<transform name="to_world">
+  <rotate x="1" y="1" angle="90"/>
+</transform>)")));
+  std::string warnings = ::testing::internal::GetCapturedStderr();
+  // Mitsuba's matrix for k = (1, 1, 0), 90 degrees: [[1, 1, 1], [1, 1, -1], [-1, 1, 0]].
+  const double expected[4][4] = {{1, 1, 1, 0}, {1, 1, -1, 0}, {-1, 1, 0, 0}, {0, 0, 0, 1}};
+  expectMatrixNear(p->transforms.at("to_world").matrix(), expected);
+  expectContains(warnings, {"warning", "test.xml:4", "<rotate>", "length 1.41421"});
+  // A unit axis is silent; a zero axis is an error naming the line.
+  ::testing::internal::CaptureStderr();
+  load(probe(R"(<transform name="to_world"><rotate z="1" angle="30"/></transform>)"));
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  expectContains(errorOf(probe("\n<transform name=\"to_world\"><rotate angle=\"30\"/></transform>")),
+                 {"test.xml:4", "non-zero axis"});
+}
+
 TEST(XmlLoader, LookAtFollowedByTranslate) {
   auto p = only(load(probe(R"(<transform name="to_world">
   <lookat origin="3, 0, 4" target="0 0 0" up="0, 1, 0"/>

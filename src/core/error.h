@@ -11,6 +11,9 @@ struct SourceLocation {
   std::string str() const { return line > 0 ? file + ":" + std::to_string(line) : file; }
 };
 
+// Prints "warning: FILE:LINE: message" for input that is accepted but probably not meant.
+void warn(const SourceLocation& loc, const std::string& message);
+
 class InputError : public std::runtime_error {
  public:
   InputError(const SourceLocation& loc, const std::string& message)

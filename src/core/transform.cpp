@@ -66,9 +66,10 @@ Transform Transform::scale(const Vec3& s) {
 }
 
 Transform Transform::rotate(const Vec3& axis, float angleDeg) {
-  double len = std::sqrt(double(axis.x) * axis.x + double(axis.y) * axis.y + double(axis.z) * axis.z);
-  if (len == 0.0) throw std::runtime_error("rotation about a zero axis");
-  double x = axis.x / len, y = axis.y / len, z = axis.z / len;
+  // Rodrigues' formula with the axis as given, and the transpose as the inverse, exactly as Mitsuba
+  // builds it: an axis that is not unit length also scales and shears, and scenes written for
+  // Mitsuba (the paper's simulation1 light) depend on that.
+  double x = axis.x, y = axis.y, z = axis.z;
   double a = double(angleDeg) * 3.14159265358979323846 / 180.0;
   double s = std::sin(a), c = std::cos(a), t = 1.0 - c;
   Matrix4 m = Matrix4::identity();

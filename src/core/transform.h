@@ -23,7 +23,9 @@ class Transform {
 
   static Transform translate(const Vec3& d);
   static Transform scale(const Vec3& s);
-  // Rotation by `angleDeg` degrees about `axis` (right-handed, as Mitsuba).
+  // Rotation by `angleDeg` degrees about `axis` (right-handed), built as Mitsuba builds it: the
+  // axis is used as given and the inverse kept is the transpose, so for an axis that is not unit
+  // length the matrix also scales and shears and the kept "inverse" is only its transpose.
   static Transform rotate(const Vec3& axis, float angleDeg);
   // Camera-to-world: camera looks along +z toward `target`, with +y near `up` (Mitsuba's convention).
   static Transform lookAt(const Vec3& origin, const Vec3& target, const Vec3& up);

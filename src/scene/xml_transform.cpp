@@ -1,5 +1,7 @@
 #include "scene/xml_transform.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include "scene/xml_values.h"
 
@@ -51,7 +53,13 @@ Transform operation(const XmlElement& op) {
   if (tag == "rotate") {
     op.allowAttributes({"x", "y", "z", "value", "angle"});
     float angle = float(parseFloat(op.attribute("angle"), describe(op, "angle"), op.location()));
-    return Transform::rotate(vectorOperand(op, 0.0f), angle);
+    Vec3 axis = vectorOperand(op, 0.0f);
+    if (lengthSquared(axis) == 0.0f) throw InputError(op.location(), "<rotate> needs a non-zero axis");
+    if (std::abs(length(axis) - 1.0f) > 1e-5f)
+      warn(op.location(), fmt::format("<rotate> axis ({}, {}, {}) has length {:.6g}, not 1: it is used as given, "
+                                      "as Mitsuba does, which also scales and shears",
+                                      axis.x, axis.y, axis.z, length(axis)));
+    return Transform::rotate(axis, angle);
   }
   if (tag == "lookat") {
     op.allowAttributes({"origin", "target", "up"});
