@@ -21,8 +21,12 @@ demo: build
 	@mkdir -p out
 	$(COLUMBA) render -o out/default.exr
 
+# After the run, each skipped test is listed with the reason it gave (from CTest's log).
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS); status=$$?; \
+	awk '/: Skipped$$/ { getline reason; next } \
+	     /^\[  SKIPPED \] [^ ]+ \(/ && reason != "" { if (!n++) print "Skipped tests:"; print "  " $$4 ": " reason; reason = "" }' \
+	    Testing/Temporary/LastTest.log; exit $$status
 
 # Installs as the current user where PREFIX is writable, through sudo otherwise (the build itself
 # stays the user's).
