@@ -1,8 +1,24 @@
 #include "render/film.h"
 
+#include <fmt/format.h>
+
+#include <new>
+#include <stdexcept>
+
 #include "scene/plugin_registry.h"
 
 namespace columba {
+
+Image Film::makeImage() const {
+  try {
+    return Image(width_, height_);
+  } catch (const std::bad_alloc&) {
+    double gib = double(width_) * double(height_) * 3 * sizeof(float) / double(1 << 30);
+    throw std::runtime_error(fmt::format("the film of {} x {} pixels needs {:.1f} GiB of memory for its image, "
+                                         "which cannot be allocated",
+                                         width_, height_, gib));
+  }
+}
 
 std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
   int width = props.getInt("width", 768), height = props.getInt("height", 576);

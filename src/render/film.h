@@ -1,6 +1,7 @@
 #pragma once
 // `hdrfilm`: the image size and the reconstruction filter. Pixels are accumulated by the renderer.
 #include <memory>
+#include "render/image.h"
 #include "render/reconstruction_filter.h"
 #include "scene/properties.h"
 
@@ -13,6 +14,9 @@ class Film : public Object {
   int width() const { return width_; }
   int height() const { return height_; }
   const ReconstructionFilter& filter() const { return *filter_; }
+  // A black image of the film's size; if it cannot be allocated, throws std::runtime_error
+  // saying how much memory it needs.
+  Image makeImage() const;
 
  private:
   int width_, height_;

@@ -24,7 +24,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   const int tileCount = tilesX * tilesY;
 
   const float reach = film.filter().radius();  // of a camera sample from its pixel's centre
-  Image image(width, height);
+  Image image = film.makeImage();
   std::atomic<uint64_t> rays{0}, samples{0};
   std::atomic<int> tilesDone{0};
   std::atomic<bool> cancelled{false};
@@ -33,29 +33,36 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
 
   auto start = std::chrono::steady_clock::now();
+  std::atomic<uint64_t> nonFinite{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
+    // Checked before every sample, so that a stop request is answered within one sample at any
+    // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
     auto stopRequested = [&] {
       if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
       cancelled = true;
       return true;
     };
     for (int tile = range.begin(); tile != range.end(); ++tile) {
-      uint64_t tileRays = 0;
+      uint64_t tileRays = 0, tileNonFinite = 0;
       const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
       for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
-          if (stopRequested()) return;  // checked per pixel: Ctrl-C answers quickly at any spp
+          if (stopRequested()) return;
           double sum[3] = {0, 0, 0};
           const bool seen = sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
           for (int s = 0; seen && s < spp; ++s) {
+            if (stopRequested()) return;  // the unfinished pixel stays black
             sampler->startPixelSample(x, y, s, settings.seed);
             Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
             Vec2 offset = film.filter().sample(sampler->get2D());
             std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
             if (!ray) continue;
             Spectrum L = integrator.radiance(scene, *ray, *sampler, wl, tileRays);
-            if (!L.isFinite()) continue;  // a numerical failure must not poison the pixel
+            if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
+              ++tileNonFinite;
+              continue;
+            }
             Vec3 rgb = spectrumToRGB(L, wl);
             sum[0] += rgb.x;
             sum[1] += rgb.y;
@@ -65,6 +72,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
           for (int c = 0; c < 3; ++c) p[c] = float(sum[c] / spp);
         }
       rays += tileRays;
+      nonFinite += tileNonFinite;
       samples += uint64_t(spp) * uint64_t(std::min(kTileSize, width - x0)) * uint64_t(std::min(kTileSize, height - y0));
       int done = ++tilesDone;
       if (settings.onTileDone) settings.onTileDone(done, tileCount);
@@ -73,6 +81,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.rays = rays;
   stats.samples = samples;
+  stats.nonFiniteSamples = nonFinite;
   stats.complete = !cancelled && tilesDone == tileCount;
   return image;
 }

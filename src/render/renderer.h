@@ -13,7 +13,7 @@ struct RenderSettings {
   int samplesPerPixel = 0;  // 0: the scene sampler's sample_count
   uint64_t seed = 0;
   int threads = 0;          // 0: all hardware threads
-  const std::atomic<bool>* cancel = nullptr;  // set to stop early; finished tiles are kept
+  const std::atomic<bool>* cancel = nullptr;  // set to stop early (checked before every sample); finished tiles are kept
   // Called from worker threads as tiles finish (done, total); must be thread-safe.
   std::function<void(int, int)> onTileDone;
 };
@@ -22,6 +22,7 @@ struct RenderStats {
   double seconds = 0.0;
   uint64_t samples = 0;
   uint64_t rays = 0;
+  uint64_t nonFiniteSamples = 0;  // radiance estimates with a NaN or infinity, left out of their pixels
   bool complete = true;  // false when cancelled
 };
 
