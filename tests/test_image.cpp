@@ -3,15 +3,20 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <png.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 #include "core/error.h"
@@ -160,7 +165,7 @@ TEST_F(ImageFiles, WritingIntoAMissingDirectoryThrowsAndLeavesNothing) {
   const std::string target = path("no/such/dir/out");
   for (auto write : {writeEXR, writePNG}) {
     try {
-      write(target, testImage());
+      write(target, testImage(), {});
       FAIL() << "no error";
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find(target), std::string::npos) << e.what();
@@ -172,11 +177,11 @@ TEST_F(ImageFiles, WritingIntoAMissingDirectoryThrowsAndLeavesNothing) {
 TEST_F(ImageFiles, FailedWritesKeepTheOldFile) {
   for (auto write : {writeEXR, writePNG}) {
     const std::string target = path("keep");
-    write(target, testImage());
+    write(target, testImage(), {});
     const std::string good = fileBytes(target);
     Image broken(4, 4);
     broken.rgb.resize(5);
-    EXPECT_THROW(write(target, broken), std::runtime_error);
+    EXPECT_THROW(write(target, broken, {}), std::runtime_error);
     EXPECT_EQ(fileBytes(target), good);
     EXPECT_EQ(entries(), std::vector<std::string>{"keep"});
     fs::remove(target);
@@ -187,7 +192,7 @@ TEST_F(ImageFiles, FailedRenameRemovesTheTemporaryFile) {
   // The temporary file is written completely; the rename onto a non-empty directory fails.
   fs::create_directories(path("occupied/inside"));
   for (auto write : {writeEXR, writePNG}) {
-    EXPECT_THROW(write(path("occupied"), testImage()), std::runtime_error);
+    EXPECT_THROW(write(path("occupied"), testImage(), {}), std::runtime_error);
     EXPECT_EQ(entries(), std::vector<std::string>{"occupied"});
     EXPECT_TRUE(fs::is_directory(path("occupied/inside")));
   }
@@ -205,4 +210,94 @@ TEST_F(ImageFiles, UnwritableDirectoryKeepsTheOldFile) {
   EXPECT_THROW(writePNG(target, other), std::runtime_error);
   EXPECT_EQ(fileBytes(target), good);
   EXPECT_EQ(entries(), std::vector<std::string>{"keep.exr"});
+}
+
+namespace {
+
+std::map<std::string, std::string> exrAttributes(const std::string& path) {
+  Imf::InputFile file(path.c_str());
+  std::map<std::string, std::string> attributes;
+  for (auto it = file.header().begin(); it != file.header().end(); ++it)
+    if (auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) attributes[it.name()] = text->value();
+  return attributes;
+}
+
+std::map<std::string, std::string> pngTexts(const std::string& path) {
+  std::map<std::string, std::string> texts;
+  FILE* in = std::fopen(path.c_str(), "rb");
+  if (!in) return texts;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  if (setjmp(png_jmpbuf(png)) == 0) {
+    png_init_io(png, in);
+    png_read_info(png, info);
+    png_textp chunks = nullptr;
+    int count = png_get_text(png, info, &chunks, nullptr);
+    for (int i = 0; i < count; ++i) texts[chunks[i].key] = std::string(chunks[i].text, chunks[i].text_length ? chunks[i].text_length : chunks[i].itxt_length);
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(in);
+  return texts;
+}
+
+}  // namespace
+
+TEST_F(ImageFiles, MetadataIsRecordedInBothFormats) {
+  const ImageMetadata metadata = {{"Scene", "scenes/n\u00e4cken.xml"}, {"Defines", "a=1\nb=two words"}, {"Seed", "7"}};
+  writeEXRAndPNG(path("m.exr"), path("m.png"), testImage(), metadata);
+  for (auto texts : {exrAttributes(path("m.exr")), pngTexts(path("m.png"))}) {
+    EXPECT_EQ(texts["Software"].rfind("Columba ", 0), 0u) << texts["Software"];
+    EXPECT_GT(texts["Software"].size(), std::string("Columba ").size());
+    for (const auto& [name, text] : metadata) EXPECT_EQ(texts[name], text) << name;
+  }
+  writePNG(path("plain.png"), testImage());
+  EXPECT_EQ(pngTexts(path("plain.png")).count("Software"), 1u);
+}
+
+TEST_F(ImageFiles, PairIsReplacedTogether) {
+  Image first = testImage(), second(2, 2);
+  writeEXRAndPNG(path("p.exr"), path("p.png"), first);
+  EXPECT_EQ(readEXR(path("p.exr")).width, 7);
+  EXPECT_EQ(readPNG(path("p.png")).width, 7);
+  writeEXRAndPNG(path("p.exr"), path("p.png"), second);
+  EXPECT_EQ(readEXR(path("p.exr")).width, 2);
+  EXPECT_EQ(readPNG(path("p.png")).width, 2);
+  EXPECT_EQ(entries().size(), 2u);
+}
+
+TEST_F(ImageFiles, PairStaysOldWhenThePNGCannotBePutInPlace) {
+  // The EXR is renamed into place first; the PNG's rename onto a non-empty directory fails, and
+  // the old EXR must come back.
+  writeEXR(path("q.exr"), testImage());
+  const std::string oldEXR = fileBytes(path("q.exr"));
+  fs::create_directories(path("q.png/inside"));
+  try {
+    writeEXRAndPNG(path("q.exr"), path("q.png"), Image(2, 2));
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path("q.png")), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(fileBytes(path("q.exr")), oldEXR);
+  std::vector<std::string> names = entries();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"q.exr", "q.png"}));
+  // With no old EXR, the new one is removed again.
+  fs::remove(path("q.exr"));
+  EXPECT_THROW(writeEXRAndPNG(path("q.exr"), path("q.png"), Image(2, 2)), std::runtime_error);
+  EXPECT_EQ(entries(), std::vector<std::string>{"q.png"});
+}
+
+TEST_F(ImageFiles, OutputPathsAreCheckedBeforeWork) {
+  EXPECT_EQ(checkOutputImagePath(path("a.exr")), ImageFormat::EXR);
+  EXPECT_EQ(checkOutputImagePath(path("a.EXR")), ImageFormat::EXR);
+  EXPECT_EQ(checkOutputImagePath(path("a.Png")), ImageFormat::PNG);
+  fs::create_directories(path("dir.exr"));
+  for (const std::string& bad : {path("a.jpg"), path("a"), path("dir.exr"), path("missing/a.exr")}) {
+    try {
+      checkOutputImagePath(bad);
+      ADD_FAILURE() << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+  }
 }

@@ -6,17 +6,25 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <fcntl.h>
 #include <png.h>
+#include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <csetjmp>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <stdexcept>
 #include "core/error.h"
+#include "core/version.h"
 
 namespace columba {
 
@@ -29,23 +37,16 @@ void checkImage(const std::string& path, const Image& image) {
                              " values");
 }
 
-// Runs `write` on a temporary file beside `path`, then renames it into place; on failure the
-// temporary file is removed and whatever was at `path` stays untouched.
-void writeThroughTemporary(const std::string& path, const char* format,
-                           const std::function<void(const std::string&)>& write) {
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-  try {
-    write(temporary);
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-      throw std::runtime_error(std::string("cannot rename the temporary file into place: ") + std::strerror(errno));
-  } catch (const std::exception& e) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(std::string("cannot write ") + format + " '" + path + "': " + e.what());
-  }
+// Metadata with Columba's own entry first.
+ImageMetadata withSoftware(const ImageMetadata& metadata) {
+  ImageMetadata all = {{"Software", std::string("Columba ") + kColumbaVersion}};
+  all.insert(all.end(), metadata.begin(), metadata.end());
+  return all;
 }
 
-void writeEXRFile(const std::string& file, const Image& image) {
+void writeEXRFile(const std::string& file, const Image& image, const ImageMetadata& metadata) {
   Imf::Header header(image.width, image.height);
+  for (const auto& [name, text] : metadata) header.insert(name, Imf::StringAttribute(text));
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   Imf::FrameBuffer frame;
   const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
@@ -68,30 +69,172 @@ void writeEXRFile(const std::string& file, const Image& image) {
   if (!stream) throw std::runtime_error("write error");
 }
 
-void writePNGFile(const std::string& file, const Image& image) {
+// libpng reports errors through a callback that must not return: it records the message and
+// jumps back to the setjmp in encodePNG.
+void onPNGError(png_structp png, png_const_charp message) {
+  *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+  png_longjmp(png, 1);
+}
+void onPNGWarning(png_structp, png_const_charp) {}
+
+bool isASCII(const std::string& text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+}
+
+// Encodes prepared rows and text chunks into `out`; returns false with `error` set if libpng
+// fails. Nothing in this frame has a destructor: a libpng error longjmps back into it.
+bool encodePNG(FILE* out, png_uint_32 width, png_uint_32 height, png_bytep* rows, png_text* texts, int textCount,
+               std::string* error) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPNGError, onPNGWarning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, out);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_set_text(png, info, texts, textCount);
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+void writePNGFile(const std::string& file, const Image& image, const ImageMetadata& metadata) {
   std::vector<unsigned char> bytes(image.rgb.size());
   for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = toSRGB8(image.rgb[i]);
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = png_uint_32(image.width);
-  png.height = png_uint_32(image.height);
-  png.format = PNG_FORMAT_RGB;
-  int ok = png_image_write_to_file(&png, file.c_str(), 0, bytes.data(), png_int_32(3 * image.width), nullptr);
-  std::string message = png.message;
-  png_image_free(&png);
-  if (!ok) throw std::runtime_error(message);
+  std::vector<png_bytep> rows(size_t(image.height));
+  for (size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * 3 * size_t(image.width);
+  // tEXt holds Latin-1; text with other characters (such as UTF-8 paths) goes in an iTXt chunk.
+  std::vector<png_text> texts(metadata.size());
+  for (size_t i = 0; i < metadata.size(); ++i) {
+    texts[i].compression = isASCII(metadata[i].second) ? PNG_TEXT_COMPRESSION_NONE : PNG_ITXT_COMPRESSION_NONE;
+    texts[i].key = const_cast<char*>(metadata[i].first.c_str());
+    texts[i].text = const_cast<char*>(metadata[i].second.c_str());
+    texts[i].text_length = metadata[i].second.size();
+  }
+  FILE* out = std::fopen(file.c_str(), "wb");
+  if (!out) throw std::runtime_error(std::strerror(errno));
+  std::string error;
+  bool encoded = encodePNG(out, png_uint_32(image.width), png_uint_32(image.height), rows.data(), texts.data(),
+                           int(texts.size()), &error);
+  if (std::fclose(out) != 0 && encoded) throw std::runtime_error(std::string("write error: ") + std::strerror(errno));
+  if (!encoded) throw std::runtime_error(error.empty() ? "cannot set up the PNG writer" : error);
+}
+
+// One file of a set written through temporary files: where it goes and how it is written.
+struct PendingFile {
+  std::string path;
+  const char* format;
+  std::function<void(const std::string&)> write;
+};
+
+// Holds an exclusive lock on a directory while alive (none where the directory cannot be opened).
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+  }
+  ~DirectoryLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+std::string directoryOf(const std::string& path) {
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  return dir.empty() ? "." : dir;
+}
+
+// Writes every file to a temporary file beside it, then renames all of them into place. If a
+// write fails, nothing is renamed; if a rename fails, the files already renamed get their old
+// contents back (kept as hard links, or copies, until the last rename). Temporary files never
+// outlive the call.
+void replaceTogether(const std::vector<PendingFile>& files) {
+  const std::string suffix = std::to_string(::getpid());
+  std::vector<std::string> temporaries, backups(files.size());
+  auto removeAll = [](const std::vector<std::string>& paths) {
+    for (const std::string& p : paths)
+      if (!p.empty()) std::remove(p.c_str());
+  };
+  for (const PendingFile& file : files) {
+    temporaries.push_back(file.path + ".tmp" + suffix);
+    try {
+      file.write(temporaries.back());
+    } catch (const std::exception& e) {
+      removeAll(temporaries);
+      throw std::runtime_error(std::string("cannot write ") + file.format + " '" + file.path + "': " + e.what());
+    }
+  }
+
+  DirectoryLock lock(directoryOf(files.front().path));
+  if (files.size() > 1) {
+    for (size_t i = 0; i < files.size(); ++i) {
+      const std::string backup = files[i].path + ".old" + suffix;
+      std::error_code ec;
+      if (::link(files[i].path.c_str(), backup.c_str()) == 0 ||
+          (errno != ENOENT && std::filesystem::copy_file(files[i].path, backup, ec)))
+        backups[i] = backup;
+    }
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (std::rename(temporaries[i].c_str(), files[i].path.c_str()) == 0) continue;
+    const std::string reason = std::strerror(errno);
+    for (size_t j = 0; j < i; ++j) {
+      if (!backups[j].empty()) std::rename(backups[j].c_str(), files[j].path.c_str());
+      else std::remove(files[j].path.c_str());
+    }
+    removeAll(temporaries);
+    removeAll(backups);
+    throw std::runtime_error(std::string("cannot write ") + files[i].format + " '" + files[i].path +
+                             "': cannot rename the temporary file into place: " + reason +
+                             (i > 0 ? " (the files written with it were restored)" : ""));
+  }
+  removeAll(backups);
 }
 
 }  // namespace
 
-void writeEXR(const std::string& path, const Image& image) {
+void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
-  writeThroughTemporary(path, "EXR", [&](const std::string& file) { writeEXRFile(file, image); });
+  const ImageMetadata all = withSoftware(metadata);
+  replaceTogether({{path, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }}});
 }
 
-void writePNG(const std::string& path, const Image& image) {
+void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
-  writeThroughTemporary(path, "PNG", [&](const std::string& file) { writePNGFile(file, image); });
+  const ImageMetadata all = withSoftware(metadata);
+  replaceTogether({{path, "PNG", [&](const std::string& file) { writePNGFile(file, image, all); }}});
+}
+
+void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
+                    const ImageMetadata& metadata) {
+  checkImage(exrPath, image);
+  const ImageMetadata all = withSoftware(metadata);
+  replaceTogether({{exrPath, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }},
+                   {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, image, all); }}});
+}
+
+ImageFormat checkOutputImagePath(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error("cannot write '" + path + "': it is a directory");
+  const std::string given = fs::path(path).extension().string();
+  std::string extension = given;
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".exr" && extension != ".png")
+    throw std::runtime_error("cannot write '" + path + "': " +
+                             (given.empty() ? "the name has no extension" : "'" + given + "' is not a format Columba writes") +
+                             " (use .exr or .png)");
+  if (!fs::is_directory(directoryOf(path), ec))
+    throw std::runtime_error("cannot write '" + path + "': the directory '" + directoryOf(path) + "' does not exist");
+  return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
 }
 
 Image readEXR(const std::string& path) {

@@ -1,6 +1,7 @@
 #pragma once
 // Linear RGB float images and their files.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace columba {
@@ -14,10 +15,27 @@ struct Image {
   const float* pixel(int x, int y) const { return &rgb[(size_t(y) * width + x) * 3]; }
 };
 
+// Text recorded in an image file: EXR string attributes, PNG text chunks (name, text). Every
+// file written also records "Software" (Columba and its version).
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
 // Writers go through a temporary file renamed into place, so a failed or interrupted write
 // never replaces a good file. They throw std::runtime_error naming the path on failure.
-void writeEXR(const std::string& path, const Image& image);   // float32 RGB
-void writePNG(const std::string& path, const Image& image);   // 8-bit sRGB, clamped
+void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata = {});  // float32 RGB
+void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata = {});  // 8-bit sRGB, clamped
+// An EXR and its PNG preview, replaced together or not at all: both are written to temporary
+// files, then renamed into place; if a rename fails, the file already replaced is put back.
+// Writers of the same pair in other processes wait for each other's renames (a lock on the
+// directory), so the pair never mixes two writers' images.
+void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
+                    const ImageMetadata& metadata = {});
+
+enum class ImageFormat { EXR, PNG };
+// The format a path's extension names (".exr" or ".png", in any letter case). Throws
+// std::runtime_error naming the path for any other extension, for a path that is a directory
+// and for one whose directory does not exist: checked before work whose result it will hold.
+ImageFormat checkOutputImagePath(const std::string& path);
+
 // Throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
 // An 8-bit PNG (grey, RGB, with or without alpha) as linear values; throws InputError naming
