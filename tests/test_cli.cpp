@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "render/image.h"
 
@@ -14,9 +16,10 @@ struct CommandResult {
   std::string output;  // stdout and stderr
 };
 
-CommandResult run(const std::string& args) {
+// Runs a shell command line, collecting stdout and stderr.
+CommandResult runShell(const std::string& commandLine) {
   CommandResult r;
-  std::string command = std::string(COLUMBA_BINARY) + " " + args + " 2>&1";
+  std::string command = "(" + commandLine + ") 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
   char buffer[4096];
@@ -25,6 +28,8 @@ CommandResult run(const std::string& args) {
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+CommandResult run(const std::string& args) { return runShell(std::string(COLUMBA_BINARY) + " " + args); }
 
 class CliTest : public ::testing::Test {
  protected:
@@ -113,21 +118,169 @@ TEST_F(CliTest, BadCommandLineValuesAreRejected) {
   EXPECT_NE(run("render " + (dir_ / "absent.xml").string()).status, 0);
 }
 
-TEST_F(CliTest, InterruptWritesThePartialImageAndFails) {
+// Starts a render in the background, sends `signal` after `delay` seconds and reports the
+// exit status ("status=N") and the seconds from the signal to the exit ("answered=S").
+CommandResult renderAndSignal(const std::string& args, const char* signal, double delay) {
+  return runShell(std::string(COLUMBA_BINARY) + " render " + args + " & pid=$!; sleep " + std::to_string(delay) +
+                  "; start=$(date +%s.%N); kill -" + signal + " $pid; wait $pid; status=$?; end=$(date +%s.%N); " +
+                  "echo status=$status; echo answered=$(echo \"$end - $start\" | bc)");
+}
+
+double answeredSeconds(const CommandResult& r) {
+  size_t at = r.output.find("answered=");
+  return at == std::string::npos ? 1e9 : std::stod(r.output.substr(at + 9));
+}
+
+TEST_F(CliTest, InterruptWritesThePartialImageBesideTheOutput) {
   std::string scene = write("tiny.xml", kTinyScene);
   std::string out = (dir_ / "partial.exr").string();
   // A render far too long to finish; SIGINT after half a second.
-  std::string script = std::string(COLUMBA_BINARY) + " render " + scene + " -D res=64 --spp 1000000 -o " + out +
-                       " >/dev/null 2>&1 & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo status=$?";
-  FILE* pipe = popen(("sh -c '" + script + "'").c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  char buffer[256] = {0};
-  std::string output;
-  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  pclose(pipe);
-  EXPECT_NE(output.find("status=130"), std::string::npos) << output;
-  columba::Image img = columba::readEXR(out);
-  EXPECT_EQ(img.width, 64);
+  CommandResult r = renderAndSignal(scene + " -D res=64 --spp 1000000 -o " + out, "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((dir_ / "partial.partial.exr").string()), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR((dir_ / "partial.partial.exr").string()).width, 64);
+  EXPECT_EQ(columba::readPNG((dir_ / "partial.partial.png").string()).width, 64);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CliTest, SigtermAlsoWritesThePartialImage) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = renderAndSignal(scene + " --spp 16777216 -o " + (dir_ / "t.exr").string(), "TERM", 0.5);
+  EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "t.partial.exr")) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "t.partial.png")) << r.output;
+}
+
+TEST_F(CliTest, CtrlCIsAnsweredWithinASecondAtAnySampleCount) {
+  // Each pixel of this scene takes seconds at 2^24 samples.
+  std::string scene = write("slow.xml", R"(<scene version="3.0.0">
+  <integrator type="path"><integer name="max_depth" value="8"/></integrator>
+  <sensor type="perspective">
+    <film type="hdrfilm"><integer name="width" value="2"/><integer name="height" value="2"/></film>
+  </sensor>
+  <shape type="sphere"><float name="radius" value="100"/><bsdf type="diffuse"/></shape>
+  <emitter type="constant"><spectrum name="radiance" value="0.5"/></emitter>
+</scene>
+)");
+  CommandResult r = renderAndSignal(scene + " --spp 16777216 -o " + (dir_ / "slow.exr").string(), "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_LT(answeredSeconds(r), 1.0) << r.output;
+}
+
+TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  std::string out = (dir_ / "keep.exr").string();
+  ASSERT_EQ(run("render " + scene + " -o " + out).status, 0);
+  const auto exrBefore = fs::file_size(out), pngBefore = fs::file_size(dir_ / "keep.png");
+  CommandResult r = renderAndSignal(scene + " -D res=64 --spp 1000000 -o " + out, "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR(out).width, 8);
+  EXPECT_EQ(fs::file_size(out), exrBefore);
+  EXPECT_EQ(fs::file_size(dir_ / "keep.png"), pngBefore);
+  EXPECT_EQ(columba::readEXR((dir_ / "keep.partial.exr").string()).width, 64);
+}
+
+TEST_F(CliTest, TheExtensionChoosesTheOutputFormat) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  // A PNG name: the PNG, with the linear EXR beside it.
+  CommandResult r = run("render " + scene + " -o " + (dir_ / "a.png").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(columba::readPNG((dir_ / "a.png").string()).width, 8);
+  EXPECT_EQ(columba::readEXR((dir_ / "a.exr").string()).width, 8);
+  EXPECT_FALSE(fs::exists(dir_ / "a.png.exr"));
+  // Any letter case.
+  ASSERT_EQ(run("render " + scene + " -o " + (dir_ / "b.EXR").string()).status, 0);
+  EXPECT_EQ(columba::readEXR((dir_ / "b.EXR").string()).width, 8);
+  EXPECT_TRUE(fs::exists(dir_ / "b.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "b.EXR.exr"));
+  // Unknown extensions, no extension and directories fail before rendering.
+  fs::create_directories(dir_ / "folder");
+  fs::create_directories(dir_ / "folder.exr");
+  for (std::string bad : {"c.jpg", "c", "folder", "folder.exr"}) {
+    SCOPED_TRACE(bad);
+    CommandResult failed = run("render " + scene + " -o " + (dir_ / bad).string());
+    EXPECT_NE(failed.status, 0);
+    EXPECT_NE(failed.output.find("cannot write '" + (dir_ / bad).string() + "'"), std::string::npos) << failed.output;
+    EXPECT_EQ(failed.output.find("Rendering"), std::string::npos) << failed.output;
+  }
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"a.exr", "a.png", "b.EXR", "b.png", "folder", "folder.exr", "tiny.xml"}));
+}
+
+TEST_F(CliTest, MontageWritesTheFormatItsNameAsksFor) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " -o " + (dir_ / "a.exr").string()).status, 0);
+  CommandResult bad = run("montage -o " + (dir_ / "sheet.jpg").string() + " " + (dir_ / "a.exr").string());
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("'.jpg'"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir_ / "sheet.jpg"));
+  CommandResult exr = run("montage -o " + (dir_ / "sheet.EXR").string() + " " + (dir_ / "a.png").string());
+  ASSERT_EQ(exr.status, 0) << exr.output;
+  EXPECT_GT(columba::readEXR((dir_ / "sheet.EXR").string()).width, 0);
+}
+
+TEST_F(CliTest, CommandLineMistakesGetShortNamedMessages) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  struct Case {
+    std::string args, expected;
+  };
+  std::vector<Case> cases = {
+      {"render " + scene + " --spp 0", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --spp 16777217", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --spp 2147483647", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --threads 0", "--threads must be between 1 and"},
+      {"rendr", "unknown command 'rendr' \u2014 did you mean 'render'?"},
+      {"render --sp 4", "unknown option '--sp' for 'render' \u2014 did you mean '--spp'?"},
+      {"bsdf --mu nan -o " + dir_.string(), "--mu: must be a finite number, not 'nan'"},
+      {"bsdf --H nan -o " + dir_.string(), "--H: must be a finite number, not 'nan'"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    CommandResult r = run(c.args);
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
+    EXPECT_LT(r.output.size(), 300u) << r.output;
+  }
+  CommandResult version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.output.rfind("columba ", 0), 0u) << version.output;
+}
+
+TEST_F(CliTest, UnusedDefinesAreNamedInAWarning) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = run("render -D sp=4 " + scene + " -D res=4 -o " + (dir_ / "w.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: -D sp=4"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("-D res"), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR((dir_ / "w.exr").string()).width, 4);
+}
+
+TEST_F(CliTest, ImagesRecordHowTheyWereRendered) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " -D res=4 --spp 3 --seed 9 -o " + (dir_ / "m.exr").string()).status, 0);
+  for (std::string file : {"m.exr", "m.png"}) {
+    SCOPED_TRACE(file);
+    // The metadata is stored as plain text in both formats.
+    std::ifstream in(dir_ / file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    for (const std::string& text : {std::string("Columba "), scene, std::string("res=4"), std::string("Samples per pixel"),
+                                    std::string("Seed"), std::string("Render time")})
+      EXPECT_NE(bytes.find(text), std::string::npos) << text;
+  }
+}
+
+TEST_F(CliTest, AFilmTooLargeForMemorySaysHowMuchItNeeds) {
+  std::string scene = write("huge.xml", R"(<scene version="3.0.0">
+  <sensor type="perspective"><film type="hdrfilm"><integer name="width" value="46341"/>
+    <integer name="height" value="46341"/></film></sensor>
+</scene>
+)");
+  CommandResult r = runShell("ulimit -v 4000000; " + std::string(COLUMBA_BINARY) + " render " + scene + " -o " +
+                             (dir_ / "huge.exr").string());
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("46341 x 46341 pixels needs 24.0 GiB"), std::string::npos) << r.output;
 }
 
 TEST_F(CliTest, DefaultSceneIsAGeneratedNeck) {

@@ -2,26 +2,25 @@
 
 #include <fmt/format.h>
 
-#include <csignal>
+#include <charconv>
 #include <filesystem>
 
 #include "app/default_scene.h"
+#include "app/interruption.h"
 #include "app/progress_reporter.h"
 #include "render/renderer.h"
+#include "render/samplers/sampler_parameters.h"
 #include "scene/scene.h"
 
 namespace columba {
 
 namespace {
-std::atomic<bool> interrupted{false};
-extern "C" void onInterrupt(int) { interrupted = true; }
 
 struct RenderOptions {
   std::string scenePath;
   std::string output;
   std::vector<std::string> defines;
-  int spp = 0;
-  int threads = 0;
+  std::string spp, threads;  // checked by parseCount, so that every value gets the same message
   uint64_t seed = 0;
 };
 
@@ -36,57 +35,117 @@ Defines parseDefines(const std::vector<std::string>& items) {
   return defines;
 }
 
+// The EXR and PNG a render writes. -o names one of them; the other is written beside it, so the
+// linear data and the preview always exist together.
+struct OutputPair {
+  std::filesystem::path exr, png;
+
+  // From -o (or, without one, the scene's name in the working directory); throws before any work
+  // for a name Columba cannot write.
+  static OutputPair fromOption(const RenderOptions& options) {
+    namespace fs = std::filesystem;
+    fs::path given = options.output;
+    if (given.empty())
+      given = (options.scenePath.empty() ? std::string("default") : fs::path(options.scenePath).stem().string()) + ".exr";
+    ImageFormat format = checkOutputImagePath(given.string());
+    OutputPair pair{given, given};
+    (format == ImageFormat::EXR ? pair.png : pair.exr).replace_extension(format == ImageFormat::EXR ? ".png" : ".exr");
+    checkOutputImagePath((format == ImageFormat::EXR ? pair.png : pair.exr).string());
+    return pair;
+  }
+
+  // Where an interrupted render goes, so that it never replaces a finished image: OUT.partial.exr.
+  OutputPair partial() const {
+    auto mark = [](std::filesystem::path p) {
+      std::filesystem::path extension = p.extension();
+      return p.replace_extension().concat(".partial").concat(extension.string());
+    };
+    return {mark(exr), mark(png)};
+  }
+};
+
+// A whole number given for `option`, or 0 if it was not given.
+int parseCount(const char* option, const std::string& text, int lowest, int highest) {
+  if (text.empty()) return 0;
+  long long value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::invalid_argument || end != text.data() + text.size())
+    throw std::runtime_error(fmt::format("{} expects a whole number, not '{}'", option, text));
+  if (ec != std::errc() || value < lowest || value > highest)
+    throw std::runtime_error(fmt::format("{} must be between {} and {}, not {}", option, lowest, highest, text));
+  return int(value);
+}
+
+std::string describeDefines(const Defines& defines) {
+  std::string text;
+  for (const auto& [name, value] : defines) text += (text.empty() ? "" : "\n") + name + "=" + value;
+  return text;
+}
+
 int runRender(const RenderOptions& options) {
+  const int sppOption = parseCount("--spp", options.spp, 1, kMaxSamplesPerPixel);
+  const int threads = parseCount("--threads", options.threads, 1, 65536);
+  if (!options.scenePath.empty() && !std::filesystem::is_regular_file(options.scenePath))
+    throw std::runtime_error("scene file '" + options.scenePath + "' does not exist or is not a regular file");
+  const OutputPair outputs = OutputPair::fromOption(options);
+
   Defines defines = parseDefines(options.defines);
   ParsedScene parsed = options.scenePath.empty() ? loadDefaultScene(defines)
                                                  : loadSceneFile(options.scenePath, defines, PluginRegistry::builtin());
   SourceLocation source{options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
+  for (const std::string& name : parsed.unusedDefines)
+    fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
+               defines.at(name), name);
   Scene scene(parsed, source);
 
-  std::filesystem::path exrPath = options.output;
-  if (exrPath.empty())
-    exrPath = (options.scenePath.empty() ? std::string("default") : std::filesystem::path(options.scenePath).stem().string()) + ".exr";
-  if (exrPath.extension() != ".exr") exrPath += ".exr";
-  std::filesystem::path pngPath = exrPath;
-  pngPath.replace_extension(".png");
-  if (exrPath.has_parent_path() && !std::filesystem::is_directory(exrPath.parent_path()))
-    throw std::runtime_error("output directory '" + exrPath.parent_path().string() + "' does not exist");
-
   const Film& film = scene.sensor().film();
-  int spp = options.spp > 0 ? options.spp : scene.sensor().sampler().sampleCount();
+  int spp = sppOption > 0 ? sppOption : scene.sensor().sampler().sampleCount();
   fmt::print(stderr, "Rendering {} ({}x{}, {} spp, {} shapes, {} primitives)\n", source.file, film.width(),
              film.height(), spp, scene.shapeCount(), scene.primitiveCount());
 
   ProgressReporter progress("render");
   RenderSettings settings;
-  settings.samplesPerPixel = options.spp;
+  settings.samplesPerPixel = spp;
   settings.seed = options.seed;
-  settings.threads = options.threads;
-  settings.cancel = &interrupted;
+  settings.threads = threads;
   settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
-  auto previousHandler = std::signal(SIGINT, onInterrupt);
+  // Kept until the image is written: a second Ctrl-C while writing exits at once.
+  InterruptionGuard interruption;
+  settings.cancel = &interruption.requested();
   RenderStats stats;
   Image image = renderImage(scene, settings, stats);
-  std::signal(SIGINT, previousHandler);
   progress.finish();
 
-  writeEXR(exrPath.string(), image);
-  writePNG(pngPath.string(), image);
-  fmt::print("{} {}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s -> {}, {}\n",
+  const ImageMetadata metadata = {{"Scene", source.file},
+                                  {"Defines", describeDefines(defines)},
+                                  {"Samples per pixel", std::to_string(spp)},
+                                  {"Seed", std::to_string(options.seed)},
+                                  {"Render time", fmt::format("{:.3f} s", stats.seconds)},
+                                  {"Status", stats.complete ? "complete" : "interrupted"}};
+  const OutputPair written = stats.complete ? outputs : outputs.partial();
+  writeEXRAndPNG(written.exr.string(), written.png.string(), image, metadata);
+  std::string dropped = stats.nonFiniteSamples == 0
+                            ? ""
+                            : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
+  fmt::print("{} {}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}, {}\n",
              stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file, stats.seconds,
-             stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, exrPath.string(), pngPath.string());
-  return stats.complete ? 0 : 130;
+             stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, dropped, written.exr.string(),
+             written.png.string());
+  return stats.complete ? 0 : 128 + interruption.signalNumber();
 }
 }  // namespace
 
 void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
-  cmd->add_option("scene", options->scenePath, "Scene file (XML); none: the built-in default scene")->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", options->output, "Output EXR path; a PNG is written beside it");
-  cmd->add_option("-D,--define", options->defines, "Set a scene parameter: -D name=value (repeatable)");
-  cmd->add_option("--spp", options->spp, "Samples per pixel (default: the scene's sampler)")->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+  cmd->add_option("scene", options->scenePath, "Scene file (XML); none: the built-in default scene");
+  cmd->add_option("-o,--output", options->output,
+                  "Output image, .exr or .png: the other of the two is written beside it (default: SCENE.exr)");
+  cmd->add_option("-D,--define", options->defines, "Set a scene parameter: -D name=value (repeatable)")
+      ->allow_extra_args(false);  // one name=value per -D, so that a scene file may follow
+  cmd->add_option("--spp", options->spp,
+                  fmt::format("Samples per pixel, 1 to {} (default: the scene's sampler)", kMaxSamplesPerPixel));
+  cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)");
   cmd->add_option("--seed", options->seed, "Random seed; the same seed gives the same image");
   cmd->callback([options] {
     int code = runRender(*options);

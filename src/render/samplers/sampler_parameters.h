@@ -5,6 +5,9 @@
 
 namespace columba {
 
+// The most samples per pixel a render may take (scene files and the command line alike).
+constexpr int kMaxSamplesPerPixel = 1 << 24;
+
 struct SamplerParameters {
   int sampleCount = 4;
   // Mixed into the seed of every pixel sample, so renders with different seeds are independent.
@@ -14,7 +17,7 @@ struct SamplerParameters {
 inline SamplerParameters readSamplerParameters(const Properties& props) {
   SamplerParameters p;
   p.sampleCount = props.getInt("sample_count", 4);
-  if (p.sampleCount < 1 || p.sampleCount > (1 << 24))
+  if (p.sampleCount < 1 || p.sampleCount > kMaxSamplesPerPixel)
     throw props.error("sample_count", "must be between 1 and 2^24, got " + std::to_string(p.sampleCount));
   p.seed = uint64_t(int64_t(props.getInt("seed", 0)));
   return p;
