@@ -21,8 +21,7 @@
 //   for emitter sampling.
 // - omega_i below the vane (omega_i . n <= 0) reflects nothing; light passes with the coverage of
 //   -omega_i, the same line through the layer, so T is the same in both directions of travel
-//   (the reference mirrors z instead, which picks another line through the tilted
-//   cross-sections and makes shadow rays from below disagree with camera rays from above).
+//   (the paper's implementation uses the same in-plane line).
 //   Outgoing directions below the vane are allowed: the lower part of the arc reflects down
 //   through the gaps.
 // - Reciprocity: f_R is symmetric in its two directions when both are above the vane (I_R at
