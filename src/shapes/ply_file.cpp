@@ -230,7 +230,13 @@ PlyReader::PlyReader(const std::string& path, const std::string& description)
       if (keyword != "ply") fail("not a PLY file (the first line must be 'ply')");
       continue;
     }
-    if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
+    if (keyword == "comment") {
+      std::string text;
+      std::getline(words >> std::ws, text);
+      comments_.push_back({text, lineNo});
+      continue;
+    }
+    if (keyword.empty() || keyword == "obj_info") continue;
     if (keyword == "format") {
       std::string format;
       words >> format;

@@ -37,6 +37,12 @@ struct PlyElement {
   int findScalar(const std::string& name) const;
 };
 
+// A `comment` line of the header: its text after the keyword, and its line.
+struct PlyComment {
+  std::string text;
+  int line = 0;
+};
+
 class PlyReader {
  public:
   // Opens `path` and reads its header; `description` names the file in "cannot open" errors.
@@ -49,6 +55,7 @@ class PlyReader {
   const std::string& path() const { return path_; }
   const std::vector<PlyElement>& elements() const { return elements_; }
   int endHeaderLine() const { return endHeaderLine_; }
+  const std::vector<PlyComment>& comments() const { return comments_; }
   // An error about element `e` as the header declares it.
   InputError headerError(const PlyElement& e, const std::string& message) const;
 
@@ -81,6 +88,7 @@ class PlyReader {
   std::string path_;
   std::ifstream in_;
   std::vector<PlyElement> elements_;
+  std::vector<PlyComment> comments_;
   int endHeaderLine_ = 0;
   std::unique_ptr<PlySource> source_;
   size_t element_ = 0, index_ = 0;
