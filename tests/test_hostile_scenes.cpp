@@ -155,3 +155,28 @@ TEST_F(HostileSceneFiles, IncludeCycleNamesTheFileThatStartsIt) {
         << message;
   }
 }
+
+TEST(HostileScenes, NegativeEmissionIsRejected) {
+  for (std::string value : {std::string("<float name=\"radiance\" value=\"-1\"/>"),
+                            std::string("<rgb name=\"radiance\" value=\"1, -0.5, 0\"/>"),
+                            std::string("<spectrum name=\"radiance\" value=\"400:1, 500:-0.25, 600:1\"/>"),
+                            std::string("<spectrum name=\"radiance\" value=\"-3\"/>")}) {
+    SCOPED_TRACE(value);
+    std::string message =
+        loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n" + value + "\n</emitter>\n</scene>\n");
+    EXPECT_NE(message.find("hostile.xml:3"), std::string::npos) << message;
+    EXPECT_NE(message.find("cannot be negative"), std::string::npos) << message;
+  }
+  // Zero is dark, not negative.
+  EXPECT_EQ(loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
+                      "value=\"400:0, 500:2\"/>\n</emitter>\n</scene>\n"),
+            "");
+}
+
+TEST_F(HostileSceneFiles, NegativeEmissionFromAFileIsRejected) {
+  std::string file = write("light.spd", "400 1\n500 -2\n");
+  std::string message = loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
+                                  "filename=\"" + file + "\"/>\n</emitter>\n</scene>\n");
+  EXPECT_NE(message.find("hostile.xml:3"), std::string::npos) << message;
+  EXPECT_NE(message.find("lowest value is -2"), std::string::npos) << message;
+}

@@ -1,5 +1,7 @@
 #include "scene/properties.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -129,6 +131,15 @@ std::string Properties::getPath(const std::string& name) const {
 
 SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {
   const Value* v = find(name, {Kind::Float, Kind::Integer, Kind::Spectrum}, "a <float>, <spectrum> or <rgb>");
+  if (use == SpectrumUse::Emission && v) {
+    const float lowest = v->kind != Kind::Spectrum ? float(v->number)
+                         : v->isRGB                ? std::min({v->rgb.x, v->rgb.y, v->rgb.z})
+                                                   : v->lowest;
+    if (lowest < 0.0f)
+      throw InputError(v->location, fmt::format("parameter '{}' of {} is emitted light and cannot be negative "
+                                                "(its lowest value is {:g})",
+                                                name, element(), lowest));
+  }
   // Mitsuba's convention: a single value or a colour given for an emitter is an illuminant (D65
   // scaled to that luminance, or the colour's spectrum times D65); a tabulated spectrum is taken
   // as given.

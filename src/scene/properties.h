@@ -43,7 +43,7 @@ class Properties {
   // A file path resolved against the directory of the scene file that declared it, then the
   // working directory; throws InputError (file, line, value) if the file does not exist.
   std::string getPath(const std::string& name) const;
-  // <float>, <spectrum> or <rgb>.
+  // <float>, <spectrum> or <rgb>. Emission must not be negative anywhere (InputError).
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
 
   // Nested plug-ins (and <ref>s) of type T, in document order; each returned one counts as used.
@@ -77,6 +77,7 @@ class Properties {
     std::string text;
     Vec3 vector;
     SpectralDistribution spectrum;  // for <spectrum>: given value; for <rgb>: see rgb
+    float lowest = 0.0f;            // for <spectrum>: its smallest value
     bool isRGB = false;
     Vec3 rgb;
     Transform transform;

@@ -230,11 +230,15 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
     if (e.has("value") == e.has("filename"))
       throw InputError(loc, what + " needs exactly one of 'value' and 'filename'");
     if (e.has("value")) {
-      v.spectrum = parseSpectrum(e.attribute("value"), what, loc);
+      GivenSpectrum given = parseSpectrum(e.attribute("value"), what, loc);
+      v.spectrum = std::move(given.distribution);
+      v.lowest = given.lowest;
     } else {
       std::filesystem::path file(e.attribute("filename"));
       if (file.is_relative()) file = std::filesystem::path(props.baseDir) / file;
-      v.spectrum = readSpectrumFile(file.string(), what, loc);
+      GivenSpectrum given = readSpectrumFile(file.string(), what, loc);
+      v.spectrum = std::move(given.distribution);
+      v.lowest = given.lowest;
     }
   }
   props.set(name, std::move(v));

@@ -1,5 +1,6 @@
 #include "scene/xml_values.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -43,14 +44,15 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-SpectralDistribution fromPairs(std::vector<float> lambdas, std::vector<float> values, const std::string& what,
-                               const SourceLocation& loc) {
+GivenSpectrum fromPairs(std::vector<float> lambdas, std::vector<float> values, const std::string& what,
+                        const SourceLocation& loc) {
   if (lambdas.empty()) throw InputError(loc, "no wavelength:value pairs for " + what);
   for (size_t i = 1; i < lambdas.size(); ++i)
     if (!(lambdas[i] > lambdas[i - 1]))
       throw InputError(loc, "wavelengths must increase for " + what + " (" + std::to_string(lambdas[i - 1]) +
                                 " is followed by " + std::to_string(lambdas[i]) + ")");
-  return SpectralDistribution::piecewiseLinear(std::move(lambdas), std::move(values));
+  const float lowest = *std::min_element(values.begin(), values.end());
+  return {SpectralDistribution::piecewiseLinear(std::move(lambdas), std::move(values)), lowest};
 }
 
 }  // namespace
@@ -97,12 +99,13 @@ Vec3 parseVec3(const std::string& text, const std::string& what, const SourceLoc
   throw InputError(loc, "expected 1 or 3 numbers for " + what + ", got '" + text + "'");
 }
 
-SpectralDistribution parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc) {
+GivenSpectrum parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc) {
   if (text.find(':') == std::string::npos) {
     std::vector<std::string> tokens = splitList(text);
     if (tokens.size() != 1)
       throw InputError(loc, "expected one number or wavelength:value pairs for " + what + ", got '" + text + "'");
-    return SpectralDistribution::constant(float(parseFloat(tokens[0], what, loc)));
+    const float value = float(parseFloat(tokens[0], what, loc));
+    return {SpectralDistribution::constant(value), value};
   }
   std::vector<float> lambdas, values;
   for (const std::string& token : splitList(text)) {
@@ -115,7 +118,7 @@ SpectralDistribution parseSpectrum(const std::string& text, const std::string& w
   return fromPairs(std::move(lambdas), std::move(values), what, loc);
 }
 
-SpectralDistribution readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc) {
+GivenSpectrum readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc) {
   // Devices and pipes could be read forever.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))

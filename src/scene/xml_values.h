@@ -20,10 +20,17 @@ bool parseBoolean(const std::string& text, const std::string& what, const Source
 std::vector<double> parseFloatList(const std::string& text, const std::string& what, const SourceLocation& loc);
 // "x, y, z", or a single number used for all three components.
 Vec3 parseVec3(const std::string& text, const std::string& what, const SourceLocation& loc);
+// A spectrum as a scene file gives it, with its smallest value (negative values are an error only
+// for some uses, such as emission).
+struct GivenSpectrum {
+  SpectralDistribution distribution;
+  float lowest = 0.0f;
+};
+
 // "30" (constant) or "400:0.78, 500:0.8, ..." (piecewise linear; wavelengths in nm, increasing).
-SpectralDistribution parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc);
+GivenSpectrum parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc);
 // A regular text file of "wavelength value" lines ('#' starts a comment). Errors point at the
 // file's own line; `loc` is used when the file is missing, not a regular file or unreadable.
-SpectralDistribution readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc);
+GivenSpectrum readSpectrumFile(const std::string& path, const std::string& what, const SourceLocation& loc);
 
 }  // namespace columba
