@@ -233,6 +233,7 @@ TEST_F(CliTest, CommandLineMistakesGetShortNamedMessages) {
       {"render " + scene + " --threads 0", "--threads must be between 1 and"},
       {"rendr", "unknown command 'rendr' \u2014 did you mean 'render'?"},
       {"render --sp 4", "unknown option '--sp' for 'render' \u2014 did you mean '--spp'?"},
+      {"--versoin", "unknown option '--versoin' for 'columba' \u2014 did you mean '--version'?"},
       {"bsdf --mu nan -o " + dir_.string(), "--mu: must be a finite number, not 'nan'"},
       {"bsdf --H nan -o " + dir_.string(), "--H: must be a finite number, not 'nan'"},
   };

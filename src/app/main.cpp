@@ -64,11 +64,13 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ExtrasError& e) {
-    fmt::print(stderr, "error: {}\nRun with --help for more information.\n", unexpectedArgumentsMessage(app));
-    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // Unexpected arguments are named even when another error (such as a missing command) was
+    // found first: they are usually its cause.
+    std::string unexpected = e.get_exit_code() == 0 ? "" : unexpectedArgumentsMessage(app);
+    if (unexpected.empty()) return app.exit(e);
+    fmt::print(stderr, "error: {}\nRun with --help for more information.\n", unexpected);
+    return e.get_exit_code();
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 1;
