@@ -38,6 +38,9 @@ def main():
     with open(path, "w") as f:
         f.write("ply\nformat ascii 1.0\n")
         f.write("comment a tiny feather: 8 barbs of 64 vertices, base first (see docs/feather-ply.md)\n")
+        # Neighbouring barbs lie 0.064 apart at their bases and 0.026 at their tips: strips 0.07
+        # wide at the base (tapering to 0.3 of that) meet over most of their length.
+        f.write("comment barbwidth 0.07\n")
         f.write(f"element vertex {len(barbs) * VERTICES_PER_BARB}\n")
         for name in ("x", "y", "z", "H", "mu", "height", "out1", "out2", "out3"):
             f.write(f"property float {name}\n")
