@@ -49,8 +49,10 @@ struct OutputPair {
       given = (options.scenePath.empty() ? std::string("default") : fs::path(options.scenePath).stem().string()) + ".exr";
     ImageFormat format = checkOutputImagePath(given.string());
     OutputPair pair{given, given};
-    (format == ImageFormat::EXR ? pair.png : pair.exr).replace_extension(format == ImageFormat::EXR ? ".png" : ".exr");
-    checkOutputImagePath((format == ImageFormat::EXR ? pair.png : pair.exr).string());
+    if (format == ImageFormat::EXR) pair.png.replace_extension(".png");
+    else pair.exr.replace_extension(".exr");
+    checkOutputImagePath(pair.exr.string());
+    checkOutputImagePath(pair.png.string());
     return pair;
   }
 

@@ -3,7 +3,8 @@
 
 namespace columba {
 
-// `columba render [SCENE.xml] [-o OUT.exr] [-D name=value]... [--spp N] [--threads N] [--seed S]`
+// `columba render [SCENE.xml] [-o OUT.exr|OUT.png] [-D name=value]... [--spp N] [--threads N] [--seed S]`
+// writes OUT.exr and OUT.png; an interrupted render writes OUT.partial.exr and OUT.partial.png.
 void addRenderCommand(CLI::App& app);
 
 }  // namespace columba
