@@ -101,7 +101,7 @@ BENCHMARK(BM_BarbuleEvalOverrides);
 
 void BM_FreeStandingFilm(benchmark::State& state) {
   const std::vector<Query>& q = queries();
-  FreeStandingFilm film(CauchyIOR::keratin(), 1.000277f, 0.58f, q[0].wl);
+  FreeStandingFilm film(RefractiveIndex::keratin(), 1.000277f, 0.58f, q[0].wl);
   size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(film.reflectance(q[i++ & 4095].wi.z));

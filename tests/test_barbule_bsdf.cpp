@@ -32,7 +32,7 @@ BarbuleParameters reference(float height) {
   return p;
 }
 
-BarbuleParameters custom(float b, float phi0, float phi1, float mu, float H, float height, CauchyIOR film) {
+BarbuleParameters custom(float b, float phi0, float phi1, float mu, float H, float height, RefractiveIndex film) {
   BarbuleParameters p;
   p.b = b;
   p.phi0 = phi0;
@@ -50,8 +50,8 @@ const std::vector<ParameterSet>& parameterSets() {
   static const std::vector<ParameterSet> sets = {
       {"reference h0.58", reference(0.58f)},
       {"reference h0.59", reference(0.59f)},
-      {"round sparse", custom(0.45f, -1.0f, 1.4f, 0.25f, 2.2f, 0.65f, CauchyIOR::keratin())},
-      {"thin dense n1.56", custom(0.18f, -0.2f, 2.9f, -0.6f, 1.5f, 0.45f, CauchyIOR::constant(1.56f))},
+      {"round sparse", custom(0.45f, -1.0f, 1.4f, 0.25f, 2.2f, 0.65f, RefractiveIndex::keratin())},
+      {"thin dense n1.56", custom(0.18f, -0.2f, 2.9f, -0.6f, 1.5f, 0.45f, RefractiveIndex::constant(1.56f))},
   };
   return sets;
 }
@@ -528,7 +528,7 @@ TEST(BarbuleBSDF, FactoriesReadTheReferenceParameters) {
   props.checkAllUsed();
   EXPECT_EQ(ev->role(), BarbuleBSDF::Role::LightIncident);
   EXPECT_EQ(ev->parameters().height, 0.58f);
-  EXPECT_EQ(ev->parameters().filmIOR.b, CauchyIOR::keratin().b);
+  EXPECT_EQ(ev->parameters().filmIOR.b, RefractiveIndex::keratin().b);
   EXPECT_NEAR(ev->parameters().extIOR, 1.000277f, 1e-7f);
 
   // Defaults (DESIGN.md 5.8), a numeric and a named film index.
@@ -541,7 +541,7 @@ TEST(BarbuleBSDF, FactoriesReadTheReferenceParameters) {
   EXPECT_EQ(plain->parameters().mu, -0.35f);
   EXPECT_EQ(plain->parameters().H, 1.25f);
   EXPECT_EQ(plain->parameters().height, 0.6f);
-  EXPECT_EQ(plain->parameters().filmIOR.a, CauchyIOR::keratin().a);
+  EXPECT_EQ(plain->parameters().filmIOR.a, RefractiveIndex::keratin().a);
 
   Properties numeric = barbuleProperties("barbulebsdf");
   setFloat(numeric, "film_ior", 1.56f);

@@ -11,7 +11,7 @@ using namespace columba;
 
 namespace {
 constexpr double kAir = 1.000277;
-double keratin(double lambda) { return CauchyIOR::keratin()(float(lambda)); }
+double keratin(double lambda) { return RefractiveIndex::keratin()(float(lambda)); }
 }  // namespace
 
 TEST(ThinFilm, ZeroThicknessIsTheBareInterface) {
@@ -29,7 +29,7 @@ TEST(ThinFilm, ZeroThicknessIsTheBareInterface) {
     }
   // A free-standing film of zero thickness reflects nothing, in both implementations.
   EXPECT_NEAR(thinFilmReflectance(0.7, kAir, 1.55, kAir, 0.0, 500.0), 0.0, 1e-12);
-  FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), 0.0f, Wavelengths::fixed({400, 500, 600, 700}));
+  FreeStandingFilm film(RefractiveIndex::keratin(), float(kAir), 0.0f, Wavelengths::fixed({400, 500, 600, 700}));
   FreeStandingFilm::Reflectance r = film.reflectance(0.7f);
   for (int i = 0; i < kSpectrumSamples; ++i) {
     EXPECT_NEAR(r.s[i], 0.0f, 1e-6f);
@@ -117,7 +117,7 @@ TEST(ThinFilm, FreeStandingFilmMatchesTheAirySum) {
     for (float& l : lambdas) l = 360.0f + 470.0f * rng.nextFloat();
     float height = 1.2f * rng.nextFloat(), cosI = rng.nextFloat();
     Wavelengths wl = Wavelengths::fixed(lambdas);
-    FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), height, wl);
+    FreeStandingFilm film(RefractiveIndex::keratin(), float(kAir), height, wl);
     FreeStandingFilm::Reflectance r = film.reflectance(cosI);
     // Near grazing incidence the film's reflectance changes by ~1e-5 per float ulp of the cosine.
     double tolerance = cosI > 0.05f ? 2e-5 : 5e-4;
@@ -139,7 +139,7 @@ TEST(ThinFilm, FreeStandingFilmTransmittanceProductMatchesTheAirySum) {
     for (float& l : lambdas) l = 360.0f + 470.0f * rng.nextFloat();
     float height = 1.2f * rng.nextFloat(), cos1 = rng.nextFloat(), cos2 = rng.nextFloat();
     Wavelengths wl = Wavelengths::fixed(lambdas);
-    FreeStandingFilm film(CauchyIOR::keratin(), float(kAir), height, wl);
+    FreeStandingFilm film(RefractiveIndex::keratin(), float(kAir), height, wl);
     SpectrumLanes product = film.transmittanceProduct(cos1, cos2);
     double tolerance = std::min(cos1, cos2) > 0.05f ? 2e-5 : 5e-4;
     for (int k = 0; k < kSpectrumSamples; ++k) {
@@ -152,7 +152,7 @@ TEST(ThinFilm, FreeStandingFilmTransmittanceProductMatchesTheAirySum) {
 }
 
 TEST(Optics, KeratinFollowsCauchysLaw) {
-  CauchyIOR k = CauchyIOR::keratin();
+  RefractiveIndex k = RefractiveIndex::keratin();
   EXPECT_NEAR(k(500.0f), 1.532f + 5890.0f / 250000.0f, 1e-6f);
   EXPECT_GT(k(400.0f), k(700.0f));  // normal dispersion
   ASSERT_TRUE(iorFromName("keratin"));
@@ -196,7 +196,7 @@ TEST(ThinFilm, FreeStandingFilmWeightedProductsMatchThePairwiseProducts) {
   // The quadrature's entry point against the per-pair transmittanceProduct, in both
   // implementations where the processor runs both.
   const Wavelengths wl = Wavelengths::fixed({405.0f, 498.0f, 577.0f, 689.0f});
-  FreeStandingFilm film(CauchyIOR::keratin(), 1.000277f, 0.58f, wl);
+  FreeStandingFilm film(RefractiveIndex::keratin(), 1.000277f, 0.58f, wl);
   PCG32 rng(5);
   for (int i = 0; i < 2000; ++i) {
     FloatLanes weight, cos1, cos2;

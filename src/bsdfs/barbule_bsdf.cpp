@@ -157,7 +157,8 @@ BarbuleBSDF::Shading::Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, c
       geometry(overridden ? *overridden : bsdf.geometry_),
       film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
            std::max(given(ctx.barbuleHeight) ? ctx.barbuleHeight : bsdf.params_.height, 0.0f), wl) {
-  for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = melaninReflectance(wl[i]);
+  const std::optional<SpectralDistribution>& own = bsdf.params_.melanin;
+  for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = own ? own->eval(wl[i]) : melaninReflectance(wl[i]);
 }
 
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
@@ -428,15 +429,20 @@ float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
 
 namespace {
 
-// A <float>, or a <string> with a number, a named index or "keratin".
-CauchyIOR readIOR(const Properties& props, const std::string& name, const std::string& defaultName) {
+// A <float>, a <string> with a number, a named index or "keratin", or (`tabulated`) a <spectrum>
+// of the index against wavelength.
+RefractiveIndex readIOR(const Properties& props, const std::string& name, const std::string& defaultName,
+                        bool tabulated) {
   if (props.has(name) && !props.isString(name)) {
-    float value = props.getFloat(name);
+    SpectralDistribution n =
+        tabulated ? props.getSpectrum(name, 1.0f, SpectrumUse::Unbounded) : SpectralDistribution::constant(props.getFloat(name));
+    if (!n.isConstant()) return RefractiveIndex::tabulated(std::move(n));
+    float value = n.eval(kLambdaMin);
     if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");
-    return CauchyIOR::constant(value);
+    return RefractiveIndex::constant(value);
   }
   std::string text = props.getString(name, defaultName);
-  std::optional<CauchyIOR> ior = iorFromName(text);
+  std::optional<RefractiveIndex> ior = iorFromName(text);
   if (!ior)
     throw props.error(name, "unknown index of refraction '" + text +
                                 "' (give a number, a named material such as 'air', or 'keratin')");
@@ -445,25 +451,36 @@ CauchyIOR readIOR(const Properties& props, const std::string& name, const std::s
 
 BarbuleParameters readParameters(const Properties& props) {
   BarbuleParameters p;
+  if (props.has("preset")) {
+    std::string name = props.getString("preset");
+    std::optional<BarbuleParameters> preset = barbulePreset(name);
+    if (!preset) throw props.error("preset", "unknown preset '" + name + "' (known: " + barbulePresetNames() + ")");
+    p = *preset;
+  }
   p.b = props.getFloat("b", p.b);
   p.phi0 = props.getFloat("phi_0", p.phi0);
   p.phi1 = props.getFloat("phi_1", p.phi1);
   p.mu = props.getFloat("mu", p.mu);
   p.H = props.getFloat("H", p.H);
   p.height = props.getFloat("height", p.height);
-  p.filmIOR = readIOR(props, "film_ior", "keratin");
-  CauchyIOR ext = readIOR(props, "ext_ior", "air");
-
-  if (!(p.b > 0.0f)) throw props.error("b", "the cross-section's semi-axis must be positive");
-  if (!(p.H > 0.0f)) throw props.error("H", "the barbule spacing must be positive");
-  if (!(p.height >= 0.0f)) throw props.error("height", "the film thickness must not be negative");
-  float arc = p.phi1 - p.phi0;
-  if (!(arc > 0.0f && (arc <= kPi || arc >= kTwoPi)))
-    throw props.error("phi_1", "the reflective arc phi_1 - phi_0 must lie in (0, pi] or be at least 2 pi");
+  if (props.has("film_cauchy_a") || props.has("film_cauchy_b")) {
+    if (props.has("film_ior"))
+      throw props.error("film_ior", "give the film's index either as film_ior or as film_cauchy_a/film_cauchy_b");
+    p.filmIOR = RefractiveIndex::cauchy(props.getFloat("film_cauchy_a"), props.getFloat("film_cauchy_b", 0.0f));
+  } else {
+    p.filmIOR = readIOR(props, "film_ior", "keratin", true);
+  }
+  RefractiveIndex ext = readIOR(props, "ext_ior", "air", false);
   if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
   p.extIOR = ext.a;
-  if (!(p.filmIOR(kLambdaMin) > p.extIOR && p.filmIOR(kLambdaMax) > p.extIOR))
-    throw props.error("film_ior", "the film must be optically denser than the surrounding medium");
+  if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
+
+  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
+    bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
+    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
+  }
+  if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p))
+    warn(props.locationOf(odd->parameter), "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message);
   return p;
 }
 

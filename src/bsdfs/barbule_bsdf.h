@@ -33,22 +33,11 @@
 #include <memory>
 #include <vector>
 #include "bsdfs/barbule_cross_section.h"
+#include "bsdfs/barbule_parameters.h"
 #include "bsdfs/bsdf.h"
-#include "optics/dispersion.h"
 #include "scene/properties.h"
 
 namespace columba {
-
-struct BarbuleParameters {
-  float b = 0.25f;      // cross-section semi-axis along n (the one across is 1)
-  float phi0 = -0.37f;  // reflective arc, normal angles in the cross-section's own frame (rad)
-  float phi1 = 2.64f;
-  float mu = -0.35f;    // tilt of the cross-section about the barbule axis (rad)
-  float H = 1.25f;      // barbule spacing, in units of the across semi-axis
-  float height = 0.6f;  // keratin cortex (film) thickness, micrometres
-  CauchyIOR filmIOR = CauchyIOR::keratin();
-  float extIOR = 1.000277f;  // air
-};
 
 // Gauss-Legendre node counts of the deterministic averages over visible normals: the TRT lobe
 // (offsets across the lit arc x longitudinal angles; one longitudinal node sits at the mean angle)
@@ -137,8 +126,12 @@ class BarbuleBSDF : public BSDF {
   std::vector<float> lobeNodes_, lobeWeights_;
 };
 
-// Plug-ins `barbulebsdf` and `barbulebsdfev`: b, phi_0, phi_1, mu, H, height (<float>),
-// film_ior ("keratin" by default, or a number or a named index), ext_ior ("air" by default).
+// Plug-ins `barbulebsdf` and `barbulebsdfev`: preset (a <string>, see barbule_parameters.h; the
+// parameters given beside it override it), b, phi_0, phi_1, mu, H, height (<float>), film_ior
+// ("keratin" by default, or a number, a named index, or a <spectrum> of n against wavelength),
+// or film_cauchy_a and film_cauchy_b (n = a + b / lambda^2, lambda in nm), ext_ior ("air" by
+// default), melanin (a <spectrum> or <float> of reflectance; the embedded measured table by
+// default).
 std::shared_ptr<Object> makeBarbuleBSDF(const Properties& props);
 std::shared_ptr<Object> makeBarbuleBSDFEv(const Properties& props);
 

@@ -71,10 +71,12 @@ constexpr SpectrumLanes lanes(float c) { return SpectrumLanes{c, c, c, c}; }
 
 const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {lanes(1.0f / kPi), lanes(kPi), lanes(12582912.0f)};
 
-FreeStandingFilm::FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm,
+FreeStandingFilm::FreeStandingFilm(const RefractiveIndex& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
   SpectrumLanes lambda = toLanes(wl.lambda);
-  SpectrumLanes eta = (film.a + film.b / (lambda * lambda)) * (1.0f / nOutside);
+  SpectrumLanes nFilm;
+  for (int k = 0; k < kSpectrumSamples; ++k) nFilm[k] = film(wl.lambda[k]);
+  SpectrumLanes eta = nFilm * (1.0f / nOutside);
   medium_.etaSqr = eta * eta;
   medium_.invEtaSqr = 1.0f / medium_.etaSqr;
   medium_.etaSqrMinusOne = medium_.etaSqr - 1.0f;

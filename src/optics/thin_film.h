@@ -63,7 +63,7 @@ inline Spectrum toSpectrum(SpectrumLanes v) {
 class FreeStandingFilm {
  public:
   FreeStandingFilm() = default;
-  FreeStandingFilm(const CauchyIOR& film, float nOutside, float thicknessUm, const Wavelengths& wl);
+  FreeStandingFilm(const RefractiveIndex& film, float nOutside, float thicknessUm, const Wavelengths& wl);
 
   struct Reflectance {
     SpectrumLanes s, p;

@@ -1,0 +1,47 @@
+#pragma once
+// The barbule BSDF's parameters: their defaults (the paper's reference scenes), presets for rock
+// dove barbules with their sources, and the checks every way of setting them shares (the scene
+// plug-in, `columba bsdf`).
+#include <optional>
+#include <string>
+#include <vector>
+#include "core/spectrum.h"
+#include "optics/dispersion.h"
+
+namespace columba {
+
+struct BarbuleParameters {
+  float b = 0.25f;      // cross-section semi-axis along n (the one across is 1)
+  float phi0 = -0.37f;  // reflective arc, normal angles in the cross-section's own frame (rad)
+  float phi1 = 2.64f;
+  float mu = -0.35f;    // tilt of the cross-section about the barbule axis (rad)
+  float H = 1.25f;      // barbule spacing, in units of the across semi-axis
+  float height = 0.6f;  // keratin cortex (film) thickness, micrometres
+  RefractiveIndex filmIOR = RefractiveIndex::keratin();
+  float extIOR = 1.000277f;  // air
+  // Intensity reflectance of the melanin layer under the film; the embedded measured table
+  // (optics/melanin.h) when empty.
+  std::optional<SpectralDistribution> melanin;
+};
+
+// A named set of shape parameters and film thickness, with where the values come from.
+struct BarbulePreset {
+  const char* name;
+  const char* source;
+  float b, phi0, phi1, mu, H, height;
+};
+const std::vector<BarbulePreset>& barbulePresets();
+// The preset's parameters (the rest at their defaults); nullopt for an unknown name.
+std::optional<BarbuleParameters> barbulePreset(const std::string& name);
+// "dove-green, dove-purple": for messages.
+std::string barbulePresetNames();
+
+// What is wrong with a parameter set, naming the parameter as the scene plug-in spells it.
+struct BarbuleParameterProblem {
+  std::string parameter, message;
+};
+std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p);
+// Values that are valid but probably a mistake (a film thickness given in nanometres).
+std::optional<BarbuleParameterProblem> findImplausibility(const BarbuleParameters& p);
+
+}  // namespace columba
