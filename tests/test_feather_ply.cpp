@@ -12,7 +12,7 @@ using namespace columba;
 
 namespace {
 
-// Two straight barbs; vertex i of barb b at (i * 0.01, b * 0.1, 0) with H = i, mu = -0.35,
+// Two straight barbs; vertex i of barb b at (i * 0.01, b * 0.1, 0) with H = i + 1, mu = -0.35,
 // height = 0.6 and normal +z.
 struct Vertex {
   float x, y, z, H, mu, height, nx, ny, nz;
@@ -21,7 +21,7 @@ struct Vertex {
 std::vector<Vertex> twoBarbs() {
   std::vector<Vertex> v;
   for (int b = 0; b < 2; ++b)
-    for (int i = 0; i < kBarbVertices; ++i) v.push_back({i * 0.01f, b * 0.1f, 0.0f, float(i), -0.35f, 0.6f, 0, 0, 2});
+    for (int i = 0; i < kBarbVertices; ++i) v.push_back({i * 0.01f, b * 0.1f, 0.0f, float(i + 1), -0.35f, 0.6f, 0, 0, 2});
   return v;
 }
 
@@ -109,7 +109,7 @@ TEST_F(FeatherPlyTest, ReadsAsciiWithPerVertexParameters) {
   EXPECT_FLOAT_EQ(d.positions[64 + 3].y, 0.1f);
   EXPECT_FLOAT_EQ(d.normals[5].z, 1.0f);  // normalised
   ASSERT_EQ(d.barbuleH.size(), 128u);
-  EXPECT_FLOAT_EQ(d.barbuleH[70], 6.0f);
+  EXPECT_FLOAT_EQ(d.barbuleH[70], 7.0f);
   EXPECT_FLOAT_EQ(d.barbuleMu[70], -0.35f);
   EXPECT_FLOAT_EQ(d.barbuleHeight[70], 0.6f);
   EXPECT_EQ(d.firstFaceLine, kHeaderLines + 128 + 1);
@@ -227,4 +227,74 @@ TEST_F(FeatherPlyTest, RejectsOtherFormatsAndMissingFiles) {
   std::ofstream(f) << "ply\nformat binary_big_endian 1.0\nend_header\n";
   EXPECT_NE(errorOf(f).find(f + ":2"), std::string::npos) << errorOf(f);
   EXPECT_NE(errorOf(path("missing.ply")).find("cannot open"), std::string::npos);
+}
+
+TEST_F(FeatherPlyTest, ReportsBarbuleValuesOutOfRangeWithTheirLineOrIndex) {
+  struct Case {
+    const char* name;
+    float Vertex::*field;
+    float value;
+    const char* says;
+  };
+  for (const Case& c : {Case{"zeroH.ply", &Vertex::H, 0.0f, "H is 0"}, Case{"negH.ply", &Vertex::H, -0.5f, "H is -0.5"},
+                        Case{"negHeight.ply", &Vertex::height, -0.25f, "height is -0.25"}}) {
+    std::vector<Vertex> v = twoBarbs();
+    v[70].*c.field = c.value;
+    std::string f = writeAscii(c.name, v, 128);
+    std::string err = errorOf(f);
+    EXPECT_NE(err.find(f + ":" + std::to_string(kHeaderLines + 71)), std::string::npos) << err;
+    EXPECT_NE(err.find(c.says), std::string::npos) << err;
+    std::string b = writeBinary(std::string("bin") + c.name, v);
+    err = errorOf(b);
+    EXPECT_NE(err.find(b), std::string::npos) << err;
+    EXPECT_NE(err.find("vertex 70"), std::string::npos) << err;
+    EXPECT_NE(err.find(c.says), std::string::npos) << err;
+  }
+  // A zero thickness is valid (the BSDF's own applies).
+  std::vector<Vertex> v = twoBarbs();
+  v[3].height = 0.0f;
+  EXPECT_EQ(errorOf(writeAscii("zeroHeight.ply", v, 128)), "");
+}
+
+TEST_F(FeatherPlyTest, UsesBarbuleValuesOnlyAllTogether) {
+  // The original implementation reads H, mu and height only when all three are there.
+  std::string text = "ply\nformat ascii 1.0\nelement vertex 64\nproperty float x\nproperty float y\n"
+                     "property float z\nproperty float H\nproperty float out1\nproperty float out2\n"
+                     "property float out3\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < kBarbVertices; ++i) text += std::to_string(0.01 * i) + " 0 0 0.7 0 0 1\n";
+  text += "64";
+  for (int i = 0; i < kBarbVertices; ++i) text += " " + std::to_string(i);
+  text += "\n";
+  std::string f = path("onlyH.ply");
+  std::ofstream(f) << text;
+  FeatherPlyData d = readFeatherPly(f);
+  EXPECT_FALSE(d.hasBarbuleValues());
+  EXPECT_TRUE(d.barbuleH.empty() && d.barbuleMu.empty() && d.barbuleHeight.empty());
+  EXPECT_TRUE(readFeatherPly(writeAscii("all.ply", twoBarbs(), 128)).hasBarbuleValues());
+}
+
+TEST_F(FeatherPlyTest, ReadsTheRecordedBarbWidth) {
+  std::string f = writeAscii("bw.ply", twoBarbs(), 128);
+  std::ifstream in(f);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  in.close();
+  const std::string text = ss.str();
+  EXPECT_FALSE(readFeatherPly(f).barbWidth.has_value());
+  auto withComment = [&](const std::string& comment) {
+    std::string t = text;
+    t.replace(t.find("comment test\n"), 13, comment + "\n");
+    std::ofstream(f) << t;
+  };
+  withComment("comment barbwidth 0.0125");
+  FeatherPlyData d = readFeatherPly(f);
+  ASSERT_TRUE(d.barbWidth.has_value());
+  EXPECT_FLOAT_EQ(*d.barbWidth, 0.0125f);
+  for (const char* bad : {"comment barbwidth", "comment barbwidth -1", "comment barbwidth 0.01cm",
+                          "comment barbwidth 0.01 0.02"}) {
+    withComment(bad);
+    std::string err = errorOf(f);
+    EXPECT_NE(err.find(f + ":3"), std::string::npos) << bad << ": " << err;
+    EXPECT_NE(err.find("barb width"), std::string::npos) << err;
+  }
 }

@@ -1,7 +1,11 @@
 #include "shapes/feather_ply.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 #include "shapes/ply_file.h"
 
@@ -32,20 +36,31 @@ std::vector<int> vertexRoles(const PlyReader& ply, const PlyElement& e) {
   } else {
     assign("nx", kNX); assign("ny", kNY); assign("nz", kNZ);
   }
-  assign("H", kH);
-  assign("mu", kMu);
-  assign("height", kHeight);
+  const bool h = has("H"), mu = has("mu"), height = has("height");
+  if (h && mu && height) {
+    assign("H", kH);
+    assign("mu", kMu);
+    assign("height", kHeight);
+  } else if (h || mu || height) {
+    warn({ply.path(), e.line}, "element vertex has only some of the barbule values H, mu and height; like the "
+                               "original implementation, Columba uses them only all together, so the feather's "
+                               "defaults apply");
+  }
   return roles;
 }
+
+std::string valueText(double v) { return fmt::format("{}", v); }
 
 void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
   std::vector<int> roles = vertexRoles(ply, e);
   auto hasRole = [&](int role) { return std::find(roles.begin(), roles.end(), role) != roles.end(); };
   out.positions.resize(e.count);
   out.normals.resize(e.count);
-  if (hasRole(kH)) out.barbuleH.resize(e.count);
-  if (hasRole(kMu)) out.barbuleMu.resize(e.count);
-  if (hasRole(kHeight)) out.barbuleHeight.resize(e.count);
+  if (hasRole(kH)) {
+    out.barbuleH.resize(e.count);
+    out.barbuleMu.resize(e.count);
+    out.barbuleHeight.resize(e.count);
+  }
   for (size_t i = 0; i < e.count; ++i) {
     ply.next();
     float v[kRoleCount] = {};
@@ -58,9 +73,14 @@ void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
     if (!(lengthSquared(normal) > 0.0f)) ply.fail("the vane normal is zero");
     out.positions[i] = Vec3(v[kX], v[kY], v[kZ]);
     out.normals[i] = normalize(normal);
-    if (!out.barbuleH.empty()) out.barbuleH[i] = v[kH];
-    if (!out.barbuleMu.empty()) out.barbuleMu[i] = v[kMu];
-    if (!out.barbuleHeight.empty()) out.barbuleHeight[i] = v[kHeight];
+    if (out.hasBarbuleValues()) {
+      if (!(v[kH] > 0.0f)) ply.fail("H is " + valueText(v[kH]) + "; the barbule spacing must be positive");
+      if (!(v[kHeight] >= 0.0f))
+        ply.fail("height is " + valueText(v[kHeight]) + "; the cortex thickness (um) cannot be negative");
+      out.barbuleH[i] = v[kH];
+      out.barbuleMu[i] = v[kMu];
+      out.barbuleHeight[i] = v[kHeight];
+    }
   }
 }
 
@@ -98,6 +118,23 @@ void readBody(PlyReader& ply, FeatherPlyData& out) {
   ply.finish();
 }
 
+// `comment barbwidth W`: W positive and finite.
+std::optional<float> recordedBarbWidth(const PlyReader& ply) {
+  std::optional<float> width;
+  for (const PlyComment& c : ply.comments()) {
+    std::istringstream words(c.text);
+    std::string key, value, extra;
+    if (!(words >> key) || key != kBarbWidthComment) continue;
+    words >> value >> extra;
+    char* end = nullptr;
+    const double w = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !extra.empty() || !(w > 0.0) || !std::isfinite(float(w)))
+      throw InputError({ply.path(), c.line}, "'comment " + c.text + "': the barb width must be one positive number");
+    width = float(w);
+  }
+  return width;
+}
+
 }  // namespace
 
 SourceLocation FeatherPlyData::faceLocation(size_t i) const {
@@ -115,6 +152,7 @@ FeatherPlyData readFeatherPly(const std::string& path) {
   PlyReader ply(path, "feather PLY file");
   FeatherPlyData data;
   data.path = path;
+  data.barbWidth = recordedBarbWidth(ply);
   readBody(ply, data);
   return data;
 }
