@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the feather tests: synthetic barbs, an Embree scene around one shape, and
-// an independent double-precision intersector to check the strips against.
+// an independent double-precision intersector to check the strips (serrated edges included)
+// against.
 #include <embree3/rtcore.h>
 
 #include <array>
@@ -151,7 +152,13 @@ inline std::vector<ReferenceHit> referenceHits(const FeatherShape& shape, const 
       double phi = std::atan2(dotd(rel, b), dotd(rel, n) + R);
       double frac = std::min(1.0, std::max(0.0, along / s.length));
       double halfWidth = s.halfWidthStart + frac * (s.halfWidthEnd - s.halfWidthStart);
-      if (std::abs(phi) > std::asin(halfWidth / R)) continue;
+      const double edge = std::asin(halfWidth / R);
+      if (std::abs(phi) > edge) continue;
+      // Serrated edges, as the original cuts them (z from the segment's tip-ward vertex).
+      const double z = s.length - along;
+      if (std::abs(phi) > 0.94 * edge && z >= 0.0 &&
+          std::fmod(3.0 * z, s.length) > s.length * (std::abs(phi) - edge) / (0.94 * edge - edge))
+        continue;
       if (dotd(rel, v(s.startMitre)) < 0) continue;
       if (dotd(sub(rel, D3{a.x * s.length, a.y * s.length, a.z * s.length}), v(s.endMitre)) > 0) continue;
       hits.push_back({t, prim});

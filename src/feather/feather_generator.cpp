@@ -5,12 +5,15 @@
 #include "feather/feather_design.h"
 #include "feather/feather_ply_writer.h"
 #include "feather/neck_layout.h"
+#include "shapes/feather_barbule_values.h"
 #include "shapes/feather_shape.h"
 
 namespace columba {
 
 namespace {
 
+// The barbules the generator means, in the model's terms; the file stores them in its own
+// convention, so that they render so in Columba and in the original implementation alike.
 constexpr float kBarbuleH = 1.25f, kBarbuleMu = -0.35f;
 
 // Takes one feather's own 2D frame (x along the rachis, y across) to the PLY's 3D space: onto
@@ -66,14 +69,14 @@ void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
       BarbVertex& v = vertices[k];
       v.position = mapping.position(polyline[k]);
       v.normal = mapping.normal(polyline[k]);
-      v.barbuleH = barbuleH;
-      v.barbuleMu = kBarbuleMu;
+      v.fileH = fileSpacingFromModel(barbuleH);
+      v.fileMu = fileTiltFromModel(kBarbuleMu);
       float purple = 0.0f;
       if (colouring) {
         Vec2 st = mapping.surfaceCoordinates(polyline[k]);
         purple = colouring->purple(st.x, st.y);
       }
-      v.barbuleHeight = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
+      v.height = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
     }
     writer.writeBarb(vertices);
   };
@@ -121,7 +124,7 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
 
   NeckSurface neck;
   NeckColouring colouring(options.seed);
-  FeatherPlyWriter writer(path, options.binary, summary.faces);
+  FeatherPlyWriter writer(path, options.binary, summary.faces, summary.tilingBarbWidth);
   for (const FeatherPlacement& placement : layout.feathers) {
     VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
     writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, writer);

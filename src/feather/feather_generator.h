@@ -4,16 +4,19 @@
 // feather is its rachis followed by its barbs, every one a face of the PLY; the rachis, as
 // wide as a barb at its base, closes the seam where the barbs of both sides meet.
 //
-// Per-vertex barbule parameters, used as they are by the feather shape:
-// - H (barbule spacing) 1.25, varied by +-4% from barb to barb;
-// - mu (barbule tilt) -0.35 rad;
+// Per-vertex barbule parameters, meant as the model's and written in the file convention of
+// shapes/feather_barbule_values.h (file H = H / 2.5, file mu = -mu), so that the feather shape,
+// like the original implementation, renders them as meant (the ramus tilt comes on top):
+// - H (barbule spacing) 1.25, varied by +-4% from barb to barb (file H 0.5);
+// - mu (barbule tilt) -0.35 rad (file mu 0.35);
 // - height (keratin cortex thickness, um): 0.60 for green barbules, 0.51 for purple ones, with
 //   +-0.008 from barb to barb. Through the thin film, 0.60 um reflects green at normal incidence
 //   and turns lilac toward 40 degrees; 0.51 um reflects red and blue (purple) at normal
 //   incidence and turns yellow-green toward 40 degrees, the colour swap of real neck feathers.
 //   A single feather is green; on a neck the two blend smoothly over a boundary region.
 // The vane normal is that of the feather's surface (the neck, the feather's pitch and its
-// slight dome across the vane).
+// slight dome across the vane). The header records the barbwidth at which neighbouring barbs lie
+// edge to edge (`comment barbwidth W`), which the feather shape uses when the scene sets none.
 #include <cstdint>
 #include <string>
 

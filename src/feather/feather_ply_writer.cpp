@@ -15,18 +15,19 @@ namespace {
 constexpr size_t kFlushSize = 1 << 20;
 }  // namespace
 
-FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount)
+FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, float barbWidth)
     : path_(path), tempPath_(path + ".tmp" + std::to_string(getpid())), binary_(binary), barbCount_(barbCount) {
   file_ = std::fopen(tempPath_.c_str(), "wb");
   if (!file_) throw std::runtime_error("cannot create '" + tempPath_ + "': " + std::strerror(errno));
   buffer_.reserve(2 * kFlushSize);
   std::string header = fmt::format(
       "ply\nformat {} 1.0\ncomment Columba procedural feathers: one face per barb, base first\n"
+      "comment {} {}\n"
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
       "property float H\nproperty float mu\nproperty float height\n"
       "property float out1\nproperty float out2\nproperty float out3\n"
       "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
-      binary ? "binary_little_endian" : "ascii", barbCount * kBarbVertices, barbCount);
+      binary ? "binary_little_endian" : "ascii", kBarbWidthComment, barbWidth, barbCount * kBarbVertices, barbCount);
   put(header.data(), header.size());
 }
 
@@ -50,8 +51,8 @@ void FeatherPlyWriter::writeBarb(const BarbVertex* vertices) {
   ++written_;
   for (int i = 0; i < kBarbVertices; ++i) {
     const BarbVertex& v = vertices[i];
-    const float values[9] = {v.position.x, v.position.y, v.position.z, v.barbuleH, v.barbuleMu,
-                             v.barbuleHeight, v.normal.x, v.normal.y, v.normal.z};
+    const float values[9] = {v.position.x, v.position.y, v.position.z, v.fileH, v.fileMu,
+                             v.height, v.normal.x, v.normal.y, v.normal.z};
     if (binary_) {
       put(reinterpret_cast<const char*>(values), sizeof(values));
     } else {

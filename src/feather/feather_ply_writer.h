@@ -15,13 +15,15 @@ namespace columba {
 struct BarbVertex {
   Vec3 position;
   Vec3 normal;  // vane normal
-  float barbuleH = 0.0f, barbuleMu = 0.0f, barbuleHeight = 0.0f;
+  // In the file's convention (shapes/feather_barbule_values.h), not the model's.
+  float fileH = 0.0f, fileMu = 0.0f, height = 0.0f;
 };
 
 class FeatherPlyWriter {
  public:
-  // Throws std::runtime_error if the temporary file cannot be created.
-  FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount);
+  // Throws std::runtime_error if the temporary file cannot be created. `barbWidth` is recorded
+  // in the header (`comment barbwidth W`) for the feather shape to use when the scene sets none.
+  FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, float barbWidth);
   ~FeatherPlyWriter();
   FeatherPlyWriter(const FeatherPlyWriter&) = delete;
   FeatherPlyWriter& operator=(const FeatherPlyWriter&) = delete;

@@ -9,8 +9,10 @@
 // angle between this segment and its neighbours (at a barb's first and last vertex the cut is
 // square), so consecutive strips share the same cut curve: with the strip normals transported
 // across each joint by reflection in the mitre plane (see transportAcrossJoint), the two
-// cylinders are mirror images in that plane and meet without gap or overlap.
+// cylinders are mirror images in that plane and meet without gap or overlap. The strip's outer
+// edges are serrated (barb_serration.h): rays pass through the gaps between the teeth.
 #include "core/vector.h"
+#include "shapes/barb_serration.h"
 
 namespace columba {
 
@@ -87,10 +89,10 @@ struct alignas(64) PackedStrip {
   // A box containing the strip, with room for the mitre slack of intersect().
   void bounds(const StripProfile& profile, Vec3& lo, Vec3& hi) const;
 
-  // Nearest hit with t in (tmin, tmax) of the ray o + t d (d need not be unit). Points within a
-  // few float ulps of a mitre plane count as inside on both sides, so rays through a joint
-  // cannot slip between the two strips; the duplicate is at the same point. Inline: it is the
-  // body of the Embree intersect callback.
+  // Nearest hit with t in (tmin, tmax) of the ray o + t d (d need not be unit), on the strip
+  // less the gaps of its serrated edges. Points within a few float ulps of a mitre plane count
+  // as inside on both sides, so rays through a joint cannot slip between the two strips; the
+  // duplicate is at the same point. Inline: it is the body of the Embree intersect callback.
   bool intersect(const StripProfile& profile, const Vec3& o, const Vec3& d, float tmin, float tmax,
                  StripHit& hit) const;
 };
@@ -122,16 +124,19 @@ inline bool PackedStrip::intersect(const StripProfile& profile, const Vec3& o, c
     float px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
     if (py <= 0.0f) continue;  // the half of the cylinder away from the strip
     float axial = pz / length;
-    if (std::abs(px) > profile.halfWidthAt(axial)) continue;
+    const float halfWidth = profile.halfWidthAt(axial);
+    if (std::abs(px) > halfWidth) continue;
     // Slack for the mitre planes: a few ulps of the coordinates the hit point was computed from.
     float slack = 1e-6f * (maxAbsComponent(p0) + std::abs(ox) + std::abs(oy) + std::abs(oz) + radius);
     float below = py - radius;  // height relative to the top line
     if (px * startMitre.x + below * startMitre.y + pz * startMitre.z < -slack) continue;
     if (px * endMitre.x + below * endMitre.y + (pz - length) * endMitre.z > slack) continue;
+    // The angle and normal are left to the surviving hit: most are superseded by nearer ones.
+    const float sinAngle = px * (1.0f / std::sqrt(px * px + py * py));
+    if (!BarbSerration::keeps(std::abs(sinAngle), halfWidth / radius, axial)) continue;
     hit.t = t;
     hit.axial = axial;
-    // The angle and normal are left to the surviving hit: most are superseded by nearer ones.
-    hit.sinAngle = px * (1.0f / std::sqrt(px * px + py * py));
+    hit.sinAngle = sinAngle;
     return true;
   }
   return false;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include "shapes/embree_user_geometry.h"
+#include "shapes/feather_barbule_values.h"
 
 namespace columba {
 
@@ -110,14 +111,12 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     gather(ply.barbuleMu, ply.barbIndices);
     gather(ply.barbuleHeight, ply.barbIndices);
   }
-  if (!ply.barbuleH.empty() || !ply.barbuleMu.empty() || !ply.barbuleHeight.empty()) {
-    // Interleaved, so that a hit reads its parameters from one place; NaN where the file lacks one.
-    constexpr float kMissing = std::numeric_limits<float>::quiet_NaN();
+  if (ply.hasBarbuleValues()) {
+    // In the model's terms and interleaved, so that a hit reads its parameters from one place.
     barbuleParams_.resize(ply.positions.size());
     tbb::parallel_for(size_t(0), barbuleParams_.size(), [&](size_t i) {
-      barbuleParams_[i] = {ply.barbuleH.empty() ? kMissing : ply.barbuleH[i],
-                           ply.barbuleMu.empty() ? kMissing : ply.barbuleMu[i],
-                           ply.barbuleHeight.empty() ? kMissing : ply.barbuleHeight[i]};
+      barbuleParams_[i] = {modelSpacingFromFile(ply.barbuleH[i]), modelTiltFromFile(ply.barbuleMu[i]),
+                           ply.barbuleHeight[i]};
     });
   }
 
@@ -213,20 +212,26 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   si.uv = Vec2((float(seg) + along) / float(kBarbSegments), angle / cover_);
   Vec3 t = s.axis;
   if (std::abs(angle) >= ramusHalfAngle_) {
-    // Barbules point toward the tip and away from the ramus on either side.
-    Vec3 outward = (b * cosAngle - s.n * sinAngle) * (angle > 0.0f ? 1.0f : -1.0f);
-    t = s.axis * cosSpan_ + outward * sinSpan_;
+    // Barbules leave the ramus toward the tip on either side. The frame (s, t, n) is right-handed
+    // with s toward the ramus on both sides, as in the original, so that one tilt makes the two
+    // rows mirror images; on the positive side t therefore runs back along the barbule (the BSDF
+    // is symmetric in t).
+    const Vec3 circumferential = b * cosAngle - s.n * sinAngle;  // toward increasing angle
+    t = angle > 0.0f ? -(s.axis * cosSpan_ + circumferential * sinSpan_) : s.axis * cosSpan_ - circumferential * sinSpan_;
   }
   si.shading = Frame(cross(t, si.ng), t, si.ng);
-  if (barbuleParams_.empty()) {
-    si.bsdfContext.barbuleH = si.bsdfContext.barbuleMu = si.bsdfContext.barbuleHeight =
-        std::numeric_limits<float>::quiet_NaN();
-  } else {
+  BarbuleParameters values = kDefaultBarbuleParameters;
+  if (!barbuleParams_.empty()) {
     const BarbuleParameters* v = &barbuleParams_[barb * kBarbVertices + size_t(seg)];
-    si.bsdfContext.barbuleH = lerp(along, v[0].h, v[1].h);
-    si.bsdfContext.barbuleMu = lerp(along, v[0].mu, v[1].mu);
-    si.bsdfContext.barbuleHeight = lerp(along, v[0].height, v[1].height);
+    values = {lerp(along, v[0].h, v[1].h), lerp(along, v[0].mu, v[1].mu), lerp(along, v[0].height, v[1].height)};
   }
+  const float edgeAngle = std::asin(std::min(profiles_[seg].halfWidthAt(hit.u) / radius_, 1.0f));
+  values.mu += ramusTilt(angle, edgeAngle);
+  // A zero tilt or thickness leaves the BSDF's own parameter in force, as in the original.
+  constexpr float kBsdfsOwn = std::numeric_limits<float>::quiet_NaN();
+  si.bsdfContext.barbuleH = values.h;
+  si.bsdfContext.barbuleMu = values.mu == 0.0f ? kBsdfsOwn : values.mu;
+  si.bsdfContext.barbuleHeight = values.height == 0.0f ? kBsdfsOwn : values.height;
   return si;
 }
 

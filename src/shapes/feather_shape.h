@@ -23,17 +23,27 @@
 //   direction, at angle `span` from the barb axis toward the tip and away from the ramus
 //   (mirrored on the two sides), s = cross(t, n). On the ramus, |phi| < asin(ramuswidth/2/R),
 //   there are no barbules: t is the barb axis (onRamus() tells those hits apart).
-// - Per-vertex H, mu and height are used as they are in the PLY as the barbule BSDF's H, mu
-//   (radians) and cortex thickness (um), interpolated linearly along the barb (NaN when the
-//   file lacks them, so the BSDF uses its own). The reference implementation multiplied the
-//   file's H by 2.5 and negated mu; Columba does neither. The same mu applies on both sides
-//   of the ramus in each side's right-handed frame (s, t, n).
+// - Shading frame orientation: right-handed (s, t, n) with s pointing toward the ramus on both
+//   sides, as in the original implementation, so that one tilt mu describes two rows of barbules
+//   that are mirror images; on the positive side (phi > 0) t therefore points back along the
+//   barbule, toward the ramus (the barbule BSDF is symmetric under t -> -t).
+// - Serrated edges: beyond 0.94 of the strip's local half-angle phi_edge the strip is a row of
+//   sawteeth (barb_serration.h). The gaps are dropped in the Embree callbacks, so rays pass
+//   through them (the original ends the path there instead).
+// - Barbule values (feather_barbule_values.h), the original implementation's convention: per
+//   vertex, the model's H is 2.5 x the file's H, the model's mu is -(file mu), height is as
+//   given; they are interpolated linearly along the segment (the original holds the value of
+//   the segment's base-ward vertex). A file without them gets the feather's defaults (file H
+//   0.5, mu 0.35, height 0.65 um), not the BSDF's. At a hit at angle phi, mu gains the ramus
+//   tilt 0.5 (|phi| / d_r - 1) where |phi| < d_r = 0.1 phi_edge. A resulting mu or height of
+//   exactly 0 leaves the BSDF's own parameter in force (NaN in the context), as in the original.
 #include <array>
 #include <memory>
 #include <vector>
 #include "core/transform.h"
 #include "scene/properties.h"
 #include "shapes/barb_strip.h"
+#include "shapes/feather_barbule_values.h"
 #include "shapes/feather_ply.h"
 #include "shapes/shape.h"
 
@@ -83,8 +93,11 @@ class FeatherShape : public Shape {
   std::vector<PackedStrip> strips_;
   std::array<StripProfile, kBarbSegments> profiles_;  // by segment index: all barbs taper alike
   struct BarbuleParameters {
-    float h, mu, height;  // NaN where the file lacks one
+    float h, mu, height;  // the model's, before the ramus tilt
   };
+  static constexpr BarbuleParameters kDefaultBarbuleParameters{modelSpacingFromFile(kDefaultFileSpacing),
+                                                               modelTiltFromFile(kDefaultFileTilt),
+                                                               kDefaultCortexThickness};
   std::vector<BarbuleParameters> barbuleParams_;  // per vertex, or empty when the file has none
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;

@@ -5,9 +5,30 @@
 
 namespace columba {
 
+namespace {
+
+// The feather PLY named by `filename`; a missing file's error says how to make one.
+FeatherPlyData readNamedFeatherPly(const Properties& props) {
+  std::string path;
+  try {
+    path = props.getPath("filename");
+  } catch (const InputError& e) {
+    const std::string prefix = e.location.str() + ": ";
+    std::string message = e.what();
+    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+    throw InputError(e.location, message + "; generate feathers with `columba feather --neck -o FILE.ply` (a neck) "
+                                           "or `columba feather --single -o FILE.ply` (one feather)");
+  }
+  return readFeatherPly(path);
+}
+
+}  // namespace
+
 std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
+  FeatherPlyData ply = readNamedFeatherPly(props);
   FeatherShapeParams params;
-  params.barbWidth = props.getFloat("barbwidth", params.barbWidth);
+  // The scene's barbwidth wins; otherwise the one the file was laid out for, if it records one.
+  params.barbWidth = props.getFloat("barbwidth", ply.barbWidth.value_or(params.barbWidth));
   params.ramusWidth = props.getFloat("ramuswidth", params.ramusWidth);
   params.cover = props.getFloat("cover", params.cover);
   params.span = props.getFloat("span", params.span);
@@ -18,7 +39,7 @@ std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
   if (!(params.cover > 0.0f && params.cover < kHalfPi)) throw props.error("cover", "must be in (0, pi/2) radians");
   if (!(std::abs(params.span) < kHalfPi)) throw props.error("span", "must be in (-pi/2, pi/2) radians");
 
-  auto shape = std::make_shared<FeatherShape>(readFeatherPly(props.getPath("filename")), params);
+  auto shape = std::make_shared<FeatherShape>(std::move(ply), params);
   shape->bsdf = props.child<BSDF>();
   // Mitsuba's default material when none is nested.
   if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>("bsdf", "diffuse", props.location);
