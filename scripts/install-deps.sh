@@ -2,7 +2,7 @@
 # Installs the Debian packages Columba builds against, only those that are missing.
 set -euo pipefail
 packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
-          libopenexr-dev libpng-dev libstb-dev libcli11-dev libgtest-dev libgmock-dev
+          libopenexr-dev libpng-dev libstb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfmt-dev libtinyobjloader-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include "render/image.h"
 
@@ -296,4 +297,36 @@ TEST_F(CliTest, DefaultSceneIsAGeneratedNeck) {
   ASSERT_NE(at, std::string::npos) << r.output;
   size_t start = r.output.rfind(' ', at - 1) + 1;
   EXPECT_GT(std::stol(r.output.substr(start, at - start)), 100000) << r.output;
+}
+
+TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirData) {
+  CommandResult r = run("bsdf --preset dove-green --mode specular,plane,hemisphere --angles 0,30 --res 32 --spectral "
+                        "--bins 4 -o " + dir_.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* file : {"bsdf_specular.png", "bsdf_specular.csv", "bsdf_plane_theta0.png", "bsdf_plane_theta30.png",
+                           "bsdf_plane.csv", "bsdf_hemisphere_theta0.exr", "bsdf_hemisphere_theta30.png", "bsdf.json"})
+    EXPECT_TRUE(fs::exists(dir_ / file)) << file;
+  // The CSV starts with its units and the parameters, then the columns.
+  std::ifstream csv(dir_ / "bsdf_specular.csv");
+  std::string units, parameters, columns;
+  std::getline(csv, units);
+  std::getline(csv, parameters);
+  std::getline(csv, columns);
+  EXPECT_NE(units.find("dimensionless"), std::string::npos) << units;
+  EXPECT_NE(parameters.find("height 0.58 um"), std::string::npos) << parameters;
+  EXPECT_EQ(columns, "wavelength_nm,R_theta0,TRT_theta0,total_theta0,R_theta30,TRT_theta30,total_theta30");
+  // The run's record: the version, every parameter and the peaks.
+  std::stringstream json;
+  json << std::ifstream(dir_ / "bsdf.json").rdbuf();
+  for (const char* key : {"\"columba_version\"", "\"height_um\": 0.58", "\"preset\": \"dove-green\"", "\"R_peaks_nm\""})
+    EXPECT_NE(json.str().find(key), std::string::npos) << key;
+  // The spectral hemisphere: RGB plus four bins over 400-700 nm.
+  columba::Image hemisphere = columba::readEXR((dir_ / "bsdf_hemisphere_theta30.exr").string());
+  EXPECT_EQ(hemisphere.spectral.centres, (std::vector<float>{437.5f, 512.5f, 587.5f, 662.5f}));
+  // Parameter mistakes get short messages naming the option.
+  CommandResult bad = run("bsdf --H 0 --mode specular -o " + dir_.string());
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("--H: the barbule spacing must be positive"), std::string::npos) << bad.output;
+  CommandResult preset = run("bsdf --preset dove-blue -o " + dir_.string());
+  EXPECT_NE(preset.output.find("dove-green, dove-purple"), std::string::npos) << preset.output;
 }

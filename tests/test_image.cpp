@@ -301,3 +301,23 @@ TEST_F(ImageFiles, OutputPathsAreCheckedBeforeWork) {
     }
   }
 }
+
+TEST(SpectralImageFiles, BandsRoundTripThroughEXRWithTheirWavelengths) {
+  const std::string dir = ::testing::TempDir();
+  Image image(3, 2);
+  image.spectral.centres = {409.375f, 428.125f, 700.0f};
+  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = 0.1f * float(i);
+  for (size_t i = 0; i < 3 * 2 * 3; ++i) image.spectral.values.push_back(1.0f + float(i));
+  const std::string path = dir + "/spectral_bands.exr";
+  writeEXR(path, image);
+  Image back = readEXR(path);
+  EXPECT_EQ(back.rgb, image.rgb);
+  EXPECT_EQ(back.spectral.centres, image.spectral.centres);
+  EXPECT_EQ(back.spectral.values, image.spectral.values);
+  // The channel names of the spectral EXR layout: a comma as the decimal separator.
+  EXPECT_EQ(spectralChannelName(409.375f), "S0.409,375nm");
+  EXPECT_EQ(spectralChannelName(700.0f), "S0.700nm");
+  // A band count that does not match the pixels is refused.
+  image.spectral.values.pop_back();
+  EXPECT_THROW(writeEXR(dir + "/bad_bands.exr", image), std::runtime_error);
+}

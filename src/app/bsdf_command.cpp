@@ -3,97 +3,368 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <iterator>
+#include <limits>
 
+#include "app/data_files.h"
 #include "bsdfs/barbule_measurement.h"
-#include "plot/line_plot.h"
+#include "core/version.h"
 #include "plot/canvas.h"
+#include "plot/line_plot.h"
+#include "scene/xml_values.h"
 
 namespace columba {
 
 namespace {
+namespace fs = std::filesystem;
+
+// `columba bsdf` as a virtual goniometer: the barbule BSDF measured as instruments measure it,
+// for a list of light polar angles at one azimuth, with every plot's data beside it.
 struct BSDFOptions {
   BarbuleParameters params;
-  float thetaDegrees = 45.0f, phiDegrees = 0.0f;
+  std::string preset, filmIOR, melaninFile;
+  float cauchyA = std::numeric_limits<float>::quiet_NaN(), cauchyB = 0.0f;
+  std::vector<float> angles{0.0f, 20.0f, 40.0f, 60.0f};  // light polar angles, degrees
+  float phiDegrees = 0.0f;
+  std::vector<std::string> modes{"hemisphere", "spectra"};
+  bool spectral = false;
+  int bins = 16;
   int resolution = 256;
   std::string outputDir = ".";
 };
 
-Vec3 directionFromDegrees(float theta, float phi) {
-  float t = degToRad(theta), p = degToRad(phi);
-  return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+const Vec3 kSeriesColours[] = {srgbColour(0.10f, 0.35f, 0.80f), srgbColour(0.10f, 0.60f, 0.30f),
+                               srgbColour(0.85f, 0.55f, 0.05f), srgbColour(0.80f, 0.15f, 0.15f),
+                               srgbColour(0.55f, 0.20f, 0.70f), srgbColour(0.35f, 0.35f, 0.35f)};
+Vec3 seriesColour(size_t i) { return kSeriesColours[i % std::size(kSeriesColours)]; }
+
+// Everything the run measured with, for file headers, titles and the JSON record.
+std::string describeParameters(const BSDFOptions& o) {
+  const BarbuleParameters& p = o.params;
+  std::string film = o.filmIOR.empty() ? (std::isnan(o.cauchyA) ? "keratin" : fmt::format("Cauchy {} + {}/lambda^2", o.cauchyA, o.cauchyB))
+                                       : o.filmIOR;
+  return fmt::format("b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
+                     "melanin {}{}",
+                     p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
+                     o.melaninFile.empty() ? "embedded table" : o.melaninFile,
+                     o.preset.empty() ? "" : " | preset " + o.preset);
 }
 
-void runBSDF(const BSDFOptions& options) {
-  namespace fs = std::filesystem;
-  if (!fs::is_directory(options.outputDir))
-    throw std::runtime_error("output directory '" + options.outputDir + "' does not exist");
-  BarbuleBSDF bsdf(options.params);
-  fs::path dir(options.outputDir);
+std::string angleList(const std::vector<float>& angles) {
+  std::string s;
+  for (float a : angles) s += (s.empty() ? "" : ", ") + fmt::format("{:g}", a);
+  return s;
+}
 
-  Vec3 light = directionFromDegrees(options.thetaDegrees, options.phiDegrees);
-  Image hemisphere = scatterometerImage(bsdf, light, options.resolution);
-  writeEXR((dir / "bsdf_hemisphere.exr").string(), hemisphere);
-  writePNG((dir / "bsdf_hemisphere.png").string(), hemisphere);
+// The light's direction for polar angle `thetaDeg` at the run's azimuth.
+Vec3 lightDirection(const BSDFOptions& o, float thetaDeg) {
+  return directionFromAngles(degToRad(thetaDeg), degToRad(o.phiDegrees));
+}
 
-  // Spectra for light in the cross-section plane (across the barbules) at a few angles.
-  const float angles[] = {0.0f, 20.0f, 40.0f, 60.0f};
-  const Vec3 colours[] = {srgbColour(0.10f, 0.35f, 0.80f), srgbColour(0.10f, 0.60f, 0.30f),
-                          srgbColour(0.85f, 0.55f, 0.05f), srgbColour(0.80f, 0.15f, 0.15f)};
+std::string angleTag(float thetaDeg) { return fmt::format("theta{:g}", thetaDeg); }
+
+void writePlot(const fs::path& path, const LinePlot& plot, std::vector<std::string>& written) {
+  writePNG(path.string(), renderLinePlot(plot, 1000, 640));
+  written.push_back(path.string());
+}
+
+void writeTable(const fs::path& path, const CsvTable& table, std::vector<std::string>& written) {
+  writeCSV(path.string(), table);
+  written.push_back(path.string());
+}
+
+void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir,
+                        std::vector<std::string>& written) {
+  for (float angle : o.angles) {
+    Vec3 light = lightDirection(o, angle);
+    Image image = scatterometerImage(bsdf, light, o.resolution);
+    if (o.spectral) image.spectral = spectralScatterometerBands(bsdf, light, o.resolution, o.bins, 400.0f, 700.0f);
+    const ImageMetadata metadata = {
+        {"Measurement", "scatterometer image: f(light, camera) |cos theta_camera| per steradian under a D65 beam of "
+                        "unit luminance (RGB); spectral channels: f |cos theta_camera| per steradian, bin means"},
+        {"Light", fmt::format("theta {:g} deg, phi {:g} deg", angle, o.phiDegrees)},
+        {"Parameters", describeParameters(o)}};
+    fs::path exr = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".exr");
+    fs::path png = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".png");
+    writeEXRAndPNG(exr.string(), png.string(), image, metadata);
+    written.push_back(exr.string());
+    written.push_back(png.string());
+  }
+}
+
+// Directional reflectance (albedo) of R and TRT per light angle.
+void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+                   std::vector<std::string>& written) {
+  const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
   LinePlot plot;
-  plot.title = fmt::format("Barbule lobe reflectance (height {:.2f} um, b {:.2f}, H {:.2f})", options.params.height,
-                           options.params.b, options.params.H);
+  plot.title = "Directional reflectance of the barbule lobes";
+  plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
+                              describeParameters(o));
   plot.xLabel = "wavelength (nm)";
   plot.yLabel = "directional reflectance (R solid, TRT dashed)";
   plot.xMin = kLambdaMin;
   plot.xMax = kLambdaMax;
+  CsvTable table{{"directional reflectance (albedo) of the R and TRT lobes: the integral over outgoing directions of "
+                  "f |cos theta_o| (dimensionless)",
+                  describeParameters(o)},
+                 {"wavelength_nm"},
+                 std::vector<std::vector<double>>(lambdas.size())};
+  for (size_t i = 0; i < lambdas.size(); ++i) table.rows[i].push_back(lambdas[i]);
   float peak = 0.0f;
-  std::vector<float> lambdas = visibleWavelengthGrid(5.0f);
-  fmt::print("light angle  mean R   mean TRT  coverage  R peaks in 380-780 nm\n");
-  for (int a = 0; a < 4; ++a) {
-    Vec3 omegaI = directionFromDegrees(angles[a], 0.0f);
-    LobeReflectance lr = lobeReflectance(bsdf, omegaI, lambdas);
-    PlotSeries r{fmt::format("R {:g} deg", angles[a]), {}, colours[a]};
-    PlotSeries t{fmt::format("TRT {:g} deg", angles[a]), {}, colours[a], true};
+  fmt::print("directional reflectance (albedo), light azimuth {:g} deg\n", o.phiDegrees);
+  fmt::print("light theta (deg)  mean R    mean TRT  coverage  R peaks (nm, 1 nm grid)\n");
+  for (size_t a = 0; a < o.angles.size(); ++a) {
+    Vec3 light = lightDirection(o, o.angles[a]);
+    LobeReflectance lr = lobeReflectance(bsdf, light, lambdas);
+    PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a)};
+    PlotSeries t{fmt::format("TRT {:g} deg", o.angles[a]), {}, seriesColour(a), true};
     double meanR = 0, meanT = 0;
-    std::string peaks;
     for (size_t i = 0; i < lambdas.size(); ++i) {
       r.points.push_back(Vec2(lambdas[i], lr.reflection[i]));
       t.points.push_back(Vec2(lambdas[i], lr.trt[i]));
+      table.rows[i].push_back(lr.reflection[i]);
+      table.rows[i].push_back(lr.trt[i]);
       peak = std::max(peak, std::max(lr.reflection[i], lr.trt[i]));
-      bool localMax = i > 0 && i + 1 < lambdas.size() && lr.reflection[i] > lr.reflection[i - 1] &&
-                      lr.reflection[i] >= lr.reflection[i + 1];
-      if (localMax && lambdas[i] >= 380.0f && lambdas[i] <= 780.0f) peaks += fmt::format(" {:.0f}", lambdas[i]);
       meanR += lr.reflection[i] / lambdas.size();
       meanT += lr.trt[i] / lambdas.size();
     }
-    fmt::print("{:8.0f}     {:7.4f}  {:7.4f}  {:7.3f}  {}\n", angles[a], meanR, meanT, bsdf.coverage(BSDFContext{}, omegaI),
-               peaks);
+    table.columns.push_back(fmt::format("R_theta{:g}", o.angles[a]));
+    table.columns.push_back(fmt::format("TRT_theta{:g}", o.angles[a]));
+    std::vector<float> peaks = peakWavelengths(lambdas, lr.reflection);
+    float coverage = bsdf.coverage(BSDFContext{}, light);
+    fmt::print("{:17g}  {:7.4f}   {:7.4f}   {:7.3f}   {}\n", o.angles[a], meanR, meanT, coverage,
+               fmt::join(peaks, " "));
+    record["spectra"].push_back({{"light_theta_deg", o.angles[a]},
+                                 {"mean_R", meanR},
+                                 {"mean_TRT", meanT},
+                                 {"coverage", coverage},
+                                 {"R_peaks_nm", peaks}});
     plot.series.push_back(std::move(r));
     plot.series.push_back(std::move(t));
   }
   plot.yMax = std::max(0.05f, peak * 1.1f);
-  writePNG((dir / "bsdf_spectra.png").string(), renderLinePlot(plot, 1000, 640));
-  fmt::print("wrote {}, {} and {}\n", (dir / "bsdf_hemisphere.exr").string(), (dir / "bsdf_hemisphere.png").string(),
-             (dir / "bsdf_spectra.png").string());
+  writePlot(dir / "bsdf_spectra.png", plot, written);
+  writeTable(dir / "bsdf_spectra.csv", table, written);
+}
+
+// Reflectance factor in the mirror direction of each light angle: a microspectrophotometer.
+void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+                     std::vector<std::string>& written) {
+  const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
+  LinePlot plot;
+  plot.title = "Reflectance factor pi f in the mirror direction";
+  plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
+                              describeParameters(o));
+  plot.xLabel = "wavelength (nm)";
+  plot.yLabel = "reflectance factor in the mirror direction (total solid, R dashed)";
+  plot.xMin = kLambdaMin;
+  plot.xMax = kLambdaMax;
+  CsvTable table{{"reflectance factor pi f(light, mirror direction) of the R and TRT lobes and their sum, "
+                  "relative to a white diffuse standard (dimensionless)",
+                  describeParameters(o)},
+                 {"wavelength_nm"},
+                 std::vector<std::vector<double>>(lambdas.size())};
+  for (size_t i = 0; i < lambdas.size(); ++i) table.rows[i].push_back(lambdas[i]);
+  float peak = 0.0f;
+  fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
+  fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
+  for (size_t a = 0; a < o.angles.size(); ++a) {
+    SpecularSpectra s = specularSpectra(bsdf, lightDirection(o, o.angles[a]), lambdas);
+    std::vector<float> total(lambdas.size());
+    PlotSeries sum{fmt::format("total {:g} deg", o.angles[a]), {}, seriesColour(a)};
+    PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a), true};
+    float largest = 0.0f;
+    for (size_t i = 0; i < lambdas.size(); ++i) {
+      total[i] = s.reflection[i] + s.trt[i];
+      sum.points.push_back(Vec2(lambdas[i], total[i]));
+      r.points.push_back(Vec2(lambdas[i], s.reflection[i]));
+      table.rows[i].insert(table.rows[i].end(), {s.reflection[i], s.trt[i], total[i]});
+      largest = std::max(largest, total[i]);
+    }
+    peak = std::max(peak, largest);
+    for (const char* lobe : {"R", "TRT", "total"}) table.columns.push_back(fmt::format("{}_theta{:g}", lobe, o.angles[a]));
+    std::vector<float> totalPeaks = peakWavelengths(lambdas, total), rPeaks = peakWavelengths(lambdas, s.reflection),
+                       trtPeaks = peakWavelengths(lambdas, s.trt);
+    fmt::print("{:17g}  {:<18} {:<14} {:<16} {:.4f}\n", o.angles[a], fmt::format("{}", fmt::join(totalPeaks, " ")),
+               fmt::format("{}", fmt::join(rPeaks, " ")), fmt::format("{}", fmt::join(trtPeaks, " ")), largest);
+    record["specular"].push_back({{"light_theta_deg", o.angles[a]},
+                                  {"total_peaks_nm", totalPeaks},
+                                  {"R_peaks_nm", rPeaks},
+                                  {"TRT_peaks_nm", trtPeaks},
+                                  {"max_total", largest}});
+    plot.series.push_back(std::move(sum));
+    plot.series.push_back(std::move(r));
+  }
+  plot.yMax = std::max(0.05f, peak * 1.1f);
+  writePlot(dir / "bsdf_specular.png", plot, written);
+  writeTable(dir / "bsdf_specular.csv", table, written);
+}
+
+// In-plane slices of the scatterometer quantity at a few wavelengths and as RGB.
+void measurePlane(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir,
+                  std::vector<std::string>& written) {
+  const std::vector<float> shown = {450.0f, 550.0f, 650.0f};
+  const std::vector<float> lambdas = visibleWavelengthGrid(5.0f);
+  std::vector<float> thetaO;
+  for (float t = -89.5f; t <= 89.5f; t += 0.5f) thetaO.push_back(degToRad(t));
+  CsvTable table{{"in-plane scatterometer quantity f(light, omega_o) |cos theta_o| (1/sr, R + TRT); theta_o signed, "
+                  "positive toward the light's azimuth (the mirror direction is at -theta_light); RGB under a D65 "
+                  "beam of unit luminance",
+                  describeParameters(o)},
+                 {"light_theta_deg", "theta_o_deg", "f_cos_450nm", "f_cos_550nm", "f_cos_650nm", "R", "G", "B"},
+                 {}};
+  for (float angle : o.angles) {
+    Vec3 light = lightDirection(o, angle);
+    PlaneSlice spectral = planeSlice(bsdf, light, degToRad(o.phiDegrees), thetaO, lambdas);
+    PlaneSlice lines = planeSlice(bsdf, light, degToRad(o.phiDegrees), thetaO, shown);
+    std::vector<Vec3> rgb = sliceRGB(spectral);
+    LinePlot plot;
+    plot.title = fmt::format("In-plane slice, light at theta {:g} deg", angle);
+    plot.subtitle = fmt::format("light phi {:g} deg | {}", o.phiDegrees, describeParameters(o));
+    plot.xLabel = "outgoing angle theta_o (deg; mirror direction at -theta_light)";
+    plot.yLabel = "f |cos theta_o| (1/sr): 450/550/650 nm solid, RGB dashed";
+    plot.xMin = -90.0f;
+    plot.xMax = 90.0f;
+    const Vec3 lineColours[] = {srgbColour(0.2f, 0.3f, 0.9f), srgbColour(0.1f, 0.6f, 0.2f), srgbColour(0.85f, 0.2f, 0.1f)};
+    float peak = 0.0f;
+    for (size_t k = 0; k < shown.size(); ++k) {
+      PlotSeries s{fmt::format("{:g} nm", shown[k]), {}, lineColours[k]};
+      for (size_t a = 0; a < thetaO.size(); ++a) {
+        s.points.push_back(Vec2(radToDeg(thetaO[a]), lines.values[a][k]));
+        peak = std::max(peak, lines.values[a][k]);
+      }
+      plot.series.push_back(std::move(s));
+    }
+    const char* channels[] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+      PlotSeries s{std::string("RGB ") + channels[c], {}, lineColours[2 - c], true};
+      for (size_t a = 0; a < thetaO.size(); ++a) {
+        s.points.push_back(Vec2(radToDeg(thetaO[a]), rgb[a][c]));
+        peak = std::max(peak, rgb[a][c]);
+      }
+      plot.series.push_back(std::move(s));
+    }
+    plot.yMax = std::max(1e-3f, peak * 1.1f);
+    writePlot(dir / ("bsdf_plane_" + angleTag(angle) + ".png"), plot, written);
+    for (size_t a = 0; a < thetaO.size(); ++a)
+      table.rows.push_back({angle, radToDeg(thetaO[a]), lines.values[a][0], lines.values[a][1], lines.values[a][2],
+                            rgb[a].x, rgb[a].y, rgb[a].z});
+  }
+  writeTable(dir / "bsdf_plane.csv", table, written);
+}
+
+// A float as the decimal its shortest representation writes (0.58, not 0.5799999833).
+double decimal(float x) { return std::stod(fmt::format("{}", x)); }
+
+nlohmann::json parameterRecord(const BSDFOptions& o) {
+  const BarbuleParameters& p = o.params;
+  nlohmann::json j = {{"b", decimal(p.b)},   {"phi_0_rad", decimal(p.phi0)}, {"phi_1_rad", decimal(p.phi1)},
+                      {"mu_rad", decimal(p.mu)}, {"H", decimal(p.H)},        {"height_um", decimal(p.height)},
+                      {"ext_ior", decimal(p.extIOR)}};
+  if (!o.preset.empty()) j["preset"] = o.preset;
+  if (!o.filmIOR.empty()) j["film_ior"] = o.filmIOR;
+  else if (!std::isnan(o.cauchyA)) j["film_cauchy"] = {{"a", decimal(o.cauchyA)}, {"b_nm2", decimal(o.cauchyB)}};
+  else j["film_ior"] = "keratin";
+  j["melanin"] = o.melaninFile.empty() ? "embedded table" : o.melaninFile;
+  return j;
+}
+
+void runBSDF(const BSDFOptions& o) {
+  if (!fs::is_directory(o.outputDir)) throw std::runtime_error("output directory '" + o.outputDir + "' does not exist");
+  const fs::path dir(o.outputDir);
+  BarbuleBSDF bsdf(o.params);
+  fmt::print("barbule BSDF: {}\n", describeParameters(o));
+  nlohmann::json record = {{"columba_version", kColumbaVersion},
+                           {"parameters", parameterRecord(o)},
+                           {"light_theta_deg", o.angles},
+                           {"light_phi_deg", o.phiDegrees},
+                           {"modes", o.modes},
+                           {"resolution", o.resolution}};
+  if (o.spectral) record["spectral_bins"] = {{"count", o.bins}, {"from_nm", 400}, {"to_nm", 700}};
+  std::vector<std::string> written;
+  for (const std::string& mode : o.modes) {
+    if (mode == "hemisphere") measureHemispheres(bsdf, o, dir, written);
+    else if (mode == "spectra") measureAlbedo(bsdf, o, dir, record, written);
+    else if (mode == "specular") measureSpecular(bsdf, o, dir, record, written);
+    else if (mode == "plane") measurePlane(bsdf, o, dir, written);
+  }
+  record["outputs"] = written;
+  writeJSON((dir / "bsdf.json").string(), record);
+  written.push_back((dir / "bsdf.json").string());
+  fmt::print("wrote {}\n", fmt::join(written, ", "));
+}
+
+// The parameters as given: a preset first, then the options set beside it.
+void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParameters& given) {
+  BarbuleParameters p;
+  if (!o.preset.empty()) {
+    std::optional<BarbuleParameters> preset = barbulePreset(o.preset);
+    if (!preset)
+      throw std::runtime_error("--preset: unknown preset '" + o.preset + "' (known: " + barbulePresetNames() + ")");
+    p = *preset;
+  }
+  auto take = [&](const char* option, float& target, float value) {
+    if (cmd.count(option) > 0) target = value;
+  };
+  take("--b", p.b, given.b);
+  take("--phi_0", p.phi0, given.phi0);
+  take("--phi_1", p.phi1, given.phi1);
+  take("--mu", p.mu, given.mu);
+  take("--H", p.H, given.H);
+  take("--height", p.height, given.height);
+  take("--ext-ior", p.extIOR, given.extIOR);
+  if (!o.filmIOR.empty() && !std::isnan(o.cauchyA))
+    throw std::runtime_error("give the film's index either as --film-ior or as --film-cauchy-a/--film-cauchy-b");
+  if (!o.filmIOR.empty()) {
+    std::optional<RefractiveIndex> ior = iorFromName(o.filmIOR);
+    if (!ior) throw std::runtime_error("--film-ior: unknown index of refraction '" + o.filmIOR + "'");
+    p.filmIOR = *ior;
+  } else if (!std::isnan(o.cauchyA)) {
+    p.filmIOR = RefractiveIndex::cauchy(o.cauchyA, o.cauchyB);
+  }
+  if (!o.melaninFile.empty())
+    p.melanin = readSpectrumFile(o.melaninFile, "--melanin", SourceLocation{o.melaninFile, 0}).distribution;
+  if (std::optional<BarbuleParameterProblem> problem = findProblem(p))
+    throw std::runtime_error("--" + problem->parameter + ": " + problem->message);
+  if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p))
+    fmt::print(stderr, "warning: --{}: {}\n", odd->parameter, odd->message);
+  o.params = p;
 }
 }  // namespace
 
 void addBSDFCommand(CLI::App& app) {
   auto o = std::make_shared<BSDFOptions>();
+  auto given = std::make_shared<BarbuleParameters>();
   CLI::App* cmd = app.add_subcommand(
-      "bsdf", "Plot the barbule BSDF: scatterometer hemisphere image (EXR + PNG) and lobe reflectance spectra (PNG)");
-  cmd->add_option("--b", o->params.b, "Cross-section semi-axis along the vane normal")->check(CLI::PositiveNumber);
-  cmd->add_option("--phi_0", o->params.phi0, "Start of the reflective arc (rad)");
-  cmd->add_option("--phi_1", o->params.phi1, "End of the reflective arc (rad)");
-  cmd->add_option("--mu", o->params.mu, "Tilt of the cross-section (rad)");
-  cmd->add_option("--H", o->params.H, "Barbule spacing")->check(CLI::PositiveNumber);
-  cmd->add_option("--height", o->params.height, "Keratin cortex thickness (um)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--theta", o->thetaDegrees, "Light polar angle from the vane normal (degrees)")->check(CLI::Range(0.0, 89.9));
-  cmd->add_option("--phi", o->phiDegrees, "Light azimuth, 0 = across the barbules (degrees)");
-  cmd->add_option("--res", o->resolution, "Hemisphere image size (pixels)")->check(CLI::Range(16, 4096));
-  cmd->add_option("-o,--output", o->outputDir, "Output directory");
-  cmd->callback([o] {
-    if (!(o->params.phi1 > o->params.phi0)) throw std::runtime_error("--phi_1 must exceed --phi_0");
+      "bsdf", "Measure the barbule BSDF as a virtual goniometer: scatterometer images, specular and albedo spectra, "
+              "in-plane slices (plots with CSV data and a JSON record)");
+  cmd->add_option("--preset", o->preset, "Barbule preset: " + barbulePresetNames() + " (options below override it)");
+  cmd->add_option("--b", given->b, "Cross-section semi-axis along the vane normal (default 0.25)");
+  cmd->add_option("--phi_0", given->phi0, "Start of the reflective arc, rad (default -0.37)");
+  cmd->add_option("--phi_1", given->phi1, "End of the reflective arc, rad (default 2.64)");
+  cmd->add_option("--mu", given->mu, "Tilt of the cross-section, rad (default -0.35)");
+  cmd->add_option("--H", given->H, "Barbule spacing (default 1.25)");
+  cmd->add_option("--height", given->height, "Keratin cortex thickness, um (default 0.6)");
+  cmd->add_option("--film-ior", o->filmIOR, "Film index: keratin (default), a number or a named index");
+  cmd->add_option("--film-cauchy-a", o->cauchyA, "Film index by Cauchy's law n = a + b / lambda^2: a");
+  cmd->add_option("--film-cauchy-b", o->cauchyB, "Cauchy's b, nm^2 (default 0)");
+  cmd->add_option("--ext-ior", given->extIOR, "Index of the surrounding medium (default: air, 1.000277)");
+  cmd->add_option("--melanin", o->melaninFile, "Melanin reflectance file: lines of 'wavelength_nm reflectance'");
+  cmd->add_option("--angles", o->angles, "Light polar angles from the vane normal, degrees (default 0,20,40,60)")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 89.9));
+  cmd->add_option("--phi", o->phiDegrees, "Light azimuth, degrees; 0 = across the barbules (default 0)");
+  cmd->add_option("--mode", o->modes,
+                  "What to measure, one or more of hemisphere, specular, plane, spectra (default hemisphere,spectra)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"hemisphere", "specular", "plane", "spectra"}));
+  cmd->add_flag("--spectral", o->spectral, "Hemisphere images also as wavelength bins (EXR channels S0.<nm>nm)");
+  cmd->add_option("--bins", o->bins, "Wavelength bins over 400-700 nm for --spectral (default 16)")
+      ->check(CLI::Range(1, 300));
+  cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
+  cmd->add_option("-o,--output", o->outputDir, "Output directory (default: the working directory)");
+  cmd->callback([o, given, cmd] {
+    resolveParameters(*o, *cmd, *given);
     runBSDF(*o);
   });
 }

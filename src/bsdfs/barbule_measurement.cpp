@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <optional>
+
 #include "core/illuminant.h"
 
 
@@ -34,6 +36,18 @@ std::vector<WavelengthGroup> wavelengthGroups(const std::vector<float>& lambdas)
   }
   return groups;
 }
+
+// The direction of sub-pixel (sx, sy) of pixel (px, py) on the scatterometer's image disk, as the
+// `bsdfvisualizer` sensor maps it (v grows downward with the row); nullopt outside the disk.
+std::optional<Vec3> scatterometerDirection(int px, int py, int sx, int sy, int resolution, int supersampling) {
+  float u = 2.0f * (px + (sx + 0.5f) / supersampling) / resolution - 1.0f;
+  float v = 2.0f * (py + (sy + 0.5f) / supersampling) / resolution - 1.0f;
+  float r = std::sqrt(u * u + v * v);
+  if (r >= 1.0f) return std::nullopt;
+  return directionFromAngles(r * kHalfPi, std::atan2(v, u));
+}
+
+Spectrum total(const BarbuleBSDF::Lobes& lobes) { return lobes.reflection + lobes.trt; }
 }  // namespace
 
 std::vector<float> visibleWavelengthGrid(float step) {
@@ -69,6 +83,92 @@ LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, con
   return result;
 }
 
+std::vector<float> peakWavelengths(const std::vector<float>& lambdas, const std::vector<float>& values) {
+  std::vector<float> peaks;
+  for (size_t i = 1; i + 1 < values.size(); ++i)
+    if (values[i] > values[i - 1] && values[i] >= values[i + 1]) peaks.push_back(lambdas[i]);
+  return peaks;
+}
+
+Vec3 directionFromAngles(float theta, float phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+SpecularSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
+  SpecularSpectra result;
+  result.lambdas = lambdas;
+  result.reflection.resize(lambdas.size());
+  result.trt.resize(lambdas.size());
+  const Vec3 mirror(-omegaI.x, -omegaI.y, omegaI.z);
+  std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
+  for (size_t k = 0; k < groups.size(); ++k) {
+    BarbuleBSDF::Lobes lobes = bsdf.evalLobes(BSDFContext{}, omegaI, mirror, groups[k].wl);
+    for (int i = 0; i < groups[k].count; ++i) {
+      result.reflection[k * kSpectrumSamples + i] = kPi * lobes.reflection[i];
+      result.trt[k * kSpectrumSamples + i] = kPi * lobes.trt[i];
+    }
+  }
+  return result;
+}
+
+PlaneSlice planeSlice(const BarbuleBSDF& bsdf, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
+                      const std::vector<float>& lambdas) {
+  PlaneSlice slice{thetaO, lambdas, std::vector<std::vector<float>>(thetaO.size(), std::vector<float>(lambdas.size()))};
+  std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
+  tbb::parallel_for(size_t(0), thetaO.size(), [&](size_t a) {
+    // Signed angles: positive toward the light's azimuth, so the mirror direction is at -theta_i.
+    Vec3 wo = directionFromAngles(std::abs(thetaO[a]), thetaO[a] >= 0.0f ? phi : phi + kPi);
+    for (size_t k = 0; k < groups.size(); ++k) {
+      BarbuleBSDF::Lobes lobes = bsdf.evalLobes(BSDFContext{}, omegaI, wo, groups[k].wl);
+      for (int i = 0; i < groups[k].count; ++i)
+        slice.values[a][k * kSpectrumSamples + i] = (lobes.reflection[i] + lobes.trt[i]) * std::abs(wo.z);
+    }
+  });
+  return slice;
+}
+
+std::vector<Vec3> sliceRGB(const PlaneSlice& slice) {
+  std::vector<Vec3> rgb;
+  const size_t n = slice.lambdas.size();
+  const float step = n > 1 ? (slice.lambdas.back() - slice.lambdas.front()) / float(n - 1) : 1.0f;
+  for (const std::vector<float>& column : slice.values) {
+    Vec3 xyz(0, 0, 0);
+    for (size_t i = 0; i < n; ++i) xyz += cieXYZ(slice.lambdas[i]) * (column[i] * d65(slice.lambdas[i]) * step);
+    rgb.push_back(xyzToLinearRGB(xyz / cieYIntegral()));
+  }
+  return rgb;
+}
+
+SpectralBands spectralScatterometerBands(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int bins,
+                                         float lambdaMin, float lambdaMax, int supersampling) {
+  // Each bin is averaged over four wavelengths at the centres of its quarters.
+  const float binWidth = (lambdaMax - lambdaMin) / float(bins);
+  SpectralBands image{{}, std::vector<float>(size_t(resolution) * resolution * bins, 0.0f)};
+  std::vector<Wavelengths> binWavelengths;
+  for (int b = 0; b < bins; ++b) {
+    float lo = lambdaMin + b * binWidth;
+    image.centres.push_back(lo + 0.5f * binWidth);
+    std::array<float, kSpectrumSamples> l;
+    for (int i = 0; i < kSpectrumSamples; ++i) l[i] = lo + (i + 0.5f) * binWidth / kSpectrumSamples;
+    binWavelengths.push_back(Wavelengths::fixed(l));
+  }
+  tbb::parallel_for(0, resolution, [&](int py) {
+    for (int px = 0; px < resolution; ++px) {
+      float* out = &image.values[(size_t(py) * resolution + px) * bins];
+      for (int sy = 0; sy < supersampling; ++sy)
+        for (int sx = 0; sx < supersampling; ++sx) {
+          std::optional<Vec3> wo = scatterometerDirection(px, py, sx, sy, resolution, supersampling);
+          if (!wo) continue;
+          for (int b = 0; b < bins; ++b) {
+            Spectrum f = total(bsdf.evalLobes(BSDFContext{}, omegaI, *wo, binWavelengths[b]));
+            out[b] += f.average() * std::abs(wo->z) / float(supersampling * supersampling);
+          }
+        }
+    }
+  });
+  return image;
+}
+
 Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int supersampling) {
   Image image(resolution, resolution);
   std::vector<WavelengthGroup> groups = wavelengthGroups(visibleWavelengthGrid(5.0f));
@@ -79,16 +179,12 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
       Vec3 xyz(0, 0, 0);
       for (int sy = 0; sy < supersampling; ++sy)
         for (int sx = 0; sx < supersampling; ++sx) {
-          float x = 2.0f * (px + (sx + 0.5f) / supersampling) / resolution - 1.0f;
-          float y = 2.0f * (py + (sy + 0.5f) / supersampling) / resolution - 1.0f;
-          float r = std::sqrt(x * x + y * y);
-          if (r >= 1.0f) continue;
-          float theta = r * kHalfPi, phi = std::atan2(y, x);
-          Vec3 wo(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+          std::optional<Vec3> wo = scatterometerDirection(px, py, sx, sy, resolution, supersampling);
+          if (!wo) continue;
           for (const WavelengthGroup& g : groups) {
-            BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, wo, g.wl);
+            BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, *wo, g.wl);
             for (int k = 0; k < g.count; ++k)
-              xyz += cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo.z) * d65(g.wl[k]) * dLambda);
+              xyz += cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo->z) * d65(g.wl[k]) * dLambda);
           }
         }
       Vec3 rgb = xyzToLinearRGB(xyz / (cieYIntegral() * float(supersampling * supersampling)));

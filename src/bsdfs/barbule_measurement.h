@@ -24,7 +24,40 @@ LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, con
 // pixel.
 Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int supersampling = 2);
 
+// What a microspectrophotometer measures: the reflectance factor pi f(omegaI, omegaO) (1 for a
+// white diffuse standard) of the R and TRT lobes in the mirror direction of `omegaI` (its x and y
+// negated), at each wavelength of `lambdas` (nm).
+struct SpecularSpectra {
+  std::vector<float> lambdas, reflection, trt;
+};
+SpecularSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
+
+// The scatterometer quantity f(omegaI, omegaO) |cos theta_o| (per steradian, R + TRT) in the plane
+// of incidence: omegaO at signed polar angles `thetaO` (radians; negative on the light's side,
+// the mirror direction at -theta_i) and the light's azimuth `phi`, for each wavelength of
+// `lambdas`: values[angle][wavelength].
+struct PlaneSlice {
+  std::vector<float> thetaO, lambdas;
+  std::vector<std::vector<float>> values;
+};
+PlaneSlice planeSlice(const BarbuleBSDF& bsdf, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
+                      const std::vector<float>& lambdas);
+// Linear RGB of a slice's columns under a D65 beam of unit luminance (lambdas a uniform grid).
+std::vector<Vec3> sliceRGB(const PlaneSlice& slice);
+
+// The scatterometer image per wavelength bin: `bins` equal bins over [lambdaMin, lambdaMax], each
+// the bin's mean of f(omegaI, omegaO) |cos theta_o| (per steradian, R + TRT, no illuminant), on
+// the image disk of scatterometerImage (zero outside it).
+SpectralBands spectralScatterometerBands(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int bins,
+                                         float lambdaMin, float lambdaMax, int supersampling = 2);
+
 // Wavelengths from 360 to 830 nm every `step` nm.
 std::vector<float> visibleWavelengthGrid(float step);
+// Wavelengths of the local maxima of `values` sampled at `lambdas` (interior points only).
+std::vector<float> peakWavelengths(const std::vector<float>& lambdas, const std::vector<float>& values);
+
+// Unit direction at polar angle `theta` from the vane normal and azimuth `phi` from the x axis
+// (across the barbules), radians.
+Vec3 directionFromAngles(float theta, float phi);
 
 }  // namespace columba

@@ -6,6 +6,41 @@
 
 namespace columba {
 
+std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale) {
+  // Pieces end after a " | " separator (kept at the line's end, trimmed) or, failing that, a space.
+  std::vector<std::string> lines;
+  std::string line;
+  size_t start = 0;
+  auto flush = [&] {
+    while (!line.empty() && (line.back() == ' ' || line.back() == '|')) line.pop_back();
+    if (!line.empty()) lines.push_back(line);
+    line.clear();
+  };
+  while (start < text.size()) {
+    size_t bar = text.find(" | ", start);
+    size_t end = bar == std::string::npos ? text.size() : bar + 3;
+    std::string piece = text.substr(start, end - start);
+    if (!line.empty() && Canvas::textWidth(line + piece, scale) > maxWidth) flush();
+    if (Canvas::textWidth(piece, scale) > maxWidth) {
+      // A piece too wide on its own: at spaces.
+      size_t from = 0;
+      while (from < piece.size()) {
+        size_t space = piece.find(' ', from);
+        size_t to = space == std::string::npos ? piece.size() : space + 1;
+        std::string word = piece.substr(from, to - from);
+        if (!line.empty() && Canvas::textWidth(line + word, scale) > maxWidth) flush();
+        line += word;
+        from = to;
+      }
+    } else {
+      line += piece;
+    }
+    start = end;
+  }
+  flush();
+  return lines;
+}
+
 std::vector<float> niceTicks(float lo, float hi, int target) {
   std::vector<float> ticks;
   if (!(hi > lo) || target < 1) return ticks;
@@ -22,7 +57,9 @@ std::vector<float> niceTicks(float lo, float hi, int target) {
 Image renderLinePlot(const LinePlot& plot, int width, int height) {
   const Vec3 white(1, 1, 1), black(0, 0, 0), grid = srgbColour(0.88f, 0.88f, 0.88f);
   Canvas canvas(width, height, white);
-  const float left = 90, right = float(width) - 20, top = 80, bottom = float(height) - 70;
+  const std::vector<std::string> subtitle = wrapText(plot.subtitle, float(width) - 40, 2);
+  const float lineHeight = Canvas::textHeight(2) + 6;
+  const float left = 90, right = float(width) - 20, top = 80 + lineHeight * subtitle.size(), bottom = float(height) - 70;
   auto toPixel = [&](Vec2 p) {
     return Vec2(left + (p.x - plot.xMin) / (plot.xMax - plot.xMin) * (right - left),
                 bottom - (p.y - plot.yMin) / (plot.yMax - plot.yMin) * (bottom - top));
@@ -46,6 +83,9 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
   canvas.text(0.5f * (left + right - Canvas::textWidth(plot.xLabel)), bottom + 40, plot.xLabel, black);
   canvas.text(10, top - 28, plot.yLabel, black);
   canvas.text(0.5f * (width - Canvas::textWidth(plot.title, 3)), 10, plot.title, black, 3);
+  for (size_t i = 0; i < subtitle.size(); ++i)
+    canvas.text(0.5f * (width - Canvas::textWidth(subtitle[i])), 10 + Canvas::textHeight(3) + 8 + lineHeight * i,
+                subtitle[i], black);
 
   for (const PlotSeries& s : plot.series)
     for (size_t i = 1; i < s.points.size(); ++i) {

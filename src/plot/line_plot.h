@@ -16,11 +16,18 @@ struct PlotSeries {
 
 struct LinePlot {
   std::string title, xLabel, yLabel;
+  // Smaller lines under the title (the parameters of a measurement), wrapped to the width at its
+  // " | " separators.
+  std::string subtitle;
   float xMin = 0, xMax = 1, yMin = 0, yMax = 1;
   std::vector<PlotSeries> series;
 };
 
 Image renderLinePlot(const LinePlot& plot, int width, int height);
+
+// `text` broken into lines no wider than `maxWidth` pixels at `scale`, at " | " separators or
+// else at spaces.
+std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale);
 
 // Round tick positions covering [lo, hi], about `target` of them.
 std::vector<float> niceTicks(float lo, float hi, int target);

@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <fmt/format.h>
 #include <fcntl.h>
 #include <png.h>
 #include <sys/file.h>
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include "core/error.h"
 #include "core/version.h"
@@ -31,10 +33,14 @@ namespace columba {
 namespace {
 
 void checkImage(const std::string& path, const Image& image) {
-  if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * image.height * 3)
+  const size_t pixels = size_t(std::max(image.width, 0)) * size_t(std::max(image.height, 0));
+  if (image.width <= 0 || image.height <= 0 || image.rgb.size() != pixels * 3)
     throw std::runtime_error("cannot write '" + path + "': image of " + std::to_string(image.width) + " x " +
                              std::to_string(image.height) + " pixels holds " + std::to_string(image.rgb.size()) +
                              " values");
+  if (image.spectral.values.size() != pixels * image.spectral.count())
+    throw std::runtime_error("cannot write '" + path + "': its " + std::to_string(image.spectral.count()) +
+                             " spectral bands hold " + std::to_string(image.spectral.values.size()) + " values");
 }
 
 // Metadata with Columba's own entry first.
@@ -54,6 +60,14 @@ void writeEXRFile(const std::string& file, const Image& image, const ImageMetada
   frame.insert("R", Imf::Slice(Imf::FLOAT, const_cast<char*>(base), xStride, yStride));
   frame.insert("G", Imf::Slice(Imf::FLOAT, const_cast<char*>(base + sizeof(float)), xStride, yStride));
   frame.insert("B", Imf::Slice(Imf::FLOAT, const_cast<char*>(base + 2 * sizeof(float)), xStride, yStride));
+  const SpectralBands& bands = image.spectral;
+  const size_t bandStride = bands.count() * sizeof(float);
+  for (size_t b = 0; b < bands.count(); ++b) {
+    std::string name = spectralChannelName(bands.centres[b]);
+    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    const char* first = reinterpret_cast<const char*>(bands.values.data()) + b * sizeof(float);
+    frame.insert(name, Imf::Slice(Imf::FLOAT, const_cast<char*>(first), bandStride, bandStride * size_t(image.width)));
+  }
 
   // OpenEXR finishes the file in its destructor, which swallows errors: the stream's state
   // tells whether everything reached the disk.
@@ -201,6 +215,25 @@ void replaceTogether(const std::vector<PendingFile>& files) {
 
 }  // namespace
 
+namespace {
+// The bin centre of a channel named as spectralChannelName does, if it is one.
+std::optional<float> spectralChannelCentre(const std::string& name) {
+  if (name.size() < 6 || name.compare(0, 3, "S0.") != 0 || name.compare(name.size() - 2, 2, "nm") != 0) return std::nullopt;
+  std::string number = name.substr(3, name.size() - 5);
+  std::replace(number.begin(), number.end(), ',', '.');
+  char* end = nullptr;
+  float value = std::strtof(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+}  // namespace
+
+std::string spectralChannelName(float lambdaNm) {
+  std::string centre = fmt::format("{:g}", double(lambdaNm));
+  std::replace(centre.begin(), centre.end(), '.', ',');
+  return "S0." + centre + "nm";
+}
+
 void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
   const ImageMetadata all = withSoftware(metadata);
@@ -255,6 +288,18 @@ Image readEXR(const std::string& path) {
       frame.insert("B", slice(2));
     } else {
       frame.insert("Y", slice(0));
+    }
+    // Spectral bands, in the order of their wavelengths.
+    std::vector<std::pair<float, std::string>> bands;
+    for (auto c = channels.begin(); c != channels.end(); ++c)
+      if (std::optional<float> centre = spectralChannelCentre(c.name())) bands.emplace_back(*centre, c.name());
+    std::sort(bands.begin(), bands.end());
+    image.spectral.values.assign(size_t(image.width) * image.height * bands.size(), 0.0f);
+    const size_t bandStride = bands.size() * sizeof(float);
+    for (size_t b = 0; b < bands.size(); ++b) {
+      image.spectral.centres.push_back(bands[b].first);
+      frame.insert(bands[b].second, Imf::Slice::Make(Imf::FLOAT, image.spectral.values.data() + b, window, bandStride,
+                                                     bandStride * size_t(image.width)));
     }
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);

@@ -6,9 +6,22 @@
 
 namespace columba {
 
+// Per-pixel values in wavelength bins, which an image may carry beside its RGB (spectral renders,
+// spectral scatterometer images). EXR files hold them as channels named as the spectral EXR layout
+// of Fichet et al. 2021 (JCGT 10(3)) names emitted radiance: "S0.<bin centre>nm", with a comma as
+// the decimal separator ("S0.409,375nm").
+struct SpectralBands {
+  std::vector<float> centres;  // nm, increasing
+  std::vector<float> values;   // row-major, centres.size() floats per pixel
+  size_t count() const { return centres.size(); }
+};
+// The EXR channel name of a bin centred at `lambdaNm`.
+std::string spectralChannelName(float lambdaNm);
+
 struct Image {
   int width = 0, height = 0;
   std::vector<float> rgb;  // row-major, 3 floats per pixel, linear Rec.709
+  SpectralBands spectral;  // empty for RGB images
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgb(size_t(w) * size_t(h) * 3, 0.0f) {}
   float* pixel(int x, int y) { return &rgb[(size_t(y) * width + x) * 3]; }
@@ -36,7 +49,7 @@ enum class ImageFormat { EXR, PNG };
 // and for one whose directory does not exist: checked before work whose result it will hold.
 ImageFormat checkOutputImagePath(const std::string& path);
 
-// Throws InputError naming the path if it cannot be read.
+// RGB (or Y) and any spectral bands; throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
 // An 8-bit PNG (grey, RGB, with or without alpha) as linear values; throws InputError naming
 // the path if it cannot be read.
