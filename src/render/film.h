@@ -17,6 +17,10 @@ class Film : public Object {
   // A black image of the film's size; if it cannot be allocated, throws std::runtime_error
   // saying how much memory it needs.
   Image makeImage() const;
+  // The same film at another size (fitting a scene to a measured image of that size).
+  std::shared_ptr<Film> resized(int width, int height) const {
+    return std::make_shared<Film>(width, height, filter_);
+  }
 
  private:
   int width_, height_;
