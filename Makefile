@@ -5,8 +5,12 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 PREFIX ?= /usr/local
 COLUMBA := $(BUILD)/columba
+FUZZ_BUILD ?= build-fuzz
+SANITIZE_BUILD ?= build-asan
+FUZZ_SECONDS ?= 300
+FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh exr_envmap
 
-.PHONY: deps configure build demo test install bench figures clean
+.PHONY: deps configure build demo test install bench figures clean fuzz fuzz-build sanitize
 
 deps:
 	@./scripts/install-deps.sh
@@ -40,6 +44,25 @@ bench: build
 
 figures: build
 	@./scripts/figures.sh $(BUILD)
+
+# `make fuzz`: libFuzzer targets (clang, ASan + UBSan) built in $(FUZZ_BUILD), then each of
+# FUZZ_TARGETS run for FUZZ_SECONDS (fuzz/run.sh says where corpora, findings and logs go).
+fuzz: fuzz-build
+	@./fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+fuzz-build: deps
+	@./scripts/install-fuzz-deps.sh
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++ -DCOLUMBA_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -fno-math-errno" > /dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target columba $(addprefix fuzz_,$(FUZZ_TARGETS))
+
+# `make sanitize`: the whole unit suite once under ASan + UBSan, built in $(SANITIZE_BUILD).
+sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCOLUMBA_SANITIZE=address,undefined -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG -fno-math-errno" > /dev/null
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target columba_tests
+	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 \
+	    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
 clean:
 	rm -rf $(BUILD) out

@@ -1,0 +1,85 @@
+#include "fuzz_targets.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "core/transform.h"
+#include "emitters/envmap_emitter.h"
+#include "render/image.h"
+#include "scene/plugin_registry.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+#include "shapes/feather_ply.h"
+#include "shapes/feather_shape.h"
+#include "shapes/obj_mesh.h"
+#include "shapes/ply_mesh.h"
+#include "shapes/triangle_mesh.h"
+
+namespace columba::fuzz {
+
+std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix) {
+  static const std::filesystem::path dir = [] {
+    std::filesystem::path d =
+        std::filesystem::temp_directory_path() / ("columba-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  std::string path = (dir / ("input" + suffix)).string();
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write the scratch file " + path);
+  return path;
+}
+
+void sceneFromBytes(const uint8_t* data, size_t size, const std::string& baseDir) {
+  std::string text(reinterpret_cast<const char*>(data), size);
+  Defines defines;
+  size_t pos = 0;
+  while (text.compare(pos, 2, "-D") == 0) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string define = text.substr(pos + 2, end - pos - 2);
+    size_t eq = define.find('=');
+    if (eq != std::string::npos) defines[define.substr(0, eq)] = define.substr(eq + 1);
+    pos = end < text.size() ? end + 1 : end;
+  }
+  ParsedScene parsed = loadSceneString(text.substr(pos), "<fuzz>", baseDir, defines, PluginRegistry::builtin());
+  Scene scene(parsed, {"<fuzz>", 0});
+}
+
+void plyMeshFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".ply");
+  TriangleMesh mesh(readPlyMesh(path), Transform(), false, false, {path, 0});
+}
+
+void featherPlyFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".ply");
+  FeatherPlyData ply = readFeatherPly(path);
+  FeatherShapeParams params;
+  if (ply.barbWidth) params.barbWidth = *ply.barbWidth;
+  FeatherShape shape(std::move(ply), params);
+}
+
+void objMeshFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".obj");
+  TriangleMesh mesh(readObjMesh(path), Transform(), false, false, {path, 0});
+}
+
+void exrEnvmapFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".exr");
+  EnvmapEmitter envmap(readEXR(path), 1.0f, Transform());
+  Wavelengths wl = Wavelengths::sampleVisible(0.5f);
+  for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.3f, 0.2f, -0.93f)}) {
+    (void)envmap.radianceFromDirection(d, wl);
+    (void)envmap.pdfDirection(d);
+  }
+  (void)envmap.sample(Vec3(0, 0, 0), Vec2(0.25f, 0.75f), wl);
+}
+
+}  // namespace columba::fuzz

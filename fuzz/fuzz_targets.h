@@ -1,0 +1,31 @@
+#pragma once
+// The readers Columba fuzzes, each as a function of raw bytes. Shared by the libFuzzer entry points
+// (fuzz/fuzz_*.cpp) and the regression replay in the unit suite (tests/test_fuzz_regressions.cpp).
+//
+// Each function returns normally when the input was read (and the object built from it), and
+// throws InputError when the input is rejected; any other exception escapes for the caller to
+// report, and a crash or sanitizer report is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace columba::fuzz {
+
+// Scene XML through loadSceneString and Scene construction. Lines at the start of the form
+// `-Dname=value` are -D defines; the rest is the XML. Relative file names resolve against
+// `baseDir`.
+void sceneFromBytes(const uint8_t* data, size_t size, const std::string& baseDir);
+// Mesh PLY (readPlyMesh, then a TriangleMesh).
+void plyMeshFromBytes(const uint8_t* data, size_t size);
+// Feather PLY (readFeatherPly, then a FeatherShape).
+void featherPlyFromBytes(const uint8_t* data, size_t size);
+// Wavefront OBJ (readObjMesh, then a TriangleMesh).
+void objMeshFromBytes(const uint8_t* data, size_t size);
+// OpenEXR image (readEXR, then an environment map and a few lookups).
+void exrEnvmapFromBytes(const uint8_t* data, size_t size);
+
+// The readers take paths: the bytes are written to a file of this process named with `suffix`
+// (".ply", ".obj", ".exr"), which is returned.
+std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix);
+
+}  // namespace columba::fuzz
