@@ -54,7 +54,7 @@ fuzz-build: deps
 	@./scripts/install-fuzz-deps.sh
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++ -DCOLUMBA_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -fno-math-errno" > /dev/null
-	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target columba $(addprefix fuzz_,$(FUZZ_TARGETS))
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
 
 # `make sanitize`: the whole unit suite once under ASan + UBSan, built in $(SANITIZE_BUILD).
 sanitize: deps

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built in BUILD_DIR, one after another, each for SECONDS:
 #   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh exr_envmap)
-# Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET, the
-# project's scenes and examples, feathers the build's `columba feather` generates and the inputs of
-# tests/fuzz-regressions/TARGET. Findings go to BUILD_DIR/fuzz/findings/TARGET, logs to
+# Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET (small
+# scenes, meshes, feathers written by `columba feather`, EXR images of every compression), the
+# project's scenes and examples, the inputs of tests/fuzz-regressions/TARGET, and feathers that
+# $COLUMBA (build/columba by default; skipped when not built) generates. Findings go to BUILD_DIR/fuzz/findings/TARGET, logs to
 # BUILD_DIR/fuzz/logs. Prints one line per target (executions, coverage, findings); exits non-zero
 # when any target found a crash, leak, timeout or out-of-memory input.
 set -uo pipefail
@@ -13,6 +14,7 @@ shift 2
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh exr_envmap)
 work="$build/fuzz"
+columba=${COLUMBA:-build/columba}
 mkdir -p "$work/logs"
 
 seed() {  # seed TARGET CORPUS
@@ -28,9 +30,9 @@ seed() {  # seed TARGET CORPUS
       done ;;
     feather_ply)
       cp -n examples/tiny_feather.ply "$corpus"/
-      if [ -x "$build/columba" ]; then
-        "$build/columba" feather --single --barbs 1 -o "$corpus/generated-single.ply" > /dev/null 2>&1
-        "$build/columba" feather --neck --feathers 2 --barbs 1 --binary -o "$corpus/generated-neck.ply" > /dev/null 2>&1
+      if [ -x "$columba" ]; then
+        "$columba" feather --single --barbs 1 -o "$corpus/generated-single.ply" > /dev/null 2>&1
+        "$columba" feather --neck --feathers 2 --barbs 1 --binary -o "$corpus/generated-neck.ply" > /dev/null 2>&1
       fi ;;
   esac
   return 0
