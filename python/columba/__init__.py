@@ -1,0 +1,160 @@
+"""Columba from Python: render scenes to numpy arrays and evaluate the barbule model.
+
+Everything is computed by Columba's C++ library (the extension ``columba._columba``); this
+module only adapts arguments. See docs/python.md for the API with examples.
+"""
+import os as _os
+import tempfile as _tempfile
+import warnings as _warnings
+
+import numpy as _np
+
+from ._columba import (  # noqa: F401
+    BARB_VERTICES,
+    GREEN_CORTEX_THICKNESS,
+    PURPLE_CORTEX_THICKNESS,
+    BarbuleBSDF,
+    InputError,
+    Scene,
+    __version__,
+    direction,
+    fresnel,
+    melanin_reflectance,
+    presets,
+    read_feather_ply,
+    write_image,
+)
+from . import _columba
+
+__all__ = [
+    "load_file", "load_string", "load_default", "render", "write_image", "read_image",
+    "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
+    "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "feather_barbs",
+    "Scene", "InputError",
+]
+
+
+def _define_text(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def _defines(defines):
+    return {name: _define_text(value) for name, value in defines.items()}
+
+
+def _warn_unused(scene, defines):
+    for name in scene.unused_defines:
+        _warnings.warn(f"{name}={defines[name]}: the scene uses no variable ${name}, so it has no effect",
+                       stacklevel=3)
+
+
+def load_file(path, **defines):
+    """Loads a Mitsuba-style scene file; keyword arguments set its $variables (as -D name=value).
+
+    Malformed input raises columba.InputError (a ValueError) with the CLI's file:line message.
+    """
+    d = _defines(defines)
+    scene = _columba._load_file(_os.fspath(path), d)
+    _warn_unused(scene, d)
+    return scene
+
+
+def load_string(xml, base_dir=None, name="<string>", **defines):
+    """Loads a scene from XML text; relative file names resolve against base_dir (default: the
+    current directory)."""
+    d = _defines(defines)
+    scene = _columba._load_string(xml, name, _os.fspath(base_dir) if base_dir is not None else _os.getcwd(), d)
+    _warn_unused(scene, d)
+    return scene
+
+
+def load_default(**defines):
+    """The scene `columba render` draws without a scene file (a generated neck)."""
+    d = _defines(defines)
+    scene = _columba._load_default(d)
+    _warn_unused(scene, d)
+    return scene
+
+
+def render(scene, spp=None, seed=0, threads=None, stats=False):
+    """Renders `scene` to an H x W x 3 float32 array of linear Rec.709 RGB.
+
+    spp overrides the scene sampler's sample count; the same seed and spp give the same image
+    (bit for bit, the CLI's too) for any number of threads (default: all cores). The GIL is
+    released while rendering; Ctrl-C stops the render and raises KeyboardInterrupt. With
+    stats=True returns (image, dict of seconds, samples, rays, ...).
+    """
+    if spp is not None and spp < 1:
+        raise ValueError(f"spp must be between 1 and {1 << 24}, not {spp}")
+    if threads is not None and threads < 1:
+        raise ValueError(f"threads must be between 1 and 65536, not {threads}")
+    image, info = _columba._render(scene, 0 if spp is None else int(spp), int(seed), 0 if threads is None else int(threads))
+    return (image, info) if stats else image
+
+
+def read_image(path, spectral=False):
+    """Reads an .exr or .png image as an H x W x 3 float32 array (linear values). With
+    spectral=True returns (rgb, wavelength bin centres or None, H x W x K bands or None)."""
+    rgb, centres, bands = _columba._read_image(_os.fspath(path))
+    return (rgb, centres, bands) if spectral else rgb
+
+
+def thin_film(theta, wavelength, thickness, film_ior="keratin", n_outside=1.000277, substrate_ior=None):
+    """Airy thin-film intensity reflectance and transmittance.
+
+    theta: angle of incidence (radians) in the outer medium; wavelength in nm; thickness in µm;
+    all broadcast against each other. film_ior: "keratin", a named index, a number or (a, b) of
+    Cauchy's law; substrate_ior: the medium behind the film (default: the outer medium).
+    Returns a dict of float64 arrays Rs, Rp, R (their mean), Ts, Tp, T.
+    """
+    t, w, d = _np.broadcast_arrays(_np.asarray(theta, dtype=_np.float64), _np.asarray(wavelength, dtype=_np.float64),
+                                   _np.asarray(thickness, dtype=_np.float64))
+    shape = t.shape
+    out = _columba._thin_film(t.ravel(), w.ravel(), d.ravel(), film_ior, float(n_outside), substrate_ior)
+    return {k: v.reshape(shape) for k, v in out.items()}
+
+
+def ior(index, wavelength):
+    """Refractive index at wavelength (nm): index "keratin", a named index, a number or (a, b)."""
+    w = _np.asarray(wavelength, dtype=_np.float32)
+    return _columba._ior(index, w.ravel()).reshape(w.shape)
+
+
+def keratin_ior(wavelength):
+    """Feather keratin: n = 1.532 + 5890 / lambda^2 (lambda in nm)."""
+    return ior("keratin", wavelength)
+
+
+def fresnel_amplitudes(cos_i, eta):
+    """Fresnel amplitude coefficients rs, rp, ts, tp, the refracted cosine cos_t and
+    total_internal_reflection, broadcast over cos_i and eta = n_t / n_i."""
+    c, e = _np.broadcast_arrays(_np.asarray(cos_i, dtype=_np.float32), _np.asarray(eta, dtype=_np.float32))
+    out = _columba._fresnel_amplitudes(c.ravel(), e.ravel())
+    return {k: v.reshape(c.shape) for k, v in out.items()}
+
+
+def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binary=False):
+    """Writes procedural feathers as a feather PLY (as `columba feather`): one feather, or with
+    neck=True a neck of `feathers` (60) feathers. barbs: per side (default: edge to edge).
+    Returns a summary dict (feathers, barbs, faces, vertices, tiling_barb_width)."""
+    if feathers is not None and not neck:
+        raise ValueError("feathers applies to a neck (neck=True)")
+    if feathers is not None and feathers < 1:
+        raise ValueError(f"feathers must be positive, not {feathers}")
+    if barbs is not None and barbs < 1:
+        raise ValueError(f"barbs must be positive, not {barbs}")
+    return _columba._generate_feathers(_os.fspath(path), bool(neck), 60 if feathers is None else int(feathers),
+                                       0 if barbs is None else int(barbs), int(seed), bool(binary))
+
+
+def feather_barbs(neck=False, feathers=None, barbs=None, seed=1):
+    """The generator's feathers as arrays (see read_feather_ply): positions, normals, H, mu,
+    height per barb vertex (B x 64 [x 3])."""
+    with _tempfile.TemporaryDirectory() as tmp:
+        path = _os.path.join(tmp, "feathers.ply")
+        generate_feathers(path, neck=neck, feathers=feathers, barbs=barbs, seed=seed, binary=True)
+        return read_feather_ply(path)

@@ -1,0 +1,519 @@
+// The barbule BSDF evaluated over numpy arrays, its virtual measurements, the optics it is built
+// from (thin film, Fresnel, dispersion, melanin) and the feather generator.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <string>
+
+#include "bsdfs/barbule_bsdf.h"
+#include "bsdfs/barbule_measurement.h"
+#include "core/error.h"
+#include "feather/feather_generator.h"
+#include "optics/dispersion.h"
+#include "optics/fresnel.h"
+#include "optics/melanin.h"
+#include "optics/thin_film.h"
+#include "shapes/feather_ply.h"
+
+namespace py = pybind11;
+
+namespace columba::python {
+
+namespace {
+
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// "barbulebsdf, parameter 'b': ..." as the scene plug-in words it (without a file position).
+[[noreturn]] void parameterError(const std::string& parameter, const std::string& message) {
+  throw py::value_error("barbulebsdf, parameter '" + parameter + "': " + message);
+}
+
+// A refractive index given as a name ("keratin", "air", ...), a number or (a, b) of Cauchy's law.
+RefractiveIndex indexFrom(const py::object& value, const std::string& parameter) {
+  if (py::isinstance<py::str>(value)) {
+    std::string name = value.cast<std::string>();
+    std::optional<RefractiveIndex> ior = iorFromName(name);
+    if (!ior) parameterError(parameter, "unknown index of refraction '" + name + "'");
+    return *ior;
+  }
+  if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+    auto ab = value.cast<std::vector<float>>();
+    if (ab.size() != 2) parameterError(parameter, "a Cauchy index is given as (a, b), n = a + b / lambda^2 (nm)");
+    return RefractiveIndex::cauchy(ab[0], ab[1]);
+  }
+  return RefractiveIndex::constant(value.cast<float>());
+}
+
+class PyBarbule {
+ public:
+  PyBarbule(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
+            const py::object& phi0, const py::object& phi1, const py::object& filmIOR, const py::object& extIOR,
+            const py::object& preset, const py::object& melanin, const std::string& role)
+      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin), roleFrom(role)) {}
+
+  const BarbuleBSDF& bsdf() const { return bsdf_; }
+
+ private:
+  static BarbuleBSDF::Role roleFrom(const std::string& role) {
+    if (role == "camera") return BarbuleBSDF::Role::CameraIncident;
+    if (role == "light") return BarbuleBSDF::Role::LightIncident;
+    throw py::value_error("role must be 'camera' (barbulebsdf) or 'light' (barbulebsdfev), not '" + role + "'");
+  }
+
+  static BarbuleParameters resolve(const py::object& b, const py::object& H, const py::object& mu,
+                                   const py::object& height, const py::object& phi0, const py::object& phi1,
+                                   const py::object& filmIOR, const py::object& extIOR, const py::object& preset,
+                                   const py::object& melanin) {
+    BarbuleParameters p;
+    if (!preset.is_none()) {
+      std::string name = preset.cast<std::string>();
+      std::optional<BarbuleParameters> found = barbulePreset(name);
+      if (!found) parameterError("preset", "unknown preset '" + name + "' (known: " + barbulePresetNames() + ")");
+      p = *found;
+    }
+    auto take = [](float& target, const py::object& value) {
+      if (!value.is_none()) target = value.cast<float>();
+    };
+    take(p.b, b);
+    take(p.H, H);
+    take(p.mu, mu);
+    take(p.height, height);
+    take(p.phi0, phi0);
+    take(p.phi1, phi1);
+    if (!filmIOR.is_none()) p.filmIOR = indexFrom(filmIOR, "film_ior");
+    if (!extIOR.is_none()) {
+      RefractiveIndex ext = indexFrom(extIOR, "ext_ior");
+      if (!ext.isConstant()) parameterError("ext_ior", "the surrounding medium needs a constant index");
+      p.extIOR = ext.a;
+    }
+    if (!melanin.is_none()) {
+      if (py::isinstance<py::float_>(melanin) || py::isinstance<py::int_>(melanin)) {
+        p.melanin = SpectralDistribution::constant(melanin.cast<float>());
+      } else {
+        auto pair = melanin.cast<std::pair<std::vector<float>, std::vector<float>>>();
+        if (pair.first.size() != pair.second.size() || pair.first.empty())
+          parameterError("melanin", "give (wavelengths, reflectances) of the same, non-zero length");
+        if (!std::is_sorted(pair.first.begin(), pair.first.end()))
+          parameterError("melanin", "the wavelengths must increase");
+        p.melanin = SpectralDistribution::piecewiseLinear(pair.first, pair.second);
+      }
+    }
+    if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) parameterError(problem->parameter, problem->message);
+    if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p)) {
+      std::string text = "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message;
+      PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
+    }
+    return p;
+  }
+
+  BarbuleBSDF bsdf_;
+};
+
+// N x 3 directions.
+FloatArray directions(const py::array& input, const char* name) {
+  FloatArray a = FloatArray::ensure(input);
+  if (!a || a.ndim() != 2 || a.shape(1) != 3)
+    throw py::value_error(std::string(name) + " must be an N x 3 array of directions in the local frame");
+  return a;
+}
+
+// Wavelengths (nm), N (one per direction, in all four lanes) or N x 4 (a path's four).
+struct WavelengthArg {
+  FloatArray a;
+  bool four = false;
+  Wavelengths at(py::ssize_t i) const {
+    const float* p = a.data();
+    if (four) return Wavelengths::fixed({p[4 * i], p[4 * i + 1], p[4 * i + 2], p[4 * i + 3]});
+    return Wavelengths::fixed({p[i], p[i], p[i], p[i]});
+  }
+};
+WavelengthArg wavelengths(const py::array& input, py::ssize_t n) {
+  WavelengthArg w{FloatArray::ensure(input)};
+  if (!w.a) throw py::value_error("wavelengths must be a numeric array");
+  bool single = w.a.ndim() == 1 && w.a.shape(0) == n;
+  w.four = w.a.ndim() == 2 && w.a.shape(0) == n && w.a.shape(1) == 4;
+  if (!single && !w.four)
+    throw py::value_error("wavelengths must have shape (N,) or (N, 4) for N = " + std::to_string(n) +
+                          " directions, not " + py::str(py::tuple(input.attr("shape"))).cast<std::string>());
+  return w;
+}
+
+// An output spectrum array shaped like the wavelengths.
+py::array_t<float> spectrumArray(const WavelengthArg& w, py::ssize_t n) {
+  if (w.four) return py::array_t<float>({n, py::ssize_t(4)});
+  return py::array_t<float>(n);
+}
+void store(float* out, const WavelengthArg& w, py::ssize_t i, const Spectrum& s) {
+  if (w.four)
+    for (int k = 0; k < 4; ++k) out[4 * i + k] = s[k];
+  else
+    out[i] = s[0];
+}
+
+Vec3 row(const FloatArray& a, py::ssize_t i) {
+  const float* p = a.data() + 3 * i;
+  return Vec3(p[0], p[1], p[2]);
+}
+
+void sameCount(const FloatArray& a, const FloatArray& b, const char* na, const char* nb) {
+  if (a.shape(0) != b.shape(0))
+    throw py::value_error(std::string(na) + " and " + nb + " must have the same number of rows (" +
+                          std::to_string(a.shape(0)) + " and " + std::to_string(b.shape(0)) + ")");
+}
+
+py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
+  FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
+  sameCount(wi, wo, "wi", "wo");
+  py::ssize_t n = wi.shape(0);
+  WavelengthArg wl = wavelengths(wlIn, n);
+  py::array_t<float> out = spectrumArray(wl, n);
+  float* o = out.mutable_data();
+  py::gil_scoped_release release;
+  BSDFContext ctx;
+  for (py::ssize_t i = 0; i < n; ++i) store(o, wl, i, self.bsdf().eval(ctx, row(wi, i), row(wo, i), wl.at(i)));
+  return out;
+}
+
+py::array_t<float> pdfArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
+  FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
+  sameCount(wi, wo, "wi", "wo");
+  py::ssize_t n = wi.shape(0);
+  WavelengthArg wl = wavelengths(wlIn, n);
+  py::array_t<float> out(n);
+  float* o = out.mutable_data();
+  py::gil_scoped_release release;
+  BSDFContext ctx;
+  for (py::ssize_t i = 0; i < n; ++i) o[i] = self.bsdf().pdf(ctx, row(wi, i), row(wo, i), wl.at(i));
+  return out;
+}
+
+py::dict sampleArray(const PyBarbule& self, const py::array& wiIn, const py::array& u1In, const py::array& u2In,
+                     const py::array& wlIn) {
+  FloatArray wi = directions(wiIn, "wi");
+  py::ssize_t n = wi.shape(0);
+  FloatArray u1 = FloatArray::ensure(u1In), u2 = FloatArray::ensure(u2In);
+  if (!u1 || u1.ndim() != 1 || u1.shape(0) != n) throw py::value_error("u1 must have shape (N,): one number per direction");
+  if (!u2 || u2.ndim() != 2 || u2.shape(0) != n || u2.shape(1) != 2)
+    throw py::value_error("u2 must have shape (N, 2): two numbers per direction");
+  WavelengthArg wl = wavelengths(wlIn, n);
+  py::array_t<float> wo({n, py::ssize_t(3)}), pdf(n);
+  py::array_t<float> weight = spectrumArray(wl, n);
+  py::array_t<bool> valid(n), delta(n), passThrough(n);
+  {
+    float *pWo = wo.mutable_data(), *pPdf = pdf.mutable_data(), *pWeight = weight.mutable_data();
+    bool *pValid = valid.mutable_data(), *pDelta = delta.mutable_data(), *pPass = passThrough.mutable_data();
+    py::gil_scoped_release release;
+    BSDFContext ctx;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      std::optional<BSDFSample> s =
+          self.bsdf().sample(ctx, row(wi, i), wl.at(i), u1.data()[i], Vec2(u2.data()[2 * i], u2.data()[2 * i + 1]));
+      BSDFSample v = s.value_or(BSDFSample{});
+      pWo[3 * i] = v.wo.x;
+      pWo[3 * i + 1] = v.wo.y;
+      pWo[3 * i + 2] = v.wo.z;
+      pPdf[i] = v.pdf;
+      store(pWeight, wl, i, v.weight);
+      pValid[i] = s.has_value();
+      pDelta[i] = v.delta;
+      pPass[i] = v.passThrough;
+    }
+  }
+  py::dict d;
+  d["wo"] = wo;
+  d["weight"] = weight;
+  d["pdf"] = pdf;
+  d["valid"] = valid;
+  d["delta"] = delta;
+  d["pass_through"] = passThrough;
+  return d;
+}
+
+py::dict lobesArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
+  FloatArray wi = directions(wiIn, "omega_i"), wo = directions(woIn, "omega_o");
+  sameCount(wi, wo, "omega_i", "omega_o");
+  py::ssize_t n = wi.shape(0);
+  WavelengthArg wl = wavelengths(wlIn, n);
+  py::array_t<float> r = spectrumArray(wl, n), trt = spectrumArray(wl, n);
+  {
+    float *pr = r.mutable_data(), *pt = trt.mutable_data();
+    py::gil_scoped_release release;
+    BSDFContext ctx;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      BarbuleBSDF::Lobes l = self.bsdf().evalLobes(ctx, row(wi, i), row(wo, i), wl.at(i));
+      store(pr, wl, i, l.reflection);
+      store(pt, wl, i, l.trt);
+    }
+  }
+  py::dict d;
+  d["R"] = r;
+  d["TRT"] = trt;
+  return d;
+}
+
+py::array_t<float> coverageArray(const PyBarbule& self, const py::array& wiIn) {
+  FloatArray wi = directions(wiIn, "omega_i");
+  py::ssize_t n = wi.shape(0);
+  py::array_t<float> out(n);
+  float* o = out.mutable_data();
+  py::gil_scoped_release release;
+  BSDFContext ctx;
+  for (py::ssize_t i = 0; i < n; ++i) o[i] = self.bsdf().coverage(ctx, row(wi, i));
+  return out;
+}
+
+py::array_t<float> passThroughArray(const PyBarbule& self, const py::array& wiIn, const py::array& wlIn) {
+  FloatArray wi = directions(wiIn, "wi");
+  py::ssize_t n = wi.shape(0);
+  WavelengthArg wl = wavelengths(wlIn, n);
+  py::array_t<float> out = spectrumArray(wl, n);
+  float* o = out.mutable_data();
+  py::gil_scoped_release release;
+  BSDFContext ctx;
+  for (py::ssize_t i = 0; i < n; ++i) store(o, wl, i, self.bsdf().passThrough(ctx, row(wi, i), wl.at(i)));
+  return out;
+}
+
+std::vector<float> lambdaList(const py::object& lambdas) {
+  if (lambdas.is_none()) return visibleWavelengthGrid(1.0f);
+  FloatArray a = FloatArray::ensure(lambdas);
+  if (!a || a.ndim() != 1 || a.size() == 0) throw py::value_error("wavelengths must be a non-empty 1-D array (nm)");
+  return std::vector<float>(a.data(), a.data() + a.size());
+}
+
+py::array_t<float> toArray(const std::vector<float>& v) { return py::array_t<float>(py::ssize_t(v.size()), v.data()); }
+
+py::array_t<float> rgbImage(Image&& image) {
+  auto* owned = new Image(std::move(image));
+  py::capsule owner(owned, [](void* p) { delete static_cast<Image*>(p); });
+  return py::array_t<float>({py::ssize_t(owned->height), py::ssize_t(owned->width), py::ssize_t(3)},
+                            owned->rgb.data(), owner);
+}
+
+// Broadcast 1-D inputs of equal length (the Python side broadcasts and flattens).
+void equalLengths(std::initializer_list<const DoubleArray*> arrays) {
+  py::ssize_t n = (*arrays.begin())->size();
+  for (const DoubleArray* a : arrays)
+    if (a->size() != n) throw py::value_error("the arrays must have the same length");
+}
+
+py::dict thinFilm(const DoubleArray& theta, const DoubleArray& lambda, const DoubleArray& thickness,
+                  const py::object& filmIOR, double nOutside, const py::object& substrateIOR) {
+  equalLengths({&theta, &lambda, &thickness});
+  RefractiveIndex film = indexFrom(filmIOR, "film_ior");
+  std::optional<RefractiveIndex> substrate;
+  if (!substrateIOR.is_none()) substrate = indexFrom(substrateIOR, "substrate_ior");
+  py::ssize_t n = theta.size();
+  const char* names[] = {"Rs", "Rp", "R", "Ts", "Tp", "T"};
+  std::vector<py::array_t<double>> out;
+  for (int k = 0; k < 6; ++k) out.emplace_back(n);
+  std::vector<double*> p;
+  for (auto& a : out) p.push_back(a.mutable_data());
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      double l = lambda.data()[i];
+      double n2 = film(float(l)), n3 = substrate ? (*substrate)(float(l)) : nOutside;
+      ThinFilmAmplitudes a = thinFilmAmplitudes(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+      double rs = std::norm(a.rs), rp = std::norm(a.rp);
+      double ts = a.transmittanceFactor * std::norm(a.ts), tp = a.transmittanceFactor * std::norm(a.tp);
+      p[0][i] = rs;
+      p[1][i] = rp;
+      p[2][i] = thinFilmReflectance(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+      p[3][i] = ts;
+      p[4][i] = tp;
+      p[5][i] = thinFilmTransmittance(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+    }
+  }
+  py::dict d;
+  for (int k = 0; k < 6; ++k) d[names[k]] = out[size_t(k)];
+  return d;
+}
+
+py::dict featherPly(const std::string& path) {
+  FeatherPlyData data;
+  {
+    py::gil_scoped_release release;
+    data = readFeatherPly(path);
+  }
+  py::ssize_t barbs = py::ssize_t(data.barbCount());
+  py::array_t<float> positions({barbs, py::ssize_t(kBarbVertices), py::ssize_t(3)});
+  py::array_t<float> normals({barbs, py::ssize_t(kBarbVertices), py::ssize_t(3)});
+  float *pp = positions.mutable_data(), *pn = normals.mutable_data();
+  for (size_t i = 0; i < data.barbIndices.size(); ++i) {
+    uint32_t v = data.barbIndices[i];
+    const Vec3 &x = data.positions[v], &nrm = data.normals[v];
+    pp[3 * i] = x.x, pp[3 * i + 1] = x.y, pp[3 * i + 2] = x.z;
+    pn[3 * i] = nrm.x, pn[3 * i + 1] = nrm.y, pn[3 * i + 2] = nrm.z;
+  }
+  py::dict d;
+  d["positions"] = positions;
+  d["normals"] = normals;
+  if (data.hasBarbuleValues()) {
+    py::array_t<float> H({barbs, py::ssize_t(kBarbVertices)}), mu({barbs, py::ssize_t(kBarbVertices)}),
+        height({barbs, py::ssize_t(kBarbVertices)});
+    for (size_t i = 0; i < data.barbIndices.size(); ++i) {
+      uint32_t v = data.barbIndices[i];
+      H.mutable_data()[i] = data.barbuleH[v];
+      mu.mutable_data()[i] = data.barbuleMu[v];
+      height.mutable_data()[i] = data.barbuleHeight[v];
+    }
+    d["H"] = H;
+    d["mu"] = mu;
+    d["height"] = height;
+  } else {
+    d["H"] = py::none();
+    d["mu"] = py::none();
+    d["height"] = py::none();
+  }
+  d["barb_width"] = data.barbWidth ? py::object(py::float_(*data.barbWidth)) : py::object(py::none());
+  return d;
+}
+
+}  // namespace
+
+void bindModel(py::module_& m) {
+  py::class_<PyBarbule>(m, "BarbuleBSDF",
+                        "The barbule BSDF (barbulebsdf; role='light' gives barbulebsdfev). Directions are N x 3 "
+                        "arrays in the local frame (z the vane normal, y the barbule axis), wavelengths (nm) N or "
+                        "N x 4.")
+      .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
+                    const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
+                    const std::string&>(),
+           py::kw_only(), py::arg("b") = py::none(), py::arg("H") = py::none(), py::arg("mu") = py::none(),
+           py::arg("height") = py::none(), py::arg("phi_0") = py::none(), py::arg("phi_1") = py::none(),
+           py::arg("film_ior") = py::none(), py::arg("ext_ior") = py::none(), py::arg("preset") = py::none(),
+           py::arg("melanin") = py::none(), py::arg("role") = "camera")
+      .def_property_readonly("parameters",
+                             [](const PyBarbule& s) {
+                               const BarbuleParameters& p = s.bsdf().parameters();
+                               py::dict d;
+                               d["b"] = p.b, d["H"] = p.H, d["mu"] = p.mu, d["height"] = p.height;
+                               d["phi_0"] = p.phi0, d["phi_1"] = p.phi1, d["ext_ior"] = p.extIOR;
+                               return d;
+                             })
+      .def("eval", &evalArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),
+           "f(wi, wo) |cos wo| per wavelength (the scene plug-in's eval)")
+      .def("pdf", &pdfArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
+      .def("sample", &sampleArray, py::arg("wi"), py::arg("u1"), py::arg("u2"), py::arg("wavelengths"),
+           "Samples wo from wi: u1 (N,) picks the lobe, u2 (N, 2) drives it")
+      .def("eval_lobes", &lobesArray, py::arg("omega_i"), py::arg("omega_o"), py::arg("wavelengths"),
+           "The R and TRT lobes f(omega_i, omega_o) without cosine")
+      .def("coverage", &coverageArray, py::arg("omega_i"), "r(omega_i); T = 1 - r")
+      .def("pass_through", &passThroughArray, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight")
+      .def(
+          "scatterometer_image",
+          [](const PyBarbule& s, float theta, float phi, int resolution, int supersampling) {
+            if (resolution < 1 || resolution > 8192) throw py::value_error("resolution must be between 1 and 8192");
+            if (supersampling < 1 || supersampling > 64) throw py::value_error("supersampling must be between 1 and 64");
+            Image image;
+            {
+              py::gil_scoped_release release;
+              image = scatterometerImage(s.bsdf(), directionFromAngles(theta, phi), resolution, supersampling);
+            }
+            return rgbImage(std::move(image));
+          },
+          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
+      .def(
+          "specular_spectra",
+          [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
+            std::vector<float> l = lambdaList(lambdas);
+            SpecularSpectra r;
+            {
+              py::gil_scoped_release release;
+              r = specularSpectra(s.bsdf(), directionFromAngles(theta, phi), l);
+            }
+            py::dict d;
+            d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
+            return d;
+          },
+          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("wavelengths") = py::none())
+      .def(
+          "lobe_reflectance",
+          [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
+            std::vector<float> l = lambdaList(lambdas);
+            LobeReflectance r;
+            {
+              py::gil_scoped_release release;
+              r = lobeReflectance(s.bsdf(), directionFromAngles(theta, phi), l);
+            }
+            py::dict d;
+            d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
+            return d;
+          },
+          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("wavelengths") = py::none());
+
+  m.def("presets", [] {
+    py::dict d;
+    for (const BarbulePreset& p : barbulePresets()) {
+      py::dict v;
+      v["b"] = p.b, v["phi_0"] = p.phi0, v["phi_1"] = p.phi1, v["mu"] = p.mu, v["H"] = p.H, v["height"] = p.height;
+      v["source"] = p.source;
+      d[p.name] = v;
+    }
+    return d;
+  });
+  m.def("direction", [](float theta, float phi) {
+    Vec3 v = directionFromAngles(theta, phi);
+    return py::array_t<float>(3, &v.x);
+  }, py::arg("theta"), py::arg("phi") = 0.0f, "Unit direction at polar angle theta and azimuth phi (radians)");
+
+  m.def("_thin_film", &thinFilm, py::arg("theta"), py::arg("wavelength"), py::arg("thickness"), py::arg("film_ior"),
+        py::arg("n_outside"), py::arg("substrate_ior"));
+  m.def("_ior", [](const py::object& index, const FloatArray& lambdas) {
+    RefractiveIndex n = indexFrom(index, "ior");
+    py::array_t<float> out(lambdas.size());
+    for (py::ssize_t i = 0; i < lambdas.size(); ++i) out.mutable_data()[i] = n(lambdas.data()[i]);
+    return out;
+  });
+  m.def("melanin_reflectance", py::vectorize(melaninReflectance), py::arg("wavelengths"),
+        "Intensity reflectance of the melanin layer (measured table)");
+  m.def("fresnel", py::vectorize(fresnelDielectric), py::arg("cos_i"), py::arg("eta"),
+        "Unpolarised Fresnel reflectance of a dielectric interface (eta = n_t / n_i)");
+  m.def(
+      "_fresnel_amplitudes",
+      [](const FloatArray& cosI, const FloatArray& eta) {
+        py::ssize_t n = cosI.size();
+        if (eta.size() != n) throw py::value_error("the arrays must have the same length");
+        std::vector<py::array_t<float>> out;
+        for (int k = 0; k < 5; ++k) out.emplace_back(n);
+        py::array_t<bool> tir(n);
+        for (py::ssize_t i = 0; i < n; ++i) {
+          FresnelAmplitudes a = fresnelAmplitudes(cosI.data()[i], eta.data()[i]);
+          float v[5] = {a.rs, a.rp, a.ts, a.tp, a.cosT};
+          for (int k = 0; k < 5; ++k) out[size_t(k)].mutable_data()[i] = v[k];
+          tir.mutable_data()[i] = a.totalInternalReflection;
+        }
+        py::dict d;
+        const char* names[] = {"rs", "rp", "ts", "tp", "cos_t"};
+        for (int k = 0; k < 5; ++k) d[names[k]] = out[size_t(k)];
+        d["total_internal_reflection"] = tir;
+        return d;
+      });
+
+  m.def(
+      "_generate_feathers",
+      [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary) {
+        FeatherGenerationOptions o;
+        o.neck = neck, o.feathers = feathers, o.barbsPerSide = barbs, o.seed = seed, o.binary = binary;
+        FeatherGenerationSummary s;
+        {
+          py::gil_scoped_release release;
+          s = generateFeatherPly(o, path);
+        }
+        py::dict d;
+        d["feathers"] = s.feathers, d["barbs"] = s.barbs, d["faces"] = s.faces, d["vertices"] = s.vertices;
+        d["tiling_barb_width"] = s.tilingBarbWidth;
+        return d;
+      });
+  m.def("read_feather_ply", &featherPly, py::arg("path"),
+        "A feather PLY's barbs: positions and normals (B x 64 x 3), H, mu, height (B x 64, file convention) "
+        "and the recorded barb width");
+  m.attr("BARB_VERTICES") = kBarbVertices;
+  m.attr("GREEN_CORTEX_THICKNESS") = kGreenCortexThickness;
+  m.attr("PURPLE_CORTEX_THICKNESS") = kPurpleCortexThickness;
+}
+
+}  // namespace columba::python
