@@ -21,8 +21,8 @@ from ._columba import (  # noqa: F401
     fresnel,
     melanin_reflectance,
     presets,
-    read_feather_ply,
-    write_image,
+    from_srgb,
+    to_srgb,
 )
 from . import _columba
 
@@ -30,7 +30,7 @@ __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image",
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "feather_barbs",
-    "Scene", "InputError",
+    "Scene", "InputError", "to_srgb", "from_srgb",
 ]
 
 
@@ -96,6 +96,19 @@ def render(scene, spp=None, seed=0, threads=None, stats=False):
     return (image, info) if stats else image
 
 
+def write_image(path, image):
+    """Writes an H x W x 3 array of linear RGB as .exr (float32) or .png (8-bit sRGB, clamped),
+    through a temporary file renamed into place."""
+    _columba.write_image(_os.fspath(path), image)
+
+
+def read_feather_ply(path):
+    """A feather PLY's faces (the rachis and barbs, 64 vertices each) as arrays: positions and
+    normals (B x 64 x 3), H, mu and height (B x 64, in the file's convention, or None) and the
+    recorded barb_width (or None)."""
+    return _columba.read_feather_ply(_os.fspath(path))
+
+
 def read_image(path, spectral=False):
     """Reads an .exr or .png image as an H x W x 3 float32 array (linear values). With
     spectral=True returns (rgb, wavelength bin centres or None, H x W x K bands or None)."""
@@ -103,15 +116,15 @@ def read_image(path, spectral=False):
     return (rgb, centres, bands) if spectral else rgb
 
 
-def thin_film(theta, wavelength, thickness, film_ior="keratin", n_outside=1.000277, substrate_ior=None):
+def thin_film(theta_deg, wavelength, thickness, film_ior="keratin", n_outside=1.000277, substrate_ior=None):
     """Airy thin-film intensity reflectance and transmittance.
 
-    theta: angle of incidence (radians) in the outer medium; wavelength in nm; thickness in µm;
+    theta_deg: angle of incidence (degrees) in the outer medium; wavelength in nm; thickness in µm;
     all broadcast against each other. film_ior: "keratin", a named index, a number or (a, b) of
     Cauchy's law; substrate_ior: the medium behind the film (default: the outer medium).
     Returns a dict of float64 arrays Rs, Rp, R (their mean), Ts, Tp, T.
     """
-    t, w, d = _np.broadcast_arrays(_np.asarray(theta, dtype=_np.float64), _np.asarray(wavelength, dtype=_np.float64),
+    t, w, d = _np.broadcast_arrays(_np.asarray(theta_deg, dtype=_np.float64), _np.asarray(wavelength, dtype=_np.float64),
                                    _np.asarray(thickness, dtype=_np.float64))
     shape = t.shape
     out = _columba._thin_film(t.ravel(), w.ravel(), d.ravel(), film_ior, float(n_outside), substrate_ior)

@@ -26,9 +26,9 @@ namespace {
 using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// "barbulebsdf, parameter 'b': ..." as the scene plug-in words it (without a file position).
+// "<bsdf> 'barbulebsdf', parameter 'b': ..." as the scene plug-in words it (without a file position).
 [[noreturn]] void parameterError(const std::string& parameter, const std::string& message) {
-  throw py::value_error("barbulebsdf, parameter '" + parameter + "': " + message);
+  throw py::value_error("<bsdf> 'barbulebsdf', parameter '" + parameter + "': " + message);
 }
 
 // A refractive index given as a name ("keratin", "air", ...), a number or (a, b) of Cauchy's law.
@@ -103,7 +103,7 @@ class PyBarbule {
     }
     if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) parameterError(problem->parameter, problem->message);
     if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p)) {
-      std::string text = "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message;
+      std::string text = "<bsdf> 'barbulebsdf', parameter '" + odd->parameter + "': " + odd->message;
       PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
     }
     return p;
@@ -316,15 +316,16 @@ py::dict thinFilm(const DoubleArray& theta, const DoubleArray& lambda, const Dou
     for (py::ssize_t i = 0; i < n; ++i) {
       double l = lambda.data()[i];
       double n2 = film(float(l)), n3 = substrate ? (*substrate)(float(l)) : nOutside;
-      ThinFilmAmplitudes a = thinFilmAmplitudes(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+      double c = std::cos(theta.data()[i] * (M_PI / 180.0));
+      ThinFilmAmplitudes a = thinFilmAmplitudes(c, nOutside, n2, n3, thickness.data()[i], l);
       double rs = std::norm(a.rs), rp = std::norm(a.rp);
       double ts = a.transmittanceFactor * std::norm(a.ts), tp = a.transmittanceFactor * std::norm(a.tp);
       p[0][i] = rs;
       p[1][i] = rp;
-      p[2][i] = thinFilmReflectance(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+      p[2][i] = thinFilmReflectance(c, nOutside, n2, n3, thickness.data()[i], l);
       p[3][i] = ts;
       p[4][i] = tp;
-      p[5][i] = thinFilmTransmittance(std::cos(theta.data()[i]), nOutside, n2, n3, thickness.data()[i], l);
+      p[5][i] = thinFilmTransmittance(c, nOutside, n2, n3, thickness.data()[i], l);
     }
   }
   py::dict d;
@@ -411,11 +412,11 @@ void bindModel(py::module_& m) {
             Image image;
             {
               py::gil_scoped_release release;
-              image = scatterometerImage(s.bsdf(), directionFromAngles(theta, phi), resolution, supersampling);
+              image = scatterometerImage(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), resolution, supersampling);
             }
             return rgbImage(std::move(image));
           },
-          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
       .def(
           "specular_spectra",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
@@ -423,13 +424,13 @@ void bindModel(py::module_& m) {
             SpecularSpectra r;
             {
               py::gil_scoped_release release;
-              r = specularSpectra(s.bsdf(), directionFromAngles(theta, phi), l);
+              r = specularSpectra(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
             }
             py::dict d;
             d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
             return d;
           },
-          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("wavelengths") = py::none())
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none())
       .def(
           "lobe_reflectance",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
@@ -437,13 +438,13 @@ void bindModel(py::module_& m) {
             LobeReflectance r;
             {
               py::gil_scoped_release release;
-              r = lobeReflectance(s.bsdf(), directionFromAngles(theta, phi), l);
+              r = lobeReflectance(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
             }
             py::dict d;
             d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
             return d;
           },
-          py::arg("theta"), py::arg("phi") = 0.0f, py::arg("wavelengths") = py::none());
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none());
 
   m.def("presets", [] {
     py::dict d;
@@ -456,11 +457,11 @@ void bindModel(py::module_& m) {
     return d;
   });
   m.def("direction", [](float theta, float phi) {
-    Vec3 v = directionFromAngles(theta, phi);
+    Vec3 v = directionFromAngles(degToRad(theta), degToRad(phi));
     return py::array_t<float>(3, &v.x);
-  }, py::arg("theta"), py::arg("phi") = 0.0f, "Unit direction at polar angle theta and azimuth phi (radians)");
+  }, py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, "Unit direction at polar angle theta_deg from the vane normal and azimuth phi_deg from x (degrees)");
 
-  m.def("_thin_film", &thinFilm, py::arg("theta"), py::arg("wavelength"), py::arg("thickness"), py::arg("film_ior"),
+  m.def("_thin_film", &thinFilm, py::arg("theta_deg"), py::arg("wavelength"), py::arg("thickness"), py::arg("film_ior"),
         py::arg("n_outside"), py::arg("substrate_ior"));
   m.def("_ior", [](const py::object& index, const FloatArray& lambdas) {
     RefractiveIndex n = indexFrom(index, "ior");

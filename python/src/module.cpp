@@ -216,5 +216,8 @@ PYBIND11_MODULE(_columba, m) {
         return py::make_tuple(imageArray(std::move(image)), centres, bands);
       },
       py::arg("path"));
+  m.def("to_srgb", py::vectorize(toSRGB8), py::arg("linear"),
+        "The 8-bit sRGB encoding of linear values (uint8), as PNGs are written");
+  m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"), "The linear value of sRGB-encoded values in [0, 1]");
   bindModel(m);
 }

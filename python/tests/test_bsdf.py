@@ -1,0 +1,148 @@
+"""The barbule BSDF over numpy arrays, checked against `columba bsdf`, the scene plug-in and
+its own identities (eval, pdf and sample are the C++ functions)."""
+import csv
+
+import numpy as np
+import pytest
+
+import columba
+
+
+def directions(n, seed, lower=False):
+    rng = np.random.default_rng(seed)
+    v = rng.normal(size=(n, 3))
+    if not lower:
+        v[:, 2] = np.abs(v[:, 2])
+    return (v / np.linalg.norm(v, axis=1, keepdims=True)).astype(np.float32)
+
+
+def hemisphere(cli, tmp_path, *args):
+    cli("bsdf", "--mode", "hemisphere", "-o", tmp_path, *args)
+
+
+def test_scatterometer_image_equals_cli(cli, tmp_path):
+    hemisphere(cli, tmp_path, "--angles", "30", "--phi", "20", "--res", "32")
+    expected = columba.read_image(tmp_path / "bsdf_hemisphere_theta30.exr")
+    image = columba.BarbuleBSDF().scatterometer_image(30, 20, resolution=32)
+    assert image.shape == (32, 32, 3) and image.dtype == np.float32
+    np.testing.assert_array_equal(image, expected)
+
+
+def test_presets_and_parameters_equal_cli(cli, tmp_path):
+    hemisphere(cli, tmp_path, "--angles", "10", "--res", "24", "--preset", "dove-purple", "--height", "0.55",
+               "--film-ior", "1.56")
+    expected = columba.read_image(tmp_path / "bsdf_hemisphere_theta10.exr")
+    bsdf = columba.BarbuleBSDF(preset="dove-purple", height=0.55, film_ior=1.56)
+    np.testing.assert_array_equal(bsdf.scatterometer_image(10, resolution=24), expected)
+    purple = columba.presets()["dove-purple"]
+    assert bsdf.parameters["b"] == pytest.approx(purple["b"]) and bsdf.parameters["height"] == pytest.approx(0.55)
+    assert not np.array_equal(columba.BarbuleBSDF(preset="dove-purple").scatterometer_image(10, resolution=24), expected)
+
+
+def test_specular_spectra_equal_cli(cli, tmp_path):
+    cli("bsdf", "--mode", "specular", "--angles", "0,40", "--preset", "dove-green", "-o", tmp_path)
+    with open(tmp_path / "bsdf_specular.csv") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    header, data = rows[0], np.array(rows[1:], dtype=np.float64)
+    bsdf = columba.BarbuleBSDF(preset="dove-green")
+    for angle in (0, 40):
+        s = bsdf.specular_spectra(angle)
+        np.testing.assert_array_equal(s["wavelengths"], data[:, 0].astype(np.float32))
+        np.testing.assert_allclose(s["R"], data[:, header.index(f"R_theta{angle}")], rtol=1e-6, atol=1e-9)
+        np.testing.assert_allclose(s["TRT"], data[:, header.index(f"TRT_theta{angle}")], rtol=1e-6, atol=1e-9)
+
+
+def test_defaults_and_validation_match_the_scene_plugin():
+    bsdf = columba.BarbuleBSDF()
+    assert bsdf.parameters == pytest.approx({"b": 0.25, "H": 1.25, "mu": -0.35, "height": 0.6, "phi_0": -0.37,
+                                             "phi_1": 2.64, "ext_ior": 1.000277})
+    xml = """<scene version="3.0.0"><shape type="sphere"><bsdf type="barbulebsdf">
+      <float name="{name}" value="{value}"/></bsdf></shape></scene>"""
+    for name, value in [("b", -1), ("H", 0), ("height", -0.1), ("phi_0", 3)]:
+        with pytest.raises(columba.InputError) as xml_error:
+            columba.load_string(xml.format(name=name, value=value))
+        with pytest.raises(ValueError) as error:
+            columba.BarbuleBSDF(**{name: value})
+        # The plug-in's message without its file:line.
+        assert str(xml_error.value).endswith(": " + str(error.value)), (str(xml_error.value), str(error.value))
+        assert str(error.value).startswith("<bsdf> 'barbulebsdf', parameter '")
+    with pytest.raises(ValueError, match="unknown preset 'dove-blue' \\(known: dove-green, dove-purple"):
+        columba.BarbuleBSDF(preset="dove-blue")
+    with pytest.raises(ValueError, match="unknown index of refraction 'glas'"):
+        columba.BarbuleBSDF(film_ior="glas")
+    with pytest.raises(ValueError, match="role must be"):
+        columba.BarbuleBSDF(role="eye")
+    with pytest.warns(UserWarning, match="height"):
+        columba.BarbuleBSDF(height=600)
+
+
+def test_eval_is_the_lobes_times_cosine_and_wavelength_layouts_agree():
+    bsdf = columba.BarbuleBSDF()
+    wi, wo = directions(500, 1), directions(500, 2, lower=True)
+    wl = np.random.default_rng(3).uniform(380, 780, size=(500, 4)).astype(np.float32)
+    f = bsdf.eval(wi, wo, wl)
+    assert f.shape == (500, 4) and f.dtype == np.float32
+    lobes = bsdf.eval_lobes(wi, wo, wl)
+    np.testing.assert_allclose(f, (lobes["R"] + lobes["TRT"]) * np.abs(wo[:, 2:3]), rtol=1e-5, atol=1e-7)
+    assert f.max() > 0 and (f >= 0).all()
+    # One wavelength per row is the four-lane evaluation with that wavelength everywhere.
+    one = bsdf.eval(wi, wo, wl[:, 0])
+    assert one.shape == (500,)
+    np.testing.assert_array_equal(one, bsdf.eval(wi, wo, np.repeat(wl[:, :1], 4, axis=1))[:, 0])
+    # The light-incident twin evaluates the lobes with omega_i = wo.
+    ev = columba.BarbuleBSDF(role="light").eval(wi, wo, wl)
+    assert not np.allclose(ev, f)
+
+
+def test_sample_matches_eval_and_pdf():
+    bsdf = columba.BarbuleBSDF(preset="dove-green")
+    n = 2000
+    rng = np.random.default_rng(4)
+    wi = directions(n, 5)
+    wl = rng.uniform(380, 780, size=(n, 4)).astype(np.float32)
+    s = bsdf.sample(wi, rng.random(n, dtype=np.float32), rng.random((n, 2), dtype=np.float32), wl)
+    assert s["wo"].shape == (n, 3) and s["weight"].shape == (n, 4) and s["pdf"].shape == (n,)
+    assert s["valid"].dtype == bool
+    scattered = s["valid"] & ~s["pass_through"] & ~s["delta"]
+    assert scattered.sum() > n // 4 and s["pass_through"].sum() > 0
+    wo = s["wo"][scattered]
+    np.testing.assert_allclose(np.linalg.norm(wo, axis=1), 1, rtol=1e-4)
+    pdf = bsdf.pdf(wi[scattered], wo, wl[scattered])
+    np.testing.assert_allclose(s["pdf"][scattered], pdf, rtol=1e-4)
+    f = bsdf.eval(wi[scattered], wo, wl[scattered])
+    np.testing.assert_allclose(s["weight"][scattered], f / pdf[:, None], rtol=1e-3, atol=1e-6)
+    # The pass-through samples continue along -wi with the T lobe's weight.
+    passing = s["pass_through"]
+    np.testing.assert_allclose(s["wo"][passing], -wi[passing], atol=1e-6)
+
+
+def test_coverage_and_pass_through():
+    bsdf = columba.BarbuleBSDF()
+    wi = directions(100, 6)
+    r = bsdf.coverage(wi)
+    assert r.shape == (100,) and ((0 <= r) & (r <= 1)).all() and r.max() > 0.5
+    t = bsdf.pass_through(wi, np.full(100, 550, np.float32))
+    np.testing.assert_allclose(t, 1 - r, atol=1e-6)
+
+
+def test_albedo_is_below_coverage():
+    bsdf = columba.BarbuleBSDF()
+    lambdas = np.arange(400, 701, 50, dtype=np.float32)
+    a = bsdf.lobe_reflectance(30, wavelengths=lambdas)
+    assert a["R"].shape == (7,) and (a["R"] > 0).all()
+    r = bsdf.coverage(columba.direction(30)[None, :])[0]
+    assert (a["R"] + a["TRT"] <= r * 1.001).all()
+    np.testing.assert_allclose(columba.direction(90, 90), [0, 1, 0], atol=1e-6)
+
+
+def test_shape_errors():
+    bsdf = columba.BarbuleBSDF()
+    wi = directions(4, 7)
+    with pytest.raises(ValueError, match="wi must be an N x 3 array"):
+        bsdf.eval(wi[:, :2], wi, np.full(4, 500))
+    with pytest.raises(ValueError, match="same number of rows"):
+        bsdf.eval(wi, wi[:3], np.full(4, 500))
+    with pytest.raises(ValueError, match=r"wavelengths must have shape \(N,\) or \(N, 4\) for N = 4"):
+        bsdf.eval(wi, wi, np.full(3, 500))
+    with pytest.raises(ValueError, match=r"u2 must have shape \(N, 2\)"):
+        bsdf.sample(wi, np.zeros(4), np.zeros(4), np.full(4, 500))
