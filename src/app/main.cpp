@@ -7,6 +7,7 @@
 #include "app/bsdf_command.h"
 #include "app/cli_checks.h"
 #include "app/feather_command.h"
+#include "app/fit_command.h"
 #include "app/montage_command.h"
 #include "app/render_command.h"
 #include "core/version.h"
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
   columba::addFeatherCommand(app);
   columba::addBSDFCommand(app);
   columba::addMontageCommand(app);
+  columba::addFitCommand(app);
   columba::requireFiniteNumbers(app);
   if (std::string message = unknownCommandMessage(app, argc, argv); !message.empty()) {
     fmt::print(stderr, "error: {}\nRun with --help for more information.\n", message);

@@ -1,0 +1,29 @@
+#pragma once
+// The files a fit leaves: fit.json (values, uncertainties, loss, scale, budget used), history.csv
+// (every evaluation), profiles.png (the loss slices behind the uncertainties), and compare.png
+// (target | fitted render | signed difference) or spectra.png.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+#include "app/data_files.h"
+#include "fit/fit_result.h"
+#include "fit/scaled_loss.h"
+#include "fit/spectra_fit.h"
+#include "render/image.h"
+
+namespace columba {
+
+// `settings` describes the run (loss, scale, input files...), copied into the record.
+nlohmann::json fitRecord(const FitResult& result, const nlohmann::json& settings);
+CsvTable historyTable(const FitResult& result);
+// One loss-against-value chart per parameter, the threshold and interval marked.
+Image profilesImage(const FitResult& result);
+// Target, the render times `scale`, and their signed difference (mean of RGB) in a blue-white-red
+// map with its colour bar; pixels outside the mask are grey in the difference.
+Image compareImage(const Image& target, const Image& render, double scale, const std::optional<Image>& mask);
+// Measured (dashed) and fitted (solid) reflectance against wavelength, one colour per pair of
+// directions.
+Image spectraImage(const std::vector<SpectraSample>& samples, const std::vector<float>& model, double scale);
+
+}  // namespace columba

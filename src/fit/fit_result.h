@@ -1,0 +1,31 @@
+#pragma once
+// What a fit found, and the fit itself for any objective: the two optimiser stages, then the
+// loss profiles that give each parameter its uncertainty.
+#include <vector>
+#include "fit/loss_profile.h"
+#include "fit/optimizer.h"
+
+namespace columba {
+
+struct FitResult {
+  std::vector<FitParameter> parameters;
+  std::vector<double> values;  // fitted, one per parameter
+  LossValue loss;              // at the fitted values, with the scale that gave it
+  int evaluations = 0;         // by the optimiser (the start point included)
+  double seconds = 0.0;        // the optimiser's
+  double profileRise = 0.1;    // the intervals: where the loss stays below (1 + rise) x its minimum
+  std::vector<LossProfile> profiles;
+  int profileEvaluations = 0;
+  double totalSeconds = 0.0;   // with the profiles
+  std::vector<Evaluation> history;
+};
+
+struct FitSettings {
+  OptimizerSettings optimizer;
+  double profileRise = 0.1;
+  FitProgress progress;  // may be empty
+};
+
+FitResult runFit(const std::vector<FitParameter>& parameters, FitObjective objective, const FitSettings& settings);
+
+}  // namespace columba

@@ -1,0 +1,48 @@
+#pragma once
+// Fits barbule BSDF parameters to measured reflectance spectra, evaluating the BSDF directly (no
+// rendering): the reflectance factor pi (f_R + f_TRT)(omega_i, omega_o), what `columba bsdf --mode
+// specular` reports in the mirror direction, at each measured pair of directions and wavelength.
+#include <map>
+#include <string>
+#include <vector>
+#include "bsdfs/barbule_parameters.h"
+#include "fit/fit_result.h"
+#include "fit/scaled_loss.h"
+
+namespace columba {
+
+// One row of a spectra file: directions in degrees (theta from the vane normal, phi from the
+// axis across the barbules), the wavelength in nm and the reflectance factor.
+struct SpectraSample {
+  float thetaI = 0, phiI = 0, thetaO = 0, phiO = 0, wavelength = 0, reflectance = 0;
+};
+
+// A CSV with a header naming the columns theta_i, phi_i, theta_o, phi_o, wavelength_nm and
+// reflectance (in any order, others ignored); '#' lines are comments. Throws InputError naming
+// the file, line and value for anything it cannot read.
+std::vector<SpectraSample> readSpectraCSV(const std::string& path);
+
+// The model's reflectance factor at each sample's directions and wavelength.
+std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples);
+
+// `base` with the named parameters (b, phi_0, phi_1, mu, H, height, as the scene plug-in spells
+// them) set; throws std::runtime_error for another name or an invalid set of values.
+BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std::map<std::string, double>& values);
+
+struct SpectraFitSettings {
+  std::vector<SpectraSample> samples;
+  BarbuleParameters base;  // the parameters not fitted
+  std::vector<FitParameter> parameters;
+  LossKind loss = LossKind::MSE;
+  ScaleMode scale = ScaleMode::Free;
+  FitSettings fit;
+};
+
+struct SpectraFitResult {
+  FitResult fit;
+  std::vector<float> model;  // modelSpectra at the fitted values, before scaling
+};
+
+SpectraFitResult fitSpectra(const SpectraFitSettings& settings);
+
+}  // namespace columba
