@@ -49,7 +49,16 @@ void sceneFromBytes(const uint8_t* data, size_t size, const std::string& baseDir
     if (eq != std::string::npos) defines[define.substr(0, eq)] = define.substr(eq + 1);
     pos = end < text.size() ? end + 1 : end;
   }
-  ParsedScene parsed = loadSceneString(text.substr(pos), "<fuzz>", baseDir, defines, PluginRegistry::builtin());
+  ParsedScene parsed;
+  try {
+    parsed = loadSceneString(text.substr(pos), "<fuzz>", baseDir, defines, PluginRegistry::builtin());
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    // A malformed -D name is the command line's error, which the loader reports as such.
+    if (std::string(e.what()).rfind("-D ", 0) == 0) throw InputError({"<command line>", 0}, e.what());
+    throw;
+  }
   Scene scene(parsed, {"<fuzz>", 0});
 }
 

@@ -13,7 +13,7 @@ namespace columba::fuzz {
 
 // Scene XML through loadSceneString and Scene construction. Lines at the start of the form
 // `-Dname=value` are -D defines; the rest is the XML. Relative file names resolve against
-// `baseDir`.
+// `baseDir`. A malformed -D name (the command line's error) is reported as an InputError.
 void sceneFromBytes(const uint8_t* data, size_t size, const std::string& baseDir);
 // Mesh PLY (readPlyMesh, then a TriangleMesh).
 void plyMeshFromBytes(const uint8_t* data, size_t size);
