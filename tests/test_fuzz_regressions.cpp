@@ -14,6 +14,8 @@
 
 #include "core/error.h"
 #include "fuzz_targets.h"
+#include "core/transform.h"
+#include "shapes/triangle_mesh.h"
 
 namespace fs = std::filesystem;
 
@@ -66,6 +68,28 @@ TEST(FuzzRegressions, EveryInputIsReadOrRejected) {
     }
   }
   std::printf("replayed %zu inputs\n", replayed);
+}
+
+// Found by the ply_mesh fuzzer: finite coordinates whose triangle area overflows float made
+// the area distribution throw std::invalid_argument instead of an error naming the mesh.
+TEST(FuzzRegressions, TriangleAreaOverflowingFloatIsAnInputError) {
+  columba::MeshData mesh;
+  mesh.positions = {columba::Vec3(-2.6e33f, 0, 0), columba::Vec3(1, 0, 0), columba::Vec3(0, 1e33f, 0)};
+  mesh.indices = {0, 1, 2};
+  try {
+    columba::TriangleMesh shape(mesh, columba::Transform(), false, false, {"huge.ply", 0});
+    FAIL() << "no error";
+  } catch (const columba::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.ply: triangle 0 is too large"), std::string::npos) << e.what();
+  }
+}
+
+// Found by the scene fuzzer: the harness passes -D names as the command line would; a malformed
+// one is the command line's error and must not be mistaken for a crash.
+TEST(FuzzRegressions, MalformedDefineNameIsAnError) {
+  std::string input = "-D \"area\"rs=1\n<scene version=\"3.0.0\"/>";
+  EXPECT_THROW(columba::fuzz::sceneFromBytes(reinterpret_cast<const uint8_t*>(input.data()), input.size(), "."),
+               columba::InputError);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "shapes/triangle_mesh.h"
 
+#include <cmath>
+
 #include "core/sampling.h"
 #include "emitters/emitter.h"
 #include "scene/plugin_registry.h"
@@ -29,7 +31,10 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
     const Vec3& a = mesh_.positions[mesh_.indices[3 * t]];
     areas[t] = 0.5f * length(cross(mesh_.positions[mesh_.indices[3 * t + 1]] - a, mesh_.positions[mesh_.indices[3 * t + 2]] - a));
     area_ += areas[t];
+    if (!std::isfinite(areas[t]))
+      throw InputError(where, "triangle " + std::to_string(t) + " is too large: its area overflows single precision");
   }
+  if (!std::isfinite(area_)) throw InputError(where, "the mesh's total area overflows single precision");
   if (area_ > 0.0f) triangleByArea_ = Distribution1D(std::move(areas));
   faceFrames_.resize(primitiveCount());
   for (size_t t = 0; t < faceFrames_.size(); ++t) faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), dpdu(t));
