@@ -14,6 +14,10 @@ struct RenderSettings {
   uint64_t seed = 0;
   int threads = 0;          // 0: all hardware threads
   const std::atomic<bool>* cancel = nullptr;  // set to stop early (checked before every sample); finished tiles are kept
+  // Radiance per wavelength bin besides RGB (Image::spectral): `spectralBins` equal bins over
+  // [spectralMin, spectralMax] nm, each pixel's mean of the bin's mean radiance. 0: RGB only.
+  int spectralBins = 0;
+  float spectralMin = 400.0f, spectralMax = 700.0f;
   // Called from worker threads as tiles finish (done, total); must be thread-safe.
   std::function<void(int, int)> onTileDone;
 };

@@ -1,0 +1,43 @@
+// Spectral renders: radiance per wavelength bin beside RGB, checked on a diffuse plane under a light
+// of known spectrum (closed form: L(lambda) = albedo E(lambda) / pi).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include "render_test_support.h"
+
+using namespace columba;
+using namespace columba::testing;
+
+TEST(SpectralRender, DiffusePlaneReturnsTheLightsSpectrumInItsBins) {
+  // A tabulated irradiance (taken as given, not times D65), linear in wavelength, so each bin's
+  // mean is its value at the bin's centre: E = 1 + (lambda - 400) / 300 * 2.
+  const float albedo = 0.6f;
+  std::string xml = R"(<scene version="3.0.0"><integrator type="direct"/>
+    <sensor type="perspective"><float name="fov" value="1"/>
+      <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+      <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
+      <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
+    <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
+      <bsdf type="diffuse"><float name="reflectance" value="0.6"/></bsdf></shape>
+    <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
+      <spectrum name="irradiance" value="400:1, 700:3"/></emitter>
+    </scene>)";
+  RenderSettings settings;
+  settings.spectralBins = 6;
+  Image image = renderSceneString(xml, settings);
+  ASSERT_EQ(image.spectral.count(), 6u);
+  ASSERT_EQ(image.spectral.values.size(), size_t(8 * 8 * 6));
+  for (int b = 0; b < 6; ++b) {
+    float centre = image.spectral.centres[b];
+    EXPECT_FLOAT_EQ(centre, 425.0f + 50.0f * b);
+    double mean = 0.0;
+    for (int p = 0; p < 64; ++p) mean += image.spectral.values[size_t(p) * 6 + b] / 64.0;
+    float expected = albedo * (1.0f + (centre - 400.0f) / 150.0f) / kPi;
+    std::printf("bin %d (%.0f nm): %.5f, closed form %.5f\n", b, centre, mean, expected);
+    EXPECT_NEAR(mean, expected, 0.02 * expected) << centre;
+  }
+  // RGB is unchanged by asking for bins: the same render without them is bit-identical.
+  Image rgbOnly = renderSceneString(xml);
+  EXPECT_EQ(image.rgb, rgbOnly.rgb);
+  EXPECT_EQ(rgbOnly.spectral.count(), 0u);
+}
