@@ -3,7 +3,7 @@
 (scenes/feather_linear_light.xml): render a frame per light angle and plot the feather's colour
 against the angle.
 
-    python3 strip_light_sequence.py [-o OUT_DIR] [--res 96] [--spp 8] [--angles -40 -20 0 20 40]
+    python3 strip_light_sequence.py [-o OUT_DIR] [--res 128] [--spp 16] [--angles -40 -20 0 20 40]
 
 Writes strip_light_sequence.png (the frames and the colour curve) and one EXR per angle.
 """
@@ -23,8 +23,8 @@ SCENE = HERE.parent / "scenes" / "feather_linear_light.xml"  # the source tree a
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("-o", "--out", type=pathlib.Path, default=pathlib.Path("."))
-parser.add_argument("--res", type=int, default=96)
-parser.add_argument("--spp", type=int, default=8)
+parser.add_argument("--res", type=int, default=128)
+parser.add_argument("--spp", type=int, default=16)
 parser.add_argument("--angles", type=float, nargs="+", default=[-45, -30, -15, 0, 15, 30, 45])
 args = parser.parse_args()
 args.out.mkdir(parents=True, exist_ok=True)
