@@ -10,6 +10,7 @@
 #include "bsdfs/barbule_measurement.h"
 #include "core/version.h"
 #include "plot/canvas.h"
+#include "plot/hemisphere_chart.h"
 #include "plot/line_plot.h"
 #include "scene/xml_values.h"
 
@@ -86,7 +87,14 @@ void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs:
         {"Parameters", describeParameters(o)}};
     fs::path exr = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".exr");
     fs::path png = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".png");
-    writeEXRAndPNG(exr.string(), png.string(), image, metadata);
+    writeEXR(exr.string(), image, metadata);
+    // The PNG is the chart a person reads; the EXR holds the data.
+    HemisphereChart chart{fmt::format("Scatterometer, light at {:g} deg", angle),
+                          fmt::format("light phi {:g} deg | f cos(theta_camera) per sr under a D65 beam | {}", o.phiDegrees,
+                                      describeParameters(o))};
+    chart.lightTheta = degToRad(angle);
+    chart.lightPhi = degToRad(o.phiDegrees);
+    writePNG(png.string(), drawHemisphereChart(image, chart), metadata);
     written.push_back(exr.string());
     written.push_back(png.string());
   }
