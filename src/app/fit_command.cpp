@@ -25,6 +25,7 @@ struct FitOptions {
   int maxEvaluations = 300;
   double maxSeconds = 120.0;
   double rise = 0.1;
+  std::string global = "GN_CRS2_LM";
 };
 
 Defines parseDefines(const std::vector<std::string>& items) {
@@ -90,12 +91,13 @@ int runFitCommand(const FitOptions& o) {
   FitSettings fit;
   fit.optimizer.maxEvaluations = o.maxEvaluations;
   fit.optimizer.maxSeconds = o.maxSeconds;
+  fit.optimizer.globalAlgorithm = o.global;
   fit.profileRise = o.rise;
   fit.progress = terminalProgress(parameters);
   nlohmann::json settings = {{"vary", o.vary},         {"defines", o.defines},
                              {"loss", o.loss},         {"scale", o.scale},
                              {"max_evaluations", o.maxEvaluations}, {"max_seconds", o.maxSeconds},
-                             {"optimizer", "NLopt GN_DIRECT, then LN_BOBYQA (LN_NELDERMEAD for one parameter) from its 3 best distinct points"}};
+                             {"optimizer", "NLopt " + o.global + ", then LN_BOBYQA (LN_NELDERMEAD for one parameter) from its 3 best distinct points"}};
   FitResult result;
   if (!o.spectraPath.empty()) {
     SpectraFitSettings s;
@@ -175,6 +177,8 @@ void addFitCommand(CLI::App& app) {
   cmd->add_option("--loss", o->loss, "mse, log or relative (squared differences, averaged)")->capture_default_str();
   cmd->add_option("--max-evals", o->maxEvaluations, "Evaluation budget of the optimiser")->capture_default_str();
   cmd->add_option("--max-seconds", o->maxSeconds, "Time budget of the optimiser (s)")->capture_default_str();
+  cmd->add_option("--global", o->global, "NLopt algorithm of the global stage (GN_CRS2_LM, GN_DIRECT, GN_DIRECT_L, ...)")
+      ->capture_default_str();
   cmd->add_option("--rise", o->rise,
                   "Uncertainty intervals: where the loss stays below (1 + rise) x its minimum")
       ->capture_default_str();

@@ -92,7 +92,7 @@ Image profilesImage(const FitResult& result) {
     const FitParameter& p = result.parameters[i];
     const LossProfile& profile = result.profiles[i];
     LinePlot plot;
-    plot.title = fmt::format("{} = {:.4g}, interval [{:.4g}, {:.4g}]", p.name, result.values[i], profile.lower,
+    plot.title = fmt::format("{} = {:.4g} in [{:.4g}, {:.4g}]", p.name, result.values[i], profile.lower,
                              profile.upper);
     plot.subtitle = fmt::format("loss < (1 + {:g}) x minimum inside the interval (dashed)", result.profileRise);
     plot.xLabel = p.name;
@@ -104,17 +104,18 @@ Image profilesImage(const FitResult& result) {
     plot.xMin = float(profile.values.front());
     plot.xMax = float(profile.values.back());
     if (!(plot.xMax > plot.xMin)) plot.xMax = plot.xMin + 1.0f;
-    plot.yMin = 0.0f;
-    plot.yMax = float(std::max(highest, threshold) * 1.05);
-    if (!(plot.yMax > 0.0f)) plot.yMax = 1.0f;
+    // From just below the minimum, so that a rise of a few per cent is visible.
+    plot.yMin = float(result.loss.loss * 0.95);
+    plot.yMax = float(std::max(highest, threshold) * 1.02);
+    if (!(plot.yMax > plot.yMin)) plot.yMax = plot.yMin + 1.0f;
     PlotSeries level{"threshold", {Vec2(plot.xMin, float(threshold)), Vec2(plot.xMax, float(threshold))},
                      seriesColours()[1], true};
     PlotSeries interval{"interval",
-                        {Vec2(float(profile.lower), 0.0f), Vec2(float(profile.lower), plot.yMax),
-                         Vec2(float(profile.upper), plot.yMax), Vec2(float(profile.upper), 0.0f)},
+                        {Vec2(float(profile.lower), plot.yMin), Vec2(float(profile.lower), plot.yMax),
+                         Vec2(float(profile.upper), plot.yMax), Vec2(float(profile.upper), plot.yMin)},
                         seriesColours()[2], true};
     plot.series = {loss, level, interval};
-    entries.push_back({renderLinePlot(plot, 640, 420), p.name});
+    entries.push_back({renderLinePlot(plot, 1000, 640), p.name});
   }
   return makeContactSheet(entries, std::min<int>(2, int(entries.size())), 640, "Loss profiles around the optimum");
 }
@@ -161,7 +162,7 @@ Image compareImage(const Image& target, const Image& render, double scale, const
   const std::vector<std::pair<std::string, const Image*>> panels = {
       {"target", &shownTarget},
       {fmt::format("fitted render x {:.4g}", scale), &shownRender},
-      {"fitted - target (mean of RGB)", &difference}};
+      {"fit - target, RGB mean", &difference}};
   for (size_t i = 0; i < panels.size(); ++i) {
     const int x = margin + int(i) * (panel + margin);
     canvas.text(float(x), float(margin), panels[i].first, kBlack);

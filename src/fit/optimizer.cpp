@@ -138,8 +138,12 @@ void minimise(const std::vector<FitParameter>& parameters, const OptimizerSettin
   std::vector<double> start;
   for (const FitParameter& p : parameters) start.push_back(p.startValue());
   log.evaluate(start, "start");
+  nlopt_srand(1);  // the stochastic global algorithms (CRS, ISRES...) draw the same points every run
   const int globalEvaluations = int(std::floor(settings.globalShare * (settings.maxEvaluations - 1)));
-  runStage(NLOPT_GN_DIRECT, "global", cube, cube.toUnit(start), globalEvaluations,
+  const nlopt_algorithm global = nlopt_algorithm_from_string(settings.globalAlgorithm.c_str());
+  if (int(global) < 0 || settings.globalAlgorithm.rfind("GN_", 0) != 0)
+    throw std::runtime_error("'" + settings.globalAlgorithm + "' is not a global derivative-free NLopt algorithm (GN_...)");
+  runStage(global, "global", cube, cube.toUnit(start), globalEvaluations,
            settings.globalShare * settings.maxSeconds - log.seconds(), log);
   // NLopt's BOBYQA needs two dimensions or more; one parameter gets Nelder-Mead.
   const nlopt_algorithm local = parameters.size() > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_NELDERMEAD;

@@ -19,6 +19,8 @@ struct OptimizerSettings {
   // Local searches, from the best points of the global stage that are at least 0.15 apart in
   // the unit cube of the bounds.
   int localStarts = 3;
+  // The global stage's NLopt algorithm, by NLopt's name (GN_DIRECT, GN_DIRECT_L, GN_CRS2_LM, ...).
+  std::string globalAlgorithm = "GN_CRS2_LM";
 };
 
 struct Evaluation {
