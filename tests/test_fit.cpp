@@ -1,0 +1,205 @@
+// `columba fit`'s library: the loss and its scale, parameter parsing, and recovery of known
+// barbule parameters from perturbed renders and spectra.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "fit/fit_parameter.h"
+#include "fit/scaled_loss.h"
+#include "fit/scene_fit.h"
+#include "fit/spectra_fit.h"
+
+namespace columba {
+namespace {
+
+TEST(FitParameter, ParsesBoundsAndStart) {
+  FitParameter p = parseFitParameter("height=0.4:0.7:0.5");
+  EXPECT_EQ(p.name, "height");
+  EXPECT_DOUBLE_EQ(p.lower, 0.4);
+  EXPECT_DOUBLE_EQ(p.upper, 0.7);
+  EXPECT_DOUBLE_EQ(p.startValue(), 0.5);
+  EXPECT_DOUBLE_EQ(parseFitParameter("b=0.1:0.3").startValue(), 0.2);
+  for (const char* bad : {"height", "=1:2", "h=1", "h=2:1", "h=1:2:3", "h=1:x", "h=1:2:3:4"})
+    EXPECT_THROW(parseFitParameter(bad), std::runtime_error) << bad;
+}
+
+TEST(ScaledLoss, FreeScaleIsTheLeastSquaresExposure) {
+  std::vector<float> model = {1.0f, 2.0f, 3.0f, 0.5f};
+  std::vector<float> target;
+  for (float m : model) target.push_back(1.7f * m);
+  LossValue free = ScaledLoss(target, {}, LossKind::MSE, ScaleMode::Free)(model);
+  EXPECT_NEAR(free.scale, 1.7, 1e-6);
+  EXPECT_NEAR(free.loss, 0.0, 1e-10);
+  LossValue fixed = ScaledLoss(target, {}, LossKind::MSE, ScaleMode::Fixed)(model);
+  EXPECT_DOUBLE_EQ(fixed.scale, 1.0);
+  EXPECT_NEAR(fixed.loss, 0.49 * (1 + 4 + 9 + 0.25) / 4, 1e-5);
+  // A zero weight leaves a value out.
+  std::vector<float> off = target;
+  off[3] = 100.0f;
+  EXPECT_NEAR(ScaledLoss(off, {1, 1, 1, 0}, LossKind::Relative, ScaleMode::Free)(model).loss, 0.0, 1e-10);
+  EXPECT_GT(ScaledLoss(off, {}, LossKind::Log, ScaleMode::Free)(model).loss, 0.1);
+}
+
+// The scatterometer set-up of scenes/bsdf_visualization_oblique.xml with the barbule's film
+// thickness, b, mu and H as variables, at 32 x 32 pixels.
+const char* kScene = R"(<scene version="3.0.0">
+  <default name="height" value="0.58"/> <default name="b" value="0.25"/>
+  <default name="mu" value="-0.35"/> <default name="H" value="1.25"/>
+  <default name="radiance" value="30"/>
+  <integrator type="direct">
+    <integer name="emitter_samples" value="1"/> <integer name="bsdf_samples" value="0"/>
+  </integrator>
+  <sensor type="bsdfvisualizer">
+    <film type="hdrfilm"> <integer name="width" value="8"/> <integer name="height" value="8"/> </film>
+    <sampler type="ldsampler"> <integer name="sample_count" value="4"/> </sampler>
+  </sensor>
+  <shape type="rectangle">
+    <bsdf type="barbulebsdfev">
+      <float name="height" value="$height"/> <float name="b" value="$b"/>
+      <float name="mu" value="$mu"/> <float name="H" value="$H"/>
+    </bsdf>
+    <transform name="to_world"> <rotate z="1" angle="-50"/> </transform>
+  </shape>
+  <shape type="disk">
+    <transform name="to_world">
+      <scale x="0.1" y="0.1" z="1"/> <rotate x="1" angle="180"/> <translate z="1"/> <rotate y="1" angle="30"/>
+    </transform>
+    <emitter type="area"> <spectrum name="radiance" value="$radiance"/> </emitter>
+  </shape>
+</scene>)";
+
+std::string writeScene() {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "columba_test_fit_scene.xml";
+  std::ofstream(path) << kScene;
+  return path.string();
+}
+
+struct Truth {
+  double height, b, mu, H;
+};
+
+std::vector<FitParameter> barbuleParameters() {
+  return {parseFitParameter("height=0.4:0.7:0.55"), parseFitParameter("b=0.15:0.5:0.3"),
+          parseFitParameter("mu=-0.7:0.4:-0.1"), parseFitParameter("H=1.2:2.5:1.7")};
+}
+
+// Poisson-like noise: standard deviation `level` x sqrt(value x mean), so `level` relative noise at
+// the mean brightness; and an exposure the fit does not know.
+std::vector<float> perturb(std::vector<float> values, double exposure, double level, uint32_t seed) {
+  double mean = 0.0;
+  for (float v : values) mean += exposure * v / double(values.size());
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal;
+  for (float& v : values) {
+    const double scaled = exposure * v;
+    v = float(scaled + level * std::sqrt(std::max(scaled, 0.0) * mean) * normal(rng));
+  }
+  return values;
+}
+
+SceneFitSettings sceneSettings(const std::string& scene) {
+  SceneFitSettings s;
+  s.scenePath = scene;
+  s.target = Image(32, 32);
+  s.samplesPerPixel = 4;
+  s.threads = 2;
+  s.parameters = barbuleParameters();
+  s.fit.optimizer.maxEvaluations = 300;
+  s.fit.optimizer.maxSeconds = 30.0;
+  return s;
+}
+
+class ImageRecovery : public ::testing::TestWithParam<Truth> {};
+
+TEST_P(ImageRecovery, RecoversTheBarbuleFromANoisyRenderOfUnknownExposure) {
+  const Truth truth = GetParam();
+  SceneFitSettings s = sceneSettings(writeScene());
+  Image target = renderSceneWith(s, {truth.height, truth.b, truth.mu, truth.H});
+  const double exposure = 0.5 + 1.5 * (truth.height - 0.4) / 0.3;  // in [0.5, 2]
+  target.rgb = perturb(target.rgb, exposure, 0.02, 7);
+  s.target = target;
+  SceneFitResult result = fitScene(s);
+  const FitResult& r = result.fit;
+  // The film thickness is recovered to the issue's 0.005 um. From one 32 x 32 view at 4 spp, b, mu
+  // and H trade off against each other (a flatter, more tilted barbule looks alike), so these
+  // are held to what is achievable here (worst seen: b 0.08, mu 0.07, H 0.46), and the fit must be
+  // at least as good as the truth: the optimiser found the minimum, not a wrong basin.
+  EXPECT_NEAR(r.values[0], truth.height, 0.005);
+  EXPECT_NEAR(r.values[1], truth.b, 0.1);
+  EXPECT_NEAR(r.values[2], truth.mu, 0.1);
+  EXPECT_NEAR(r.values[3], truth.H, 0.5);
+  EXPECT_NEAR(r.loss.scale, exposure, 0.2 * exposure);
+  const double truthLoss = ScaledLoss(s.target.rgb, {}, LossKind::MSE, ScaleMode::Free)(
+                               renderSceneWith(s, {truth.height, truth.b, truth.mu, truth.H}).rgb).loss;
+  EXPECT_LE(r.loss.loss, truthLoss * 1.001);
+  // The intervals hold the fitted values and are narrow for these constrained parameters.
+  for (size_t i = 0; i < r.values.size(); ++i) {
+    EXPECT_LE(r.profiles[i].lower, r.values[i]);
+    EXPECT_GE(r.profiles[i].upper, r.values[i]);
+  }
+  EXPECT_LT(r.profiles[0].upper - r.profiles[0].lower, 0.05);
+  std::printf("truth %.3f %.3f %.3f %.3f -> fitted %.4f %.4f %.4f %.4f scale %.3f/%.3f, %d evaluations\n",
+              truth.height, truth.b, truth.mu, truth.H, r.values[0], r.values[1], r.values[2], r.values[3],
+              r.loss.scale, exposure, r.evaluations);
+  for (size_t i = 0; i < r.values.size(); ++i)
+    std::printf("  %-6s [%.4f, %.4f]\n", r.parameters[i].name.c_str(), r.profiles[i].lower, r.profiles[i].upper);
+}
+
+// The reference scenes' barbule (green and purple film), a round sparse one, a thin dense one and
+// an untilted one.
+INSTANTIATE_TEST_SUITE_P(ParameterSets, ImageRecovery,
+                         ::testing::Values(Truth{0.58, 0.25, -0.35, 1.25}, Truth{0.51, 0.25, -0.35, 1.4},
+                                           Truth{0.65, 0.45, 0.25, 2.2}, Truth{0.45, 0.18, -0.6, 1.5},
+                                           Truth{0.62, 0.35, 0.0, 1.8}));
+
+TEST(SceneFit, AnUnconstrainedParameterGetsAnIntervalReachingItsBounds) {
+  // With the exposure free, the light's radiance only scales the image: no image constrains it.
+  SceneFitSettings s = sceneSettings(writeScene());
+  s.parameters = {parseFitParameter("height=0.4:0.7:0.5"), parseFitParameter("radiance=5:100:20")};
+  s.target = renderSceneWith(s, {0.6, 30.0});
+  s.fit.optimizer.maxEvaluations = 60;
+  FitResult r = fitScene(s).fit;
+  EXPECT_NEAR(r.values[0], 0.6, 0.005);
+  EXPECT_TRUE(r.profiles[1].lowerAtBound && r.profiles[1].upperAtBound);
+  EXPECT_DOUBLE_EQ(r.profiles[1].lower, 5.0);
+  EXPECT_DOUBLE_EQ(r.profiles[1].upper, 100.0);
+  EXPECT_FALSE(r.profiles[0].lowerAtBound || r.profiles[0].upperAtBound);
+}
+
+TEST(SceneFit, NamesAVariableTheSceneDoesNotUse) {
+  SceneFitSettings s = sceneSettings(writeScene());
+  s.parameters = {parseFitParameter("thickness=0.4:0.7")};
+  try {
+    renderSceneWith(s, {0.5});
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("$thickness"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
+  // Specular spectra at three light angles, 400-700 nm every 5 nm, 2 % relative noise.
+  BarbuleParameters truth = barbuleParametersWith(BarbuleParameters{}, {{"height", 0.53}, {"b", 0.3}});
+  std::vector<SpectraSample> samples;
+  for (float theta : {10.0f, 30.0f, 50.0f})
+    for (float lambda = 400.0f; lambda <= 700.0f; lambda += 5.0f)
+      samples.push_back({theta, 0.0f, theta, 180.0f, lambda, 0.0f});
+  std::vector<float> clean = modelSpectra(truth, samples);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> normal;
+  for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = clean[i] * (1.0f + 0.02f * normal(rng));
+  SpectraFitSettings s;
+  s.samples = samples;
+  s.parameters = {parseFitParameter("height=0.4:0.7:0.62"), parseFitParameter("b=0.15:0.5:0.2")};
+  s.fit.optimizer.maxEvaluations = 200;
+  SpectraFitResult r = fitSpectra(s);
+  EXPECT_NEAR(r.fit.values[0], 0.53, 0.003);
+  EXPECT_LT(r.fit.profiles[0].upper - r.fit.profiles[0].lower, 0.02);
+  std::printf("spectra: height 0.53 -> %.4f [%.4f, %.4f], b 0.3 -> %.4f, %d evaluations\n", r.fit.values[0],
+              r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.values[1], r.fit.evaluations);
+}
+
+}  // namespace
+}  // namespace columba
