@@ -146,3 +146,11 @@ def test_shape_errors():
         bsdf.eval(wi, wi, np.full(3, 500))
     with pytest.raises(ValueError, match=r"u2 must have shape \(N, 2\)"):
         bsdf.sample(wi, np.zeros(4), np.zeros(4), np.full(4, 500))
+
+
+def test_spectral_hemisphere_reads_back(cli, tmp_path):
+    hemisphere(cli, tmp_path, "--angles", "20", "--res", "16", "--spectral", "--bins", "4")
+    rgb, centres, bands = columba.read_image(tmp_path / "bsdf_hemisphere_theta20.exr", spectral=True)
+    np.testing.assert_array_equal(rgb, columba.BarbuleBSDF().scatterometer_image(20, resolution=16))
+    np.testing.assert_allclose(centres, [437.5, 512.5, 587.5, 662.5])
+    assert bands.shape == (16, 16, 4) and bands.dtype == np.float32 and bands.max() > 0
