@@ -330,3 +330,25 @@ TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirData) {
   CommandResult preset = run("bsdf --preset dove-blue -o " + dir_.string());
   EXPECT_NE(preset.output.find("dove-green, dove-purple"), std::string::npos) << preset.output;
 }
+
+TEST_F(CliTest, MontageTakesOneLabelPerImage) {
+  columba::Image tile(4, 4);
+  const std::string a = (dir_ / "a.png").string(), b = (dir_ / "b.png").string();
+  columba::writePNG(a, tile);
+  columba::writePNG(b, tile);
+  const std::string sheet = (dir_ / "sheet.png").string();
+  CommandResult plain = run("montage -o " + sheet + " " + a + " " + b);
+  ASSERT_EQ(plain.status, 0) << plain.output;
+  const int plainHeight = columba::readPNG(sheet).height;
+  // Long labels wrap: the sheet grows by their extra lines.
+  CommandResult labelled = run("montage -o " + sheet +
+                               " --label 'a rather long caption that cannot fit in one line of a small tile' --label b " +
+                               a + " " + b);
+  ASSERT_EQ(labelled.status, 0) << labelled.output;
+  EXPECT_GT(columba::readPNG(sheet).height, plainHeight);
+  std::string labels = write("labels.txt", "first\nsecond\n");
+  EXPECT_EQ(run("montage -o " + sheet + " --labels " + labels + " " + a + " " + b).status, 0);
+  CommandResult mismatch = run("montage -o " + sheet + " --label only-one " + a + " " + b);
+  EXPECT_NE(mismatch.status, 0);
+  EXPECT_NE(mismatch.output.find("1 labels for 2 images"), std::string::npos) << mismatch.output;
+}

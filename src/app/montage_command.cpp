@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
 
 #include "plot/contact_sheet.h"
 
@@ -14,17 +16,35 @@ struct MontageOptions {
   int columns = 4;
   int tileWidth = 320;
   std::string title;
+  std::vector<std::string> labels;  // one per image, in order; the file name's stem when none
+  std::string labelsFile;           // one label per line
 };
+
+// The labels given with --label or in --labels FILE, one per image.
+std::vector<std::string> readLabels(const MontageOptions& options) {
+  std::vector<std::string> labels = options.labels;
+  if (!options.labelsFile.empty()) {
+    if (!labels.empty()) throw std::runtime_error("give the labels either with --label or with --labels, not both");
+    std::ifstream in(options.labelsFile);
+    if (!in) throw std::runtime_error("cannot read the labels file '" + options.labelsFile + "'");
+    for (std::string line; std::getline(in, line);) labels.push_back(line);
+  }
+  if (!labels.empty() && labels.size() != options.inputs.size())
+    throw std::runtime_error(std::to_string(labels.size()) + " labels for " + std::to_string(options.inputs.size()) +
+                             " images: give one label per image");
+  return labels;
+}
 
 void runMontage(const MontageOptions& options) {
   const ImageFormat format = checkOutputImagePath(options.output);  // before reading the inputs
+  const std::vector<std::string> labels = readLabels(options);
   std::vector<ContactSheetEntry> entries;
   for (const std::string& path : options.inputs) {
     std::filesystem::path p(path);
     std::string extension = p.extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     Image image = extension == ".exr" ? readEXR(path) : readPNG(path);
-    entries.push_back({std::move(image), p.stem().string()});
+    entries.push_back({std::move(image), labels.empty() ? p.stem().string() : labels[entries.size()]});
   }
   Image sheet = makeContactSheet(entries, options.columns, options.tileWidth, options.title);
   std::string inputs;
@@ -42,7 +62,11 @@ void addMontageCommand(CLI::App& app) {
   cmd->add_option("-o,--output", options->output, "Contact sheet, .png or .exr")->required();
   cmd->add_option("--columns", options->columns, "Tiles per row")->check(CLI::Range(1, 64));
   cmd->add_option("--tile", options->tileWidth, "Tile width in pixels")->check(CLI::Range(16, 4096));
-  cmd->add_option("--title", options->title, "Title above the sheet");
+  cmd->add_option("--title", options->title, "Title above the sheet (wrapped to its width)");
+  cmd->add_option("--label", options->labels, "Label of the next image, in order (repeat once per image)")
+      ->allow_extra_args(false);
+  cmd->add_option("--labels", options->labelsFile, "File with one label per line, one per image")
+      ->check(CLI::ExistingFile);
   cmd->callback([options] { runMontage(*options); });
 }
 

@@ -2,6 +2,7 @@
 // A small raster canvas for charts: filled rectangles, lines and bitmap text (stb_easy_font),
 // drawn in linear RGB into an Image so the usual PNG writer encodes it.
 #include <string>
+#include <vector>
 #include "core/vector.h"
 #include "render/image.h"
 
@@ -25,6 +26,10 @@ class Canvas {
   void blend(int x, int y, const Vec3& colour, float coverage);
   Image image_;
 };
+
+// `text` broken into lines no wider than `maxWidth` pixels at `scale`, at " | " separators or
+// else at spaces.
+std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale);
 
 // sRGB-encoded colour components (0..1) to the linear values the canvas stores.
 Vec3 srgbColour(float r, float g, float b);

@@ -29,26 +29,36 @@ Image resizeImage(const Image& image, int width, int height) {
 Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
                        const std::string& title) {
   if (entries.empty() || columns < 1 || tileWidth < 8) throw std::invalid_argument("empty contact sheet");
-  const int margin = 12, labelHeight = 28, titleHeight = title.empty() ? 0 : 44;
+  const int margin = 12;
   int tileHeight = 0;
   for (const auto& e : entries) tileHeight = std::max(tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
   const int rows = (int(entries.size()) + columns - 1) / columns;
   const int width = margin + columns * (tileWidth + margin);
+  // Titles and labels wrap to their width; a label keeps at most kLabelLines lines.
+  constexpr size_t kLabelLines = 4;
+  const std::vector<std::string> titleLines = wrapText(title, float(width - 2 * margin), 3);
+  const int titleLineHeight = int(Canvas::textHeight(3)) + 8, labelLineHeight = int(Canvas::textHeight(2)) + 4;
+  const int titleHeight = titleLines.empty() ? 0 : 12 + int(titleLines.size()) * titleLineHeight;
+  std::vector<std::vector<std::string>> labels;
+  size_t labelLines = 1;
+  for (const auto& e : entries) {
+    labels.push_back(wrapText(e.label, float(tileWidth), 2));
+    if (labels.back().size() > kLabelLines) labels.back().resize(kLabelLines);
+    labelLines = std::max(labelLines, labels.back().size());
+  }
+  const int labelHeight = 12 + int(labelLines) * labelLineHeight;
   const int height = titleHeight + margin + rows * (tileHeight + labelHeight + margin);
   const Vec3 background = srgbColour(0.12f, 0.12f, 0.12f), ink = srgbColour(0.92f, 0.92f, 0.92f);
   Canvas canvas(width, height, background);
-  if (!title.empty()) canvas.text(margin, 12, title, ink, 3);
+  for (size_t l = 0; l < titleLines.size(); ++l) canvas.text(margin, 12 + float(l * titleLineHeight), titleLines[l], ink, 3);
   for (size_t i = 0; i < entries.size(); ++i) {
     const Image& src = entries[i].image;
     int h = std::max(1, int(double(tileWidth) * src.height / src.width));
     int x0 = margin + int(i % columns) * (tileWidth + margin);
     int y0 = titleHeight + margin + int(i / columns) * (tileHeight + labelHeight + margin);
     canvas.drawImage(x0, y0, resizeImage(src, tileWidth, h));
-    // Labels shrink, then shorten, to stay within their tile; a wide image leaves its tile's foot empty.
-    std::string label = entries[i].label;
-    int scale = Canvas::textWidth(label, 2) <= tileWidth ? 2 : 1;
-    while (label.size() > 4 && Canvas::textWidth(label, scale) > tileWidth) label = label.substr(0, label.size() - 4) + "...";
-    canvas.text(float(x0), float(y0 + h + 8), label, ink, scale);  // right under its image
+    for (size_t l = 0; l < labels[i].size(); ++l)  // right under its image
+      canvas.text(float(x0), float(y0 + h + 8 + int(l) * labelLineHeight), labels[i][l], ink, 2);
   }
   return canvas.image();
 }

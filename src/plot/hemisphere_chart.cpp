@@ -6,7 +6,6 @@
 #include <cmath>
 #include "core/math.h"
 #include "plot/canvas.h"
-#include "plot/line_plot.h"
 
 namespace columba {
 

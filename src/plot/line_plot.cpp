@@ -6,41 +6,6 @@
 
 namespace columba {
 
-std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale) {
-  // Pieces end after a " | " separator (kept at the line's end, trimmed) or, failing that, a space.
-  std::vector<std::string> lines;
-  std::string line;
-  size_t start = 0;
-  auto flush = [&] {
-    while (!line.empty() && (line.back() == ' ' || line.back() == '|')) line.pop_back();
-    if (!line.empty()) lines.push_back(line);
-    line.clear();
-  };
-  while (start < text.size()) {
-    size_t bar = text.find(" | ", start);
-    size_t end = bar == std::string::npos ? text.size() : bar + 3;
-    std::string piece = text.substr(start, end - start);
-    if (!line.empty() && Canvas::textWidth(line + piece, scale) > maxWidth) flush();
-    if (Canvas::textWidth(piece, scale) > maxWidth) {
-      // A piece too wide on its own: at spaces.
-      size_t from = 0;
-      while (from < piece.size()) {
-        size_t space = piece.find(' ', from);
-        size_t to = space == std::string::npos ? piece.size() : space + 1;
-        std::string word = piece.substr(from, to - from);
-        if (!line.empty() && Canvas::textWidth(line + word, scale) > maxWidth) flush();
-        line += word;
-        from = to;
-      }
-    } else {
-      line += piece;
-    }
-    start = end;
-  }
-  flush();
-  return lines;
-}
-
 std::vector<float> niceTicks(float lo, float hi, int target) {
   std::vector<float> ticks;
   if (!(hi > lo) || target < 1) return ticks;

@@ -25,10 +25,6 @@ struct LinePlot {
 
 Image renderLinePlot(const LinePlot& plot, int width, int height);
 
-// `text` broken into lines no wider than `maxWidth` pixels at `scale`, at " | " separators or
-// else at spaces.
-std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale);
-
 // Round tick positions covering [lo, hi], about `target` of them.
 std::vector<float> niceTicks(float lo, float hi, int target);
 
