@@ -17,10 +17,17 @@ fi
 "$columba" feather --single --binary -o "$out/feather.ply"
 "$columba" feather --neck --binary -o "$out/neck.ply"
 
+# Every tile of the contact sheet is captioned with what it reproduces.
 images=()
+captions=()
+declare -A visCaption=(
+  [bsdf_visualization_normal]="Paper, 'Measurement': scatterometer image, light near the normal (emitter sampling)"
+  [bsdf_visualization_oblique]="Paper, 'Measurement': scatterometer image, oblique light (emitter sampling)"
+  [bsdf_visualization_sampled]="Paper, 'Measurement': scatterometer image under uniform light (BSDF sampling)")
 for scene in bsdf_visualization_normal bsdf_visualization_oblique bsdf_visualization_sampled; do
   "$columba" render "$root/scenes/$scene.xml" "${vis[@]}" -o "$out/$scene.exr"
   images+=("$out/$scene.png")
+  captions+=("${visCaption[$scene]}")
 done
 for angle in -10 0 10 20 30 40 50 60; do
   name=$(printf 'la%03d' "$angle")
@@ -28,11 +35,27 @@ for angle in -10 0 10 20 30 40 50 60; do
   "$columba" render "$root/scenes/feather_linear_light.xml" -D feather="$out/feather.ply" -D angle="$angle" \
     "${la[@]}" -o "$out/$name.exr"
   images+=("$out/$name.png")
+  captions+=("Paper, 'Rendering': one feather under a strip light at $angle deg")
 done
+declare -A neckCaption=(
+  [neck_omnidirectional]="Paper, 'Rendering' (b): neck under omnidirectional light"
+  [neck_direction1]="Paper, 'Rendering' (c): neck under directional light, set-up 1"
+  [neck_direction2]="Paper, 'Rendering' (d): neck under directional light, set-up 2")
 for scene in neck_omnidirectional neck_direction1 neck_direction2; do
   "$columba" render "$root/scenes/$scene.xml" -D feathers="$out/neck.ply" "${neck[@]}" -o "$out/$scene.exr"
   images+=("$out/$scene.png")
+  captions+=("${neckCaption[$scene]}")
 done
-"$columba" montage -o "$out/contact_sheet.png" --columns 4 --tile 320 \
-  --title "Columba: rock dove barbule BSDF, feather and neck" "${images[@]}"
+# The barbule model's spectra: reflectance factor in the mirror direction and directional
+# reflectance, for green and purple barbules.
+for preset in dove-green dove-purple; do
+  mkdir -p "$out/bsdf-$preset"
+  "$columba" bsdf --preset "$preset" --mode specular,spectra -o "$out/bsdf-$preset" > "$out/bsdf-$preset/table.txt"
+  images+=("$out/bsdf-$preset/bsdf_specular.png" "$out/bsdf-$preset/bsdf_spectra.png")
+  captions+=("Barbule BSDF ($preset): reflectance factor in the mirror direction, light at 0-60 deg"
+             "Barbule BSDF ($preset): directional reflectance of R and TRT, light at 0-60 deg")
+done
+printf '%s\n' "${captions[@]}" > "$out/captions.txt"
+"$columba" montage -o "$out/contact_sheet.png" --columns 4 --tile 320 --labels "$out/captions.txt" \
+  --title "Columba: the rock dove barbule BSDF, a feather and a neck, as in Huang et al. 2022" "${images[@]}"
 echo "Figures in $out (contact sheet: $out/contact_sheet.png)"
