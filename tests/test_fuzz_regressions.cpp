@@ -92,4 +92,19 @@ TEST(FuzzRegressions, MalformedDefineNameIsAnError) {
                columba::InputError);
 }
 
+// Found by the EXR fuzzer: OpenEXR allocates a header attribute at its declared size before
+// reading it, so a 40-byte file declaring a 2 GB string took seconds and gigabytes to reject.
+TEST(FuzzRegressions, ExrAttributeLargerThanTheFileIsAnErrorBeforeOpenEXRAllocatesIt) {
+  std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+  bytes += std::string("comments\0string\0", 16) + std::string("\xf0\xff\xff\x7f", 4) + "abcd";
+  try {
+    columba::fuzz::exrEnvmapFromBytes(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    FAIL() << "no error";
+  } catch (const columba::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'comments' declares 2147483632 bytes but the file has 4 bytes left"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace

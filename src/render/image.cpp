@@ -270,8 +270,44 @@ ImageFormat checkOutputImagePath(const std::string& path) {
   return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
 }
 
+// OpenEXR allocates every header attribute at the size the file declares before reading it (a
+// string attribute declaring 2 GB takes seconds and gigabytes): each declared size is checked
+// against the bytes the file has left first. Files that are not EXR, or end early, are left to
+// OpenEXR to report.
+static void checkEXRAttributeSizes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return;
+  const std::streamoff fileSize = in.tellg();
+  in.seekg(0);
+  unsigned char start[8];
+  if (!in.read(reinterpret_cast<char*>(start), 8) || start[0] != 0x76 || start[1] != 0x2f || start[2] != 0x31 ||
+      start[3] != 0x01)
+    return;
+  const bool multipart = start[5] & 0x10;  // bit 12 of the version field
+  bool headerEmpty = true;
+  for (std::string name, type; std::getline(in, name, '\0');) {
+    if (name.empty()) {  // the end of a header; a multi-part file ends with an empty header
+      if (!multipart || headerEmpty) return;
+      headerEmpty = true;
+      continue;
+    }
+    headerEmpty = false;
+    unsigned char size[4];
+    if (!std::getline(in, type, '\0') || !in.read(reinterpret_cast<char*>(size), 4)) return;
+    const int32_t declared = int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 |
+                                     uint32_t(size[3]) << 24);
+    const std::streamoff left = fileSize - in.tellg();
+    if (declared < 0 || declared > left)
+      throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' declares " +
+                                      std::to_string(declared) + " bytes but the file has " + std::to_string(left) +
+                                      " bytes left");
+    in.seekg(declared, std::ios::cur);
+  }
+}
+
 Image readEXR(const std::string& path) {
   try {
+    checkEXRAttributeSizes(path);
     Imf::InputFile file(path.c_str());
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
