@@ -15,6 +15,24 @@ inline Image renderSceneString(const std::string& xml, const RenderSettings& set
   return image;
 }
 
+// A diffuse plane of `albedo` filling the view of an 8 x 8 camera straight above it (1 degree
+// field of view), lit straight from above by a directional light whose irradiance is the
+// element `irradiance` (e.g. <spectrum name="irradiance" value="3"/>): L = albedo E / pi.
+inline std::string plateUnderDirectionalLight(const std::string& irradiance, float albedo, int spp = 256) {
+  return R"(<scene version="3.0.0"><integrator type="direct"/>
+    <sensor type="perspective"><float name="fov" value="1"/>
+      <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+      <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
+      <sampler type="ldsampler"><integer name="sample_count" value=")" +
+         std::to_string(spp) + R"("/></sampler></sensor>
+    <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
+      <bsdf type="diffuse"><float name="reflectance" value=")" +
+         std::to_string(albedo) + R"("/></bsdf></shape>
+    <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>)" +
+         irradiance + R"(</emitter>
+    </scene>)";
+}
+
 // Mean of each channel over the pixels of [x0, x1) x [y0, y1).
 inline Vec3 meanColour(const Image& image, int x0, int y0, int x1, int y1) {
   double sum[3] = {0, 0, 0};

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "temp_dir_test.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -32,20 +34,7 @@ CommandResult runShell(const std::string& commandLine) {
 
 CommandResult run(const std::string& args) { return runShell(std::string(COLUMBA_BINARY) + " " + args); }
 
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("columba_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  fs::path dir_;
-};
+class CliTest : public columba::testing::TempDirTest {};
 
 const char* kTinyScene = R"(<scene version="3.0.0">
   <default name="res" value="8"/>

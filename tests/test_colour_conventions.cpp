@@ -11,19 +11,9 @@ using namespace columba;
 using namespace columba::testing;
 
 namespace {
-// A white diffuse plane seen from above with a 1 degree field of view, lit by a directional light
-// of irradiance `irradiance` straight from above: L = albedo E / pi at every pixel.
-Vec3 plateUnderDirectionalLight(const std::string& irradiance, float albedo) {
-  std::string xml = R"(<scene version="3.0.0"><integrator type="direct"/>
-    <sensor type="perspective"><float name="fov" value="1"/>
-      <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
-      <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
-      <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
-    <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
-      <bsdf type="diffuse"><float name="reflectance" value=")" + std::to_string(albedo) + R"("/></bsdf></shape>
-    <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>)" + irradiance + R"(</emitter>
-    </scene>)";
-  return meanColour(renderSceneString(xml), 0, 0, 8, 8);
+// The mean colour of the plate of plateUnderDirectionalLight: albedo E / pi at every pixel.
+Vec3 plateColour(const std::string& irradiance, float albedo) {
+  return meanColour(renderSceneString(plateUnderDirectionalLight(irradiance, albedo)), 0, 0, 8, 8);
 }
 }  // namespace
 
@@ -31,15 +21,15 @@ TEST(ColourConventions, SingleValuedLightOnAWhitePlaneIsNeutral) {
   // <spectrum value="E"/> on an emitter is D65 of luminance E, and D65 is (1, 1, 1) in linear
   // sRGB: the plane is (1, 1, 1) E albedo / pi, grey to 1 %.
   const float E = 3.0f, albedo = 0.8f, expected = E * albedo / kPi;
-  Vec3 c = plateUnderDirectionalLight(R"(<spectrum name="irradiance" value="3"/>)", albedo);
+  Vec3 c = plateColour(R"(<spectrum name="irradiance" value="3"/>)", albedo);
   std::printf("D65 light on a white plane, in units of E albedo / pi: (%.4f, %.4f, %.4f)\n", c.x / expected,
               c.y / expected, c.z / expected);
   EXPECT_NEAR(c.x, expected, 0.01f * expected);
   EXPECT_NEAR(c.y, expected, 0.01f * expected);
   EXPECT_NEAR(c.z, expected, 0.01f * expected);
   // A <float> and an <rgb> grey mean the same.
-  Vec3 f = plateUnderDirectionalLight(R"(<float name="irradiance" value="3"/>)", albedo);
-  Vec3 g = plateUnderDirectionalLight(R"(<rgb name="irradiance" value="3, 3, 3"/>)", albedo);
+  Vec3 f = plateColour(R"(<float name="irradiance" value="3"/>)", albedo);
+  Vec3 g = plateColour(R"(<rgb name="irradiance" value="3, 3, 3"/>)", albedo);
   for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(f[k], expected, 0.01f * expected);
     EXPECT_NEAR(g[k], expected, 0.01f * expected);
@@ -51,7 +41,7 @@ TEST(ColourConventions, RedLightOnAWhitePlaneIsRed) {
   // primary exactly (a reflectance spectrum under D65 cannot be pure sRGB red); the plane is red
   // to within 0.01 of the albedo / pi scale in each channel (measured: 1.0001, -0.0003, 0.0009).
   const float albedo = 1.0f, scale = albedo / kPi;
-  Vec3 c = plateUnderDirectionalLight(R"(<rgb name="irradiance" value="1, 0, 0"/>)", albedo);
+  Vec3 c = plateColour(R"(<rgb name="irradiance" value="1, 0, 0"/>)", albedo);
   std::printf("red light on a white plane, in units of albedo / pi: (%.4f, %.4f, %.4f)\n", c.x / scale, c.y / scale,
               c.z / scale);
   EXPECT_NEAR(c.x, scale, 0.01f * scale);
@@ -62,7 +52,7 @@ TEST(ColourConventions, RedLightOnAWhitePlaneIsRed) {
 TEST(ColourConventions, TabulatedLightSpectrumIsTakenAsGiven) {
   // A <spectrum value="lambda:value, ..."/> on an emitter is not multiplied by D65: a flat table
   // of 1 is the equal-energy white, which the plain matrix shows pinkish (red > green > blue).
-  Vec3 c = plateUnderDirectionalLight(R"(<spectrum name="irradiance" value="300:1, 900:1"/>)", 1.0f);
+  Vec3 c = plateColour(R"(<spectrum name="irradiance" value="300:1, 900:1"/>)", 1.0f);
   EXPECT_GT(c.x, 1.1f * c.y);
   EXPECT_GT(c.y, c.z);
 }

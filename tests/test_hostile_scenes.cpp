@@ -1,5 +1,7 @@
 // Scene files built to exhaust or confuse the loader get located errors, quickly.
 #include <gtest/gtest.h>
+
+#include "temp_dir_test.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -29,20 +31,7 @@ std::string loadError(const std::string& xml, const Defines& defines = {}) {
   return "";
 }
 
-class HostileSceneFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("columba_hostile_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  fs::path dir_;
-};
+class HostileSceneFiles : public columba::testing::TempDirTest {};
 
 }  // namespace
 

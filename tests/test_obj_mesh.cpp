@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include "temp_dir_test.h"
 #include <unistd.h>
 
 #include <filesystem>
@@ -11,19 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class ObjMeshTest : public ::testing::Test {
+class ObjMeshTest : public columba::testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("columba_obj_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& text) {
-    std::string path = (dir_ / "mesh.obj").string();
-    std::ofstream(path) << text;
-    return path;
-  }
+  std::string write(const std::string& text) { return TempDirTest::write("mesh.obj", text); }
   // The message of the InputError that reading `text` as an OBJ file throws ("" if none).
   std::string readError(const std::string& text) {
     try {
@@ -33,7 +25,6 @@ class ObjMeshTest : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
 };
 
 const char* const kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";

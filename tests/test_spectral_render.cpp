@@ -12,16 +12,7 @@ TEST(SpectralRender, DiffusePlaneReturnsTheLightsSpectrumInItsBins) {
   // A tabulated irradiance (taken as given, not times D65), linear in wavelength, so each bin's
   // mean is its value at the bin's centre: E = 1 + (lambda - 400) / 300 * 2.
   const float albedo = 0.6f;
-  std::string xml = R"(<scene version="3.0.0"><integrator type="direct"/>
-    <sensor type="perspective"><float name="fov" value="1"/>
-      <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
-      <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
-      <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
-    <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
-      <bsdf type="diffuse"><float name="reflectance" value="0.6"/></bsdf></shape>
-    <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
-      <spectrum name="irradiance" value="400:1, 700:3"/></emitter>
-    </scene>)";
+  std::string xml = plateUnderDirectionalLight(R"(<spectrum name="irradiance" value="400:1, 700:3"/>)", albedo);
   RenderSettings settings;
   settings.spectralBins = 6;
   Image image = renderSceneString(xml, settings);

@@ -100,24 +100,34 @@ void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs:
   }
 }
 
+// A plot against wavelength over the light angles, and its table with a wavelength column.
+struct SpectralFigure {
+  LinePlot plot;
+  CsvTable table;
+};
+SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& lambdas, const std::string& title,
+                              const std::string& yLabel, const std::string& quantity) {
+  SpectralFigure f;
+  f.plot.title = title;
+  f.plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
+                                describeParameters(o));
+  f.plot.xLabel = "wavelength (nm)";
+  f.plot.yLabel = yLabel;
+  f.plot.xMin = kLambdaMin;
+  f.plot.xMax = kLambdaMax;
+  f.table = {{quantity, describeParameters(o)}, {"wavelength_nm"}, std::vector<std::vector<double>>(lambdas.size())};
+  for (size_t i = 0; i < lambdas.size(); ++i) f.table.rows[i].push_back(lambdas[i]);
+  return f;
+}
+
 // Directional reflectance (albedo) of R and TRT per light angle.
 void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                    std::vector<std::string>& written) {
   const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
-  LinePlot plot;
-  plot.title = "Directional reflectance of the barbule lobes";
-  plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
-                              describeParameters(o));
-  plot.xLabel = "wavelength (nm)";
-  plot.yLabel = "directional reflectance (R solid, TRT dashed)";
-  plot.xMin = kLambdaMin;
-  plot.xMax = kLambdaMax;
-  CsvTable table{{"directional reflectance (albedo) of the R and TRT lobes: the integral over outgoing directions of "
-                  "f |cos theta_o| (dimensionless)",
-                  describeParameters(o)},
-                 {"wavelength_nm"},
-                 std::vector<std::vector<double>>(lambdas.size())};
-  for (size_t i = 0; i < lambdas.size(); ++i) table.rows[i].push_back(lambdas[i]);
+  auto [plot, table] = spectralFigure(o, lambdas, "Directional reflectance of the barbule lobes",
+                                      "directional reflectance (R solid, TRT dashed)",
+                                      "directional reflectance (albedo) of the R and TRT lobes: the integral over "
+                                      "outgoing directions of f |cos theta_o| (dimensionless)");
   float peak = 0.0f;
   fmt::print("directional reflectance (albedo), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  mean R    mean TRT  coverage  R peaks (nm, 1 nm grid)\n");
@@ -159,20 +169,10 @@ void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path
 void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                      std::vector<std::string>& written) {
   const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
-  LinePlot plot;
-  plot.title = "Reflectance factor pi f in the mirror direction";
-  plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
-                              describeParameters(o));
-  plot.xLabel = "wavelength (nm)";
-  plot.yLabel = "reflectance factor in the mirror direction (total solid, R dashed)";
-  plot.xMin = kLambdaMin;
-  plot.xMax = kLambdaMax;
-  CsvTable table{{"reflectance factor pi f(light, mirror direction) of the R and TRT lobes and their sum, "
-                  "relative to a white diffuse standard (dimensionless)",
-                  describeParameters(o)},
-                 {"wavelength_nm"},
-                 std::vector<std::vector<double>>(lambdas.size())};
-  for (size_t i = 0; i < lambdas.size(); ++i) table.rows[i].push_back(lambdas[i]);
+  auto [plot, table] = spectralFigure(o, lambdas, "Reflectance factor pi f in the mirror direction",
+                                      "reflectance factor in the mirror direction (total solid, R dashed)",
+                                      "reflectance factor pi f(light, mirror direction) of the R and TRT lobes and "
+                                      "their sum, relative to a white diffuse standard (dimensionless)");
   float peak = 0.0f;
   fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
