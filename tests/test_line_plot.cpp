@@ -22,7 +22,9 @@ TEST(LinePlot, SeriesAreDrawnInTheirColourInsideThePlotArea) {
   plot.yLabel = "y";
   plot.series.push_back({"diag", {Vec2(0, 0), Vec2(1, 1)}, Vec3(1, 0, 0)});
   Image img = renderLinePlot(plot, 400, 300);
-  // The diagonal runs from the bottom-left (90, 230) to the top-right (380, 80) of the plot area.
+  // The legend stands right of the chart: the plot area ends where the legend's room begins.
+  const float right = 400 - 20 - (Canvas::textWidth("diag") + 58);
+  // The diagonal runs from the bottom-left (90, 230) to the top-right (right, 80) of the plot area.
   int redPixels = 0;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
@@ -30,9 +32,13 @@ TEST(LinePlot, SeriesAreDrawnInTheirColourInsideThePlotArea) {
       if (p[0] > 0.9f && p[1] < 0.1f && p[2] < 0.1f) ++redPixels;
     }
   EXPECT_GT(redPixels, 300);
-  const float* mid = img.pixel(235, 155);  // the diagonal's midpoint
+  const float* mid = img.pixel(int(0.5f * (90 + right)), 155);  // the diagonal's midpoint
   EXPECT_GT(mid[0], 0.5f);
   EXPECT_LT(mid[1], 0.5f);
+  // The legend's swatch, outside the chart at its top: red, on the chart's right.
+  const float* swatch = img.pixel(int(right) + 35, 87);
+  EXPECT_GT(swatch[0], 0.9f);
+  EXPECT_LT(swatch[1], 0.1f);
 }
 
 TEST(Canvas, TextMarksPixels) {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "plot/canvas.h"
 
 namespace columba {
@@ -24,7 +26,12 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
   Canvas canvas(width, height, white);
   const std::vector<std::string> subtitle = wrapText(plot.subtitle, float(width) - 40, 2);
   const float lineHeight = Canvas::textHeight(2) + 6;
-  const float left = 90, right = float(width) - 20, top = 80 + lineHeight * subtitle.size(), bottom = float(height) - 70;
+  // The legend stands right of the chart, so it never covers a curve.
+  float legendWidth = 0;
+  for (const PlotSeries& s : plot.series) legendWidth = std::max(legendWidth, Canvas::textWidth(s.label));
+  const float legendSpace = plot.series.empty() ? 0.0f : legendWidth + 58;
+  const float left = 90, right = float(width) - 20 - legendSpace, top = 80 + lineHeight * subtitle.size(),
+              bottom = float(height) - 70;
   auto toPixel = [&](Vec2 p) {
     return Vec2(left + (p.x - plot.xMin) / (plot.xMax - plot.xMin) * (right - left),
                 bottom - (p.y - plot.yMin) / (plot.yMax - plot.yMin) * (bottom - top));
@@ -62,11 +69,7 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
       canvas.line(a, b, s.colour, 2.5f);
     }
 
-  // Legend in the top-right corner.
-  float legendWidth = 0;
-  for (const PlotSeries& s : plot.series) legendWidth = std::max(legendWidth, Canvas::textWidth(s.label));
-  float lx = right - legendWidth - 50, ly = top + 10;
-  canvas.fillRect(lx - 8, ly - 6, right - 4, ly + 22.0f * plot.series.size() - 2, white);
+  float lx = right + 20, ly = top;
   for (const PlotSeries& s : plot.series) {
     if (s.dashed) {
       canvas.line(Vec2(lx, ly + 7), Vec2(lx + 11, ly + 7), s.colour, 2.5f);
