@@ -16,6 +16,8 @@
 #include "fuzz_targets.h"
 #include "core/transform.h"
 #include "shapes/triangle_mesh.h"
+#include "emitters/envmap_emitter.h"
+#include <cmath>
 
 namespace fs = std::filesystem;
 
@@ -104,6 +106,24 @@ TEST(FuzzRegressions, ExrAttributeLargerThanTheFileIsAnErrorBeforeOpenEXRAllocat
     EXPECT_NE(std::string(e.what()).find("attribute 'comments' declares 2147483632 bytes but the file has 4 bytes left"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// Found by the EXR fuzzer: a NaN, infinite or overly bright pixel made the environment map's
+// sampling distribution throw std::invalid_argument instead of an error naming the file.
+TEST(FuzzRegressions, EnvmapPixelsThatCannotBeSampledAreInputErrors) {
+  for (float value : {std::nanf(""), INFINITY, 3e38f}) {
+    columba::Image image(2, 2);
+    for (float& v : image.rgb) v = 0.5f;
+    image.pixel(1, 0)[1] = value;
+    try {
+      columba::EnvmapEmitter envmap(image, 1.0f, columba::Transform(), {"sky.exr", 0});
+      ADD_FAILURE() << "no error for " << value;
+    } catch (const columba::InputError& e) {
+      const std::string expected = std::isfinite(value) ? "sky.exr: the environment map's total luminance overflows"
+                                                        : "sky.exr: environment map pixel (1, 0) is not finite";
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -1,6 +1,10 @@
 #include "emitters/envmap_emitter.h"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
+#include "core/error.h"
 
 namespace columba {
 
@@ -20,17 +24,26 @@ std::array<Vec3, 3> invert3x3(const std::array<Vec3, 3>& columns) {
 }
 }  // namespace
 
-EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld)
+EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld, const SourceLocation& where)
     : image_(std::move(image)), scale_(scale), toWorld_(toWorld) {
   std::vector<float> weights(size_t(image_.width) * image_.height);
+  double total = 0.0;
   for (int y = 0; y < image_.height; ++y) {
     float sinTheta = std::sin(kPi * (y + 0.5f) / image_.height);
     for (int x = 0; x < image_.width; ++x) {
       const float* p = image_.pixel(x, y);
+      const std::string pixel = "environment map pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        throw InputError(where, pixel + " is not finite");
       float luminance = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
-      weights[size_t(y) * image_.width + x] = std::max(luminance, 0.0f) * sinTheta + 1e-8f;
+      float weight = std::max(luminance, 0.0f) * sinTheta + 1e-8f;
+      if (!std::isfinite(weight)) throw InputError(where, pixel + " is too bright: its luminance overflows single precision");
+      weights[size_t(y) * image_.width + x] = weight;
+      total += weight;
     }
   }
+  if (total > 0.5 * double(std::numeric_limits<float>::max()))
+    throw InputError(where, "the environment map's total luminance overflows single precision");
   distribution_ = Distribution2D(weights, image_.width, image_.height);
   std::array<Vec3, 3> columns;
   for (int k = 0; k < 3; ++k) {
@@ -93,8 +106,9 @@ float EnvmapEmitter::pdfDirection(const Vec3& d) const {
 }
 
 std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props) {
-  return std::make_shared<EnvmapEmitter>(readEXR(props.getPath("filename")), props.getFloat("scale", 1.0f),
-                                         props.getTransform("to_world"));
+  const std::string path = props.getPath("filename");
+  return std::make_shared<EnvmapEmitter>(readEXR(path), props.getFloat("scale", 1.0f), props.getTransform("to_world"),
+                                         SourceLocation{path, 0});
 }
 
 }  // namespace columba

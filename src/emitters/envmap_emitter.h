@@ -12,7 +12,9 @@ namespace columba {
 
 class EnvmapEmitter : public Emitter {
  public:
-  EnvmapEmitter(Image image, float scale, const Transform& toWorld);
+  // Throws InputError at `where` (the image file) for a pixel that is not finite or too bright
+  // to sample.
+  EnvmapEmitter(Image image, float scale, const Transform& toWorld, const SourceLocation& where = {});
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override;
   float pdfDirection(const Vec3& d) const override;
