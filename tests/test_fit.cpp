@@ -80,6 +80,10 @@ std::string writeScene() {
 struct Truth {
   double height, b, mu, H;
 };
+// Names the cases in test output by their parameters.
+void PrintTo(const Truth& t, std::ostream* os) {
+  *os << "height " << t.height << " b " << t.b << " mu " << t.mu << " H " << t.H;
+}
 
 std::vector<FitParameter> barbuleParameters() {
   return {parseFitParameter("height=0.4:0.7:0.55"), parseFitParameter("b=0.15:0.5:0.3"),
