@@ -42,8 +42,10 @@ def _define_text(value):
     return str(value)
 
 
-def _defines(defines):
-    return {name: _define_text(value) for name, value in defines.items()}
+def _defines(defines, extra=None):
+    merged = dict(extra or {})
+    merged.update(defines)
+    return {name: _define_text(value) for name, value in merged.items()}
 
 
 def _warn_unused(scene, defines):
@@ -52,29 +54,30 @@ def _warn_unused(scene, defines):
                        stacklevel=3)
 
 
-def load_file(path, **defines):
-    """Loads a Mitsuba-style scene file; keyword arguments set its $variables (as -D name=value).
+def load_file(path, defines=None, **kwargs):
+    """Loads a Mitsuba-style scene file; keyword arguments (and the dict `defines`, for names
+    that are not Python identifiers) set its $variables, as -D name=value does.
 
     Malformed input raises columba.InputError (a ValueError) with the CLI's file:line message.
     """
-    d = _defines(defines)
+    d = _defines(kwargs, defines)
     scene = _columba._load_file(_os.fspath(path), d)
     _warn_unused(scene, d)
     return scene
 
 
-def load_string(xml, base_dir=None, name="<string>", **defines):
+def load_string(xml, base_dir=None, name="<string>", defines=None, **kwargs):
     """Loads a scene from XML text; relative file names resolve against base_dir (default: the
-    current directory)."""
-    d = _defines(defines)
+    current directory), messages name it `name`; $variables as for load_file."""
+    d = _defines(kwargs, defines)
     scene = _columba._load_string(xml, name, _os.fspath(base_dir) if base_dir is not None else _os.getcwd(), d)
     _warn_unused(scene, d)
     return scene
 
 
-def load_default(**defines):
+def load_default(defines=None, **kwargs):
     """The scene `columba render` draws without a scene file (a generated neck)."""
-    d = _defines(defines)
+    d = _defines(kwargs, defines)
     scene = _columba._load_default(d)
     _warn_unused(scene, d)
     return scene

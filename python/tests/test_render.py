@@ -54,7 +54,7 @@ def test_render_is_a_view_of_the_image(repo):
 
 def test_load_string_resolves_against_base_dir(repo):
     xml = (repo / "examples" / "tiny_feather.xml").read_text()
-    scene = columba.load_string(xml, base_dir=repo / "examples", res=16, spp=2)
+    scene = columba.load_string(xml, base_dir=repo / "examples", defines={"res": 16}, spp=2)
     from_file = columba.load_file(repo / "examples" / "tiny_feather.xml", res=16, spp=2)
     np.testing.assert_array_equal(columba.render(scene, seed=1), columba.render(from_file, seed=1))
     assert scene.source == "<string>"
