@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -124,6 +125,25 @@ TEST(FuzzRegressions, EnvmapPixelsThatCannotBeSampledAreInputErrors) {
                                                         : "sky.exr: environment map pixel (1, 0) is not finite";
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
+  }
+}
+
+// Found by the EXR fuzzer: a 391-byte file declaring 2.4 million x 66 pixels had Columba fill
+// 1.9 GB before OpenEXR found the pixels missing.
+TEST(FuzzRegressions, ExrDeclaringMorePixelsThanTheFileCanHoldIsAnError) {
+  std::ifstream in(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/exr_envmap/rgb_none.exr", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key("dataWindow\0box2i\0", 17);
+  size_t at = bytes.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const int32_t window[4] = {0, 0, 2399999, 65};
+  std::memcpy(&bytes[at + key.size() + 4], window, sizeof window);
+  try {
+    columba::fuzz::exrEnvmapFromBytes(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    FAIL() << "no error";
+  } catch (const columba::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("declares 2400000 x 66 pixels, more than a file of"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -314,7 +314,16 @@ Image readEXR(const std::string& path) {
     if (!rgb && !channels.findChannel("Y"))
       throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
     const Imath::Box2i window = file.header().dataWindow();
-    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    // The pixels are allocated before any is read: a header declaring more than any compression
+    // can fit in the file (4096 pixels a byte, eight times ZIP's most for even one half channel)
+    // is an error, not gigabytes.
+    const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
+    std::error_code ec;
+    const uint64_t fileSize = std::filesystem::file_size(path, ec);
+    if (!ec && double(width) * double(height) > double(fileSize) * 4096.0)
+      throw InputError({path, 0}, "EXR header declares " + std::to_string(width) + " x " + std::to_string(height) +
+                                      " pixels, more than a file of " + std::to_string(fileSize) + " bytes can hold");
+    Image image(static_cast<int>(width), static_cast<int>(height));
     const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
     auto slice = [&](int c) { return Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, window, xStride, yStride); };
     Imf::FrameBuffer frame;
