@@ -270,6 +270,17 @@ ImageFormat checkOutputImagePath(const std::string& path) {
   return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
 }
 
+// Pixels are allocated before any is read: a header declaring more than any compression can fit
+// in the file (4096 pixels a byte, eight times ZIP's most for even one half channel) is an error,
+// not gigabytes.
+static void checkEXRPixelCount(const std::string& path, int64_t width, int64_t height) {
+  std::error_code ec;
+  const uint64_t fileSize = std::filesystem::file_size(path, ec);
+  if (!ec && double(width) * double(height) > double(fileSize) * 4096.0)
+    throw InputError({path, 0}, "EXR header declares " + std::to_string(width) + " x " + std::to_string(height) +
+                                    " pixels, more than a file of " + std::to_string(fileSize) + " bytes can hold");
+}
+
 // OpenEXR allocates every header attribute at the size the file declares before reading it (a
 // string attribute declaring 2 GB takes seconds and gigabytes): each declared size is checked
 // against the bytes the file has left first. Files that are not EXR, or end early, are left to
@@ -301,6 +312,13 @@ static void checkEXRAttributeSizes(const std::string& path) {
       throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' declares " +
                                       std::to_string(declared) + " bytes but the file has " + std::to_string(left) +
                                       " bytes left");
+    if (name == "dataWindow" && type == "box2i" && declared == 16) {
+      // OpenEXR sizes its line buffers by the window as it opens the file: checked here first.
+      int32_t box[4];
+      if (!in.read(reinterpret_cast<char*>(box), sizeof box)) return;
+      checkEXRPixelCount(path, int64_t(box[2]) - box[0] + 1, int64_t(box[3]) - box[1] + 1);
+      continue;
+    }
     in.seekg(declared, std::ios::cur);
   }
 }
@@ -314,15 +332,8 @@ Image readEXR(const std::string& path) {
     if (!rgb && !channels.findChannel("Y"))
       throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
     const Imath::Box2i window = file.header().dataWindow();
-    // The pixels are allocated before any is read: a header declaring more than any compression
-    // can fit in the file (4096 pixels a byte, eight times ZIP's most for even one half channel)
-    // is an error, not gigabytes.
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
-    std::error_code ec;
-    const uint64_t fileSize = std::filesystem::file_size(path, ec);
-    if (!ec && double(width) * double(height) > double(fileSize) * 4096.0)
-      throw InputError({path, 0}, "EXR header declares " + std::to_string(width) + " x " + std::to_string(height) +
-                                      " pixels, more than a file of " + std::to_string(fileSize) + " bytes can hold");
+    checkEXRPixelCount(path, width, height);
     Image image(static_cast<int>(width), static_cast<int>(height));
     const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
     auto slice = [&](int c) { return Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, window, xStride, yStride); };
