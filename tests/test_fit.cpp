@@ -1,6 +1,7 @@
 // `columba fit`'s library: the loss and its scale, parameter parsing, and recovery of known
 // barbule parameters from perturbed renders and spectra.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -71,8 +72,10 @@ const char* kScene = R"(<scene version="3.0.0">
   </shape>
 </scene>)";
 
+// The scene file, one per test process: CTest runs the tests of this file in parallel processes.
 std::string writeScene() {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "columba_test_fit_scene.xml";
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("columba_test_fit_scene_" + std::to_string(::getpid()) + ".xml");
   std::ofstream(path) << kScene;
   return path.string();
 }

@@ -32,12 +32,14 @@ EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld,
     float sinTheta = std::sin(kPi * (y + 0.5f) / image_.height);
     for (int x = 0; x < image_.width; ++x) {
       const float* p = image_.pixel(x, y);
-      const std::string pixel = "environment map pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+      // Named only when there is something to say: an environment map has millions of pixels.
+      auto pixel = [&] { return "environment map pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")"; };
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-        throw InputError(where, pixel + " is not finite");
+        throw InputError(where, pixel() + " is not finite");
       float luminance = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
       float weight = std::max(luminance, 0.0f) * sinTheta + 1e-8f;
-      if (!std::isfinite(weight)) throw InputError(where, pixel + " is too bright: its luminance overflows single precision");
+      if (!std::isfinite(weight))
+        throw InputError(where, pixel() + " is too bright: its luminance overflows single precision");
       weights[size_t(y) * image_.width + x] = weight;
       total += weight;
     }
