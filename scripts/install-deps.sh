@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Columba builds against, only those that are missing.
+# Installs the Debian packages Columba builds against, only those that are missing; with
+# arguments, those packages instead (scripts/install-fuzz-deps.sh).
 set -euo pipefail
-packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
+packages=("$@")
+[ ${#packages[@]} -gt 0 ] || packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
           libopenexr-dev libpng-dev libstb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfmt-dev libtinyobjloader-dev libnlopt-dev
           python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev)
