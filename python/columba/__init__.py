@@ -18,6 +18,8 @@ from ._columba import (  # noqa: F401
     Scene,
     __version__,
     direction,
+    fit,
+    fit_spectra,
     fresnel,
     melanin_reflectance,
     presets,
@@ -30,7 +32,7 @@ __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image",
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "feather_barbs",
-    "Scene", "InputError", "to_srgb", "from_srgb",
+    "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
 ]
 
 

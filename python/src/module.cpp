@@ -25,6 +25,7 @@ namespace py = pybind11;
 namespace columba::python {
 
 void bindModel(py::module_& m);  // model.cpp: the barbule BSDF, optics, feathers
+void bindFit(py::module_& m);    // fit.cpp: parameter fits to images and spectra
 
 namespace {
 
@@ -74,6 +75,8 @@ std::shared_ptr<PyScene> loadDefault(const Defines& defines) {
   return makeScene(std::move(parsed), "<default scene>");
 }
 
+}  // namespace
+
 // An Image's RGB as an H x W x 3 float32 array that owns the image (no copy).
 py::array_t<float> imageArray(Image&& image) {
   auto* owned = new Image(std::move(image));
@@ -81,6 +84,8 @@ py::array_t<float> imageArray(Image&& image) {
   return py::array_t<float>({py::ssize_t(owned->height), py::ssize_t(owned->width), py::ssize_t(3)},
                             owned->rgb.data(), owner);
 }
+
+namespace {
 
 // Renders on a worker thread while the calling thread, without the GIL, looks for signals every
 // 50 ms: Ctrl-C (or any Python signal handler that raises) stops the render before its next
@@ -145,6 +150,8 @@ py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads) {
   return py::make_tuple(imageArray(std::move(image)), info);
 }
 
+}  // namespace
+
 Image imageFromArray(const py::array& input) {
   auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(input);
   if (!a || a.ndim() != 3 || a.shape(2) != 3)
@@ -154,6 +161,8 @@ Image imageFromArray(const py::array& input) {
   std::copy(a.data(), a.data() + a.size(), image.rgb.begin());
   return image;
 }
+
+namespace {
 
 void writeImage(const std::string& path, const py::array& array) {
   ImageFormat format = checkOutputImagePath(path);
@@ -220,4 +229,5 @@ PYBIND11_MODULE(_columba, m) {
         "The 8-bit sRGB encoding of linear values (uint8), as PNGs are written");
   m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"), "The linear value of sRGB-encoded values in [0, 1]");
   bindModel(m);
+  bindFit(m);
 }

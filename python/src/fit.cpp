@@ -1,0 +1,116 @@
+// `columba.fit` and `columba.fit_spectra`: the fits of `columba fit`, called with numpy arrays and
+// returning their results as dicts (the same src/fit code, nothing computed twice).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+
+#include "fit/scene_fit.h"
+#include "fit/spectra_fit.h"
+
+namespace py = pybind11;
+
+namespace columba::python {
+
+py::array_t<float> imageArray(Image&& image);      // module.cpp
+Image imageFromArray(const py::array& input);      // module.cpp
+
+namespace {
+
+FitSettings fitSettings(int maxEvaluations, double maxSeconds, double rise) {
+  FitSettings s;
+  s.optimizer.maxEvaluations = maxEvaluations;
+  s.optimizer.maxSeconds = maxSeconds;
+  s.profileRise = rise;
+  return s;
+}
+
+std::vector<FitParameter> parameters(const std::vector<std::string>& vary) {
+  std::vector<FitParameter> out;
+  for (const std::string& text : vary) out.push_back(parseFitParameter(text));
+  if (out.empty()) throw py::value_error("give at least one parameter to vary, as 'NAME=LO:HI[:START]'");
+  return out;
+}
+
+// The fields of fit.json, as a dict.
+py::dict resultDict(const FitResult& r) {
+  py::dict values, intervals;
+  for (size_t i = 0; i < r.parameters.size(); ++i) {
+    values[py::str(r.parameters[i].name)] = r.values[i];
+    intervals[py::str(r.parameters[i].name)] = py::make_tuple(r.profiles[i].lower, r.profiles[i].upper);
+  }
+  py::dict d;
+  d["values"] = values;
+  d["intervals"] = intervals;
+  d["loss"] = r.loss.loss;
+  d["scale"] = r.loss.scale;
+  d["evaluations"] = r.evaluations;
+  d["profile_evaluations"] = r.profileEvaluations;
+  d["seconds"] = r.seconds;
+  d["total_seconds"] = r.totalSeconds;
+  d["rise"] = r.profileRise;
+  return d;
+}
+
+py::dict fitImage(const std::filesystem::path& scene, const py::array& target, const std::vector<std::string>& vary,
+                  const std::optional<py::array>& mask, const std::map<std::string, std::string>& defines, int spp,
+                  uint64_t seed, int threads, const std::string& scale, const std::string& loss, int maxEvaluations,
+                  double maxSeconds, double rise) {
+  SceneFitSettings s;
+  s.scenePath = scene.string();
+  s.defines = defines;
+  s.target = imageFromArray(target);
+  if (mask) s.mask = imageFromArray(*mask);
+  s.parameters = parameters(vary);
+  s.samplesPerPixel = spp;
+  s.seed = seed;
+  s.threads = threads;
+  s.scale = parseScaleMode(scale);
+  s.loss = parseLossKind(loss);
+  s.fit = fitSettings(maxEvaluations, maxSeconds, rise);
+  SceneFitResult result;
+  {
+    py::gil_scoped_release release;
+    result = fitScene(s);
+  }
+  py::dict d = resultDict(result.fit);
+  d["render"] = imageArray(std::move(result.render));
+  return d;
+}
+
+py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary, const std::string& scale,
+                        const std::string& loss, int maxEvaluations, double maxSeconds, double rise) {
+  SpectraFitSettings s;
+  s.samples = readSpectraCSV(spectra.string());
+  s.parameters = parameters(vary);
+  s.scale = parseScaleMode(scale);
+  s.loss = parseLossKind(loss);
+  s.fit = fitSettings(maxEvaluations, maxSeconds, rise);
+  SpectraFitResult result;
+  {
+    py::gil_scoped_release release;
+    result = fitSpectra(s);
+  }
+  py::dict d = resultDict(result.fit);
+  d["model"] = result.model;
+  return d;
+}
+
+}  // namespace
+
+void bindFit(py::module_& m) {
+  m.def("fit", &fitImage, py::arg("scene"), py::arg("target"), py::arg("vary"), py::arg("mask") = py::none(),
+        py::arg("defines") = std::map<std::string, std::string>{}, py::arg("spp") = 0, py::arg("seed") = 0,
+        py::arg("threads") = 0, py::arg("scale") = "free", py::arg("loss") = "mse", py::arg("max_evals") = 300,
+        py::arg("max_seconds") = 120.0, py::arg("rise") = 0.1,
+        "Fit a scene's $variables to a target image (H x W x 3 linear RGB), as `columba fit` does: vary is a list "
+        "of 'NAME=LO:HI[:START]'. Returns a dict: values, intervals, loss, scale, evaluations, seconds, render.");
+  m.def("fit_spectra", &fitSpectraFile, py::arg("spectra"), py::arg("vary"), py::arg("scale") = "free",
+        py::arg("loss") = "mse", py::arg("max_evals") = 300, py::arg("max_seconds") = 120.0, py::arg("rise") = 0.1,
+        "Fit barbule parameters (b, phi_0, phi_1, mu, H, height) to a CSV of measured reflectance spectra, as "
+        "`columba fit --spectra` does. Returns a dict: values, intervals, loss, scale, evaluations, model.");
+}
+
+}  // namespace columba::python
