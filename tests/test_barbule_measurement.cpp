@@ -15,7 +15,7 @@ TEST(BarbuleMeasurement, LobeReflectanceMatchesMonteCarloIntegration) {
   Wavelengths wl = Wavelengths::fixed({450, 530, 610, 690});
   for (float thetaDeg : {0.0f, 35.0f, 65.0f}) {
     Vec3 omegaI(std::sin(degToRad(thetaDeg)), 0.0f, std::cos(degToRad(thetaDeg)));
-    LobeReflectance grid = lobeReflectance(bsdf, omegaI, lambdas);
+    LobeSpectra grid = lobeReflectance(bsdf, omegaI, lambdas);
     // Independent estimate: uniform directions over the sphere.
     PCG32 rng(11, 3);
     const int n = 400000;
@@ -85,7 +85,7 @@ TEST(BarbuleMeasurement, SpecularPeaksAreTheFilmsInterferenceMaxima) {
       p.height = height;
       BarbuleBSDF bsdf(p);
       const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
-      SpecularSpectra s = specularSpectra(bsdf, directionFromAngles(degToRad(thetaDeg), 0.0f), lambdas);
+      LobeSpectra s = specularSpectra(bsdf, directionFromAngles(degToRad(thetaDeg), 0.0f), lambdas);
       std::vector<float> found;
       for (float peak : peakWavelengths(lambdas, s.reflection))
         if (peak >= 380.0f && peak <= 780.0f) found.push_back(peak);

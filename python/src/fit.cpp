@@ -19,19 +19,17 @@ Image imageFromArray(const py::array& input);      // module.cpp
 
 namespace {
 
-FitSettings fitSettings(int maxEvaluations, double maxSeconds, double rise) {
-  FitSettings s;
-  s.optimizer.maxEvaluations = maxEvaluations;
-  s.optimizer.maxSeconds = maxSeconds;
-  s.profileRise = rise;
-  return s;
-}
-
-std::vector<FitParameter> parameters(const std::vector<std::string>& vary) {
-  std::vector<FitParameter> out;
-  for (const std::string& text : vary) out.push_back(parseFitParameter(text));
-  if (out.empty()) throw py::value_error("give at least one parameter to vary, as 'NAME=LO:HI[:START]'");
-  return out;
+// What image and spectra fits share: the varied parameters, the loss and the budgets.
+template <typename Settings>
+void setCommon(Settings& s, const std::vector<std::string>& vary, const std::string& scale, const std::string& loss,
+               int maxEvaluations, double maxSeconds, double rise) {
+  for (const std::string& text : vary) s.parameters.push_back(parseFitParameter(text));
+  if (s.parameters.empty()) throw py::value_error("give at least one parameter to vary, as 'NAME=LO:HI[:START]'");
+  s.scale = parseScaleMode(scale);
+  s.loss = parseLossKind(loss);
+  s.fit.optimizer.maxEvaluations = maxEvaluations;
+  s.fit.optimizer.maxSeconds = maxSeconds;
+  s.fit.profileRise = rise;
 }
 
 // The fields of fit.json, as a dict.
@@ -63,13 +61,10 @@ py::dict fitImage(const std::filesystem::path& scene, const py::array& target, c
   s.defines = defines;
   s.target = imageFromArray(target);
   if (mask) s.mask = imageFromArray(*mask);
-  s.parameters = parameters(vary);
+  setCommon(s, vary, scale, loss, maxEvaluations, maxSeconds, rise);
   s.samplesPerPixel = spp;
   s.seed = seed;
   s.threads = threads;
-  s.scale = parseScaleMode(scale);
-  s.loss = parseLossKind(loss);
-  s.fit = fitSettings(maxEvaluations, maxSeconds, rise);
   SceneFitResult result;
   {
     py::gil_scoped_release release;
@@ -84,10 +79,7 @@ py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<
                         const std::string& loss, int maxEvaluations, double maxSeconds, double rise) {
   SpectraFitSettings s;
   s.samples = readSpectraCSV(spectra.string());
-  s.parameters = parameters(vary);
-  s.scale = parseScaleMode(scale);
-  s.loss = parseLossKind(loss);
-  s.fit = fitSettings(maxEvaluations, maxSeconds, rise);
+  setCommon(s, vary, scale, loss, maxEvaluations, maxSeconds, rise);
   SpectraFitResult result;
   {
     py::gil_scoped_release release;

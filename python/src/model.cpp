@@ -21,6 +21,8 @@ namespace py = pybind11;
 
 namespace columba::python {
 
+py::array_t<float> imageArray(Image&& image);  // module.cpp
+
 namespace {
 
 using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
@@ -285,11 +287,19 @@ std::vector<float> lambdaList(const py::object& lambdas) {
 
 py::array_t<float> toArray(const std::vector<float>& v) { return py::array_t<float>(py::ssize_t(v.size()), v.data()); }
 
-py::array_t<float> rgbImage(Image&& image) {
-  auto* owned = new Image(std::move(image));
-  py::capsule owner(owned, [](void* p) { delete static_cast<Image*>(p); });
-  return py::array_t<float>({py::ssize_t(owned->height), py::ssize_t(owned->width), py::ssize_t(3)},
-                            owned->rgb.data(), owner);
+// The lobes' spectra for light at (theta, phi) degrees, measured by `measure` (lobeReflectance or
+// specularSpectra) without the GIL, as {wavelengths, R, TRT}.
+template <typename Measure>
+py::dict lobeSpectraDict(const PyBarbule& s, float theta, float phi, const py::object& lambdas, Measure measure) {
+  std::vector<float> l = lambdaList(lambdas);
+  LobeSpectra r;
+  {
+    py::gil_scoped_release release;
+    r = measure(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
+  }
+  py::dict d;
+  d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
+  return d;
 }
 
 // Broadcast 1-D inputs of equal length (the Python side broadcasts and flattens).
@@ -414,35 +424,19 @@ void bindModel(py::module_& m) {
               py::gil_scoped_release release;
               image = scatterometerImage(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), resolution, supersampling);
             }
-            return rgbImage(std::move(image));
+            return imageArray(std::move(image));
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
       .def(
           "specular_spectra",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
-            std::vector<float> l = lambdaList(lambdas);
-            SpecularSpectra r;
-            {
-              py::gil_scoped_release release;
-              r = specularSpectra(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
-            }
-            py::dict d;
-            d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
-            return d;
+            return lobeSpectraDict(s, theta, phi, lambdas, specularSpectra);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none())
       .def(
           "lobe_reflectance",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
-            std::vector<float> l = lambdaList(lambdas);
-            LobeReflectance r;
-            {
-              py::gil_scoped_release release;
-              r = lobeReflectance(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
-            }
-            py::dict d;
-            d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
-            return d;
+            return lobeSpectraDict(s, theta, phi, lambdas, lobeReflectance);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none());
 

@@ -133,7 +133,7 @@ void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path
   fmt::print("light theta (deg)  mean R    mean TRT  coverage  R peaks (nm, 1 nm grid)\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
     Vec3 light = lightDirection(o, o.angles[a]);
-    LobeReflectance lr = lobeReflectance(bsdf, light, lambdas);
+    LobeSpectra lr = lobeReflectance(bsdf, light, lambdas);
     PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a)};
     PlotSeries t{fmt::format("TRT {:g} deg", o.angles[a]), {}, seriesColour(a), true};
     double meanR = 0, meanT = 0;
@@ -177,7 +177,7 @@ void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::pa
   fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
-    SpecularSpectra s = specularSpectra(bsdf, lightDirection(o, o.angles[a]), lambdas);
+    LobeSpectra s = specularSpectra(bsdf, lightDirection(o, o.angles[a]), lambdas);
     std::vector<float> total(lambdas.size());
     PlotSeries sum{fmt::format("total {:g} deg", o.angles[a]), {}, seriesColour(a)};
     PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a), true};

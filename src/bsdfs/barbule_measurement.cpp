@@ -56,9 +56,9 @@ std::vector<float> visibleWavelengthGrid(float step) {
   return lambdas;
 }
 
-LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
+LobeSpectra lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
-  LobeReflectance result;
+  LobeSpectra result;
   result.lambdas = lambdas;
   result.reflection.assign(lambdas.size(), 0.0f);
   result.trt.assign(lambdas.size(), 0.0f);
@@ -94,8 +94,8 @@ Vec3 directionFromAngles(float theta, float phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
-SpecularSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
-  SpecularSpectra result;
+LobeSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
+  LobeSpectra result;
   result.lambdas = lambdas;
   result.reflection.resize(lambdas.size());
   result.trt.resize(lambdas.size());

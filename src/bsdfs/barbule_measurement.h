@@ -8,13 +8,15 @@
 
 namespace columba {
 
+// Spectra of the R and TRT lobes at the wavelengths `lambdas` (nm).
+struct LobeSpectra {
+  std::vector<float> lambdas, reflection, trt;
+};
+
 // Directional reflectance (albedo) of the R and TRT lobes for light from `omegaI` (local frame),
 // at each wavelength of `lambdas` (nm): the integral over all outgoing directions of
 // f_lobe(omegaI, omegaO) |cos theta_o|.
-struct LobeReflectance {
-  std::vector<float> lambdas, reflection, trt;
-};
-LobeReflectance lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
+LobeSpectra lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
 
 // Linear RGB of what an imaging scatterometer records under a white beam (D65 of unit luminance)
 // from `omegaI`: f(omegaI, omegaO) |cos theta_o| per solid angle toward every direction
@@ -27,10 +29,7 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
 // What a microspectrophotometer measures: the reflectance factor pi f(omegaI, omegaO) (1 for a
 // white diffuse standard) of the R and TRT lobes in the mirror direction of `omegaI` (its x and y
 // negated), at each wavelength of `lambdas` (nm).
-struct SpecularSpectra {
-  std::vector<float> lambdas, reflection, trt;
-};
-SpecularSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
+LobeSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas);
 
 // The scatterometer quantity f(omegaI, omegaO) |cos theta_o| (per steradian, R + TRT) in the plane
 // of incidence: omegaO at signed polar angles `thetaO` (radians; negative on the light's side,
