@@ -7,7 +7,7 @@
 #include <map>
 #include <memory>
 #include <vector>
-#include "app/default_scene.h"
+#include "builtin/default_scene.h"
 #include "scene/scene.h"
 
 using namespace columba;

@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "core/transform.h"
 #include "emitters/envmap_emitter.h"
-#include "render/image.h"
-#include "scene/plugin_registry.h"
+#include "io/image.h"
+#include "builtin/builtin_plugins.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "shapes/feather_ply.h"
@@ -51,7 +51,7 @@ void sceneFromBytes(const uint8_t* data, size_t size, const std::string& baseDir
   }
   ParsedScene parsed;
   try {
-    parsed = loadSceneString(text.substr(pos), "<fuzz>", baseDir, defines, PluginRegistry::builtin());
+    parsed = loadSceneString(text.substr(pos), "<fuzz>", baseDir, defines, builtinPlugins());
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {

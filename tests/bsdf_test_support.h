@@ -5,7 +5,7 @@
 #include <string>
 #include "bsdfs/bsdf.h"
 #include "chi_square.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba::testing {
 

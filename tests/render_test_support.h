@@ -1,13 +1,14 @@
 #pragma once
 // Renders scene XML held in a string, for tests of whole-image behaviour.
 #include <string>
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace columba::testing {
 
 inline Image renderSceneString(const std::string& xml, const RenderSettings& settings = {}, RenderStats* statsOut = nullptr) {
-  ParsedScene parsed = loadSceneString(xml, "<test scene>", ".", {}, PluginRegistry::builtin());
+  ParsedScene parsed = loadSceneString(xml, "<test scene>", ".", {}, builtinPlugins());
   Scene scene(parsed, SourceLocation{"<test scene>", 0});
   RenderStats stats;
   Image image = renderImage(scene, settings, stats);

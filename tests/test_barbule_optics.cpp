@@ -6,7 +6,7 @@
 #include <memory>
 #include "bsdfs/barbule_bsdf.h"
 #include "optics/melanin.h"
-#include "scene/plugin_registry.h"
+#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -15,7 +15,7 @@ namespace {
 std::shared_ptr<BarbuleBSDF> loadBarbule(const std::string& parameters) {
   ParsedScene parsed = loadSceneString("<scene version=\"3.0.0\">\n<bsdf type=\"barbulebsdf\">\n" + parameters +
                                            "\n</bsdf></scene>",
-                                       "barbule.xml", ".", {}, PluginRegistry::builtin());
+                                       "barbule.xml", ".", {}, builtinPlugins());
   EXPECT_EQ(parsed.objects.size(), 1u);
   return std::dynamic_pointer_cast<BarbuleBSDF>(parsed.objects.at(0));
 }

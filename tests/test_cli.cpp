@@ -9,7 +9,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "render/image.h"
+#include "io/image.h"
 
 namespace fs = std::filesystem;
 

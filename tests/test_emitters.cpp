@@ -5,6 +5,7 @@
 #include "chi_square.h"
 #include "core/sampling.h"
 #include "emitters/envmap_emitter.h"
+#include "builtin/builtin_plugins.h"
 #include "render_test_support.h"
 #include "scene/scene.h"
 
@@ -94,7 +95,7 @@ TEST(Emitter, AreaLightDirectionSamplingMatchesPdfHit) {
   for (const char* shape : shapes) {
     std::string xml = std::string(R"(<scene version="3.0.0">)") + shape +
                       R"(<emitter type="area"><spectrum name="radiance" value="1"/></emitter></shape></scene>)";
-    ParsedScene parsed = loadSceneString(xml, "<test>", ".", {}, PluginRegistry::builtin());
+    ParsedScene parsed = loadSceneString(xml, "<test>", ".", {}, builtinPlugins());
     Scene scene(parsed, {"<test>", 0});
     const Emitter& emitter = *scene.emitters().front();
     Vec3 ref(0.1f, 0.05f, 0.0f);

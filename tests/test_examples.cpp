@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "shapes/feather_ply.h"
@@ -31,7 +32,7 @@ TEST(Examples, TinyFeatherPlyHasEightBarbsWithPerVertexValues) {
 
 TEST(Examples, TinyFeatherSceneLoadsAndRenders) {
   const fs::path path = kExamples / "tiny_feather.xml";
-  ParsedScene parsed = loadSceneFile(path.string(), {{"res", "48"}, {"spp", "4"}}, PluginRegistry::builtin());
+  ParsedScene parsed = loadSceneFile(path.string(), {{"res", "48"}, {"spp", "4"}}, builtinPlugins());
   Scene scene(parsed, SourceLocation{path.string(), 0});
   RenderSettings settings;
   RenderStats stats;

@@ -11,6 +11,7 @@
 #include "feather/feather_generator.h"
 #include "feather/neck_layout.h"
 #include "feather_test_util.h"
+#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -171,7 +172,7 @@ TEST_F(FeatherGeneratorTest, GeneratedFeatherLoadsFromASceneFile) {
     std::string xml = "<scene version='2.0.0'>\n<shape type='feather'>\n"
                       "  <string name='filename' value='feather.ply'/>\n" + shapeParams +
                       "  <bsdf type='diffuse'/>\n</shape>\n</scene>\n";
-    return loadSceneString(xml, "feather.xml", dir().string(), {}, PluginRegistry::builtin());
+    return loadSceneString(xml, "feather.xml", dir().string(), {}, builtinPlugins());
   };
   ParsedScene parsed = load("  <float name='barbwidth' value='0.02'/>\n  <float name='span' value='0.3'/>\n"
                             "  <transform name='to_world'><scale value='0.035'/></transform>\n");

@@ -10,7 +10,7 @@
 #include "bsdfs/barbule_bsdf.h"
 #include "feather/feather_generator.h"
 #include "feather_test_util.h"
-#include "scene/plugin_registry.h"
+#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -213,7 +213,7 @@ TEST(FeatherReferenceConvention, GeneratedFeatherRoundTripsThroughTheFile) {
   // A scene without barbwidth takes the file's: the strip radius follows it.
   const std::string xml = "<scene version=\"3.0.0\"><shape type=\"feather\"><string name=\"filename\" value=\"" +
                           path + "\"/></shape></scene>";
-  ParsedScene parsed = loadSceneString(xml, "test.xml", dir.string(), {}, PluginRegistry::builtin());
+  ParsedScene parsed = loadSceneString(xml, "test.xml", dir.string(), {}, builtinPlugins());
   auto loaded = std::dynamic_pointer_cast<FeatherShape>(parsed.objects.at(0));
   ASSERT_TRUE(loaded);
   EXPECT_NEAR(loaded->radius(), 0.5f * summary.tilingBarbWidth / std::sin(FeatherShapeParams().cover), 1e-7f);
@@ -225,7 +225,7 @@ TEST(FeatherReferenceConvention, AMissingFileSaysHowToGenerateOne) {
       "<scene version=\"3.0.0\"><shape type=\"feather\"><string name=\"filename\" value=\"no_such_neck.ply\"/>"
       "</shape></scene>";
   try {
-    loadSceneString(xml, "test.xml", "/nonexistent", {}, PluginRegistry::builtin());
+    loadSceneString(xml, "test.xml", "/nonexistent", {}, builtinPlugins());
     FAIL() << "a missing feather PLY was accepted";
   } catch (const InputError& e) {
     const std::string message = e.what();

@@ -5,9 +5,9 @@
 #include <vector>
 #include "chi_square.h"
 #include "core/rng.h"
-#include "render/filters/box_filter.h"
-#include "render/filters/gaussian_filter.h"
-#include "scene/properties.h"
+#include "film/box_filter.h"
+#include "film/gaussian_filter.h"
+#include "core/properties.h"
 
 using namespace columba;
 

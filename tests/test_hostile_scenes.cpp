@@ -1,6 +1,7 @@
 // Scene files built to exhaust or confuse the loader get located errors, quickly.
 #include <gtest/gtest.h>
 
+#include "builtin/builtin_plugins.h"
 #include "temp_dir_test.h"
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 ParsedScene load(const std::string& xml, const Defines& defines = {}) {
-  return loadSceneString(xml, "hostile.xml", fs::temp_directory_path().string(), defines, PluginRegistry::builtin());
+  return loadSceneString(xml, "hostile.xml", fs::temp_directory_path().string(), defines, builtinPlugins());
 }
 
 // The message of the InputError that loading `xml` throws ("" if none).
@@ -132,7 +133,7 @@ TEST_F(HostileSceneFiles, IncludeCycleNamesTheFileThatStartsIt) {
   std::string top = write("top.xml", "<scene version=\"3.0.0\">\n  <include filename=\"middle.xml\"/>\n</scene>\n");
   write("middle.xml", "<scene version=\"3.0.0\">\n\n  <include filename=\"top.xml\"/>\n</scene>\n");
   try {
-    loadSceneFile(top, {}, PluginRegistry::builtin());
+    loadSceneFile(top, {}, builtinPlugins());
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     std::string message = e.what();

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 #include "core/error.h"
-#include "render/image.h"
+#include "io/image.h"
 
 // A private copy of the PNG decoder, independent of the writer under test.
 #define STB_IMAGE_STATIC

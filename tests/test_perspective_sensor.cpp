@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include "scene/plugin_registry.h"
+#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 #include "sensors/perspective_sensor.h"
 
@@ -16,7 +16,7 @@ std::shared_ptr<PerspectiveSensor> sensorWith(const std::string& parameters) {
   const std::string xml = "<scene version=\"3.0.0\"><sensor type=\"perspective\">" + parameters +
                           "<film type=\"hdrfilm\"><integer name=\"width\" value=\"400\"/>"
                           "<integer name=\"height\" value=\"300\"/></film></sensor></scene>";
-  ParsedScene scene = loadSceneString(xml, "test.xml", "", {}, PluginRegistry::builtin());
+  ParsedScene scene = loadSceneString(xml, "test.xml", "", {}, builtinPlugins());
   auto sensor = std::dynamic_pointer_cast<PerspectiveSensor>(scene.objects.at(0));
   if (!sensor) throw std::logic_error("not a perspective sensor");
   return sensor;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 #include "shapes/ply_mesh.h"
 
@@ -95,7 +96,7 @@ class PlyMeshTest : public ::testing::Test {
   static ParsedScene loadScene(const std::string& shapeParams) {
     std::string xml = "<scene version='3.0.0'>\n<shape type=\"ply\">\n  <string name='filename' value='mesh.ply'/>\n" +
                       shapeParams + "</shape>\n</scene>\n";
-    return loadSceneString(xml, "scene.xml", dir().string(), {}, PluginRegistry::builtin());
+    return loadSceneString(xml, "scene.xml", dir().string(), {}, builtinPlugins());
   }
 };
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "feather/feather_generator.h"
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -28,7 +29,7 @@ std::string referenceScenesMissing() {
   } while (false)
 
 Image renderFile(const fs::path& path, const Defines& defines, int spp) {
-  ParsedScene parsed = loadSceneFile(path.string(), defines, PluginRegistry::builtin());
+  ParsedScene parsed = loadSceneFile(path.string(), defines, builtinPlugins());
   Scene scene(parsed, SourceLocation{path.string(), 0});
   RenderSettings settings;
   settings.samplesPerPixel = spp;

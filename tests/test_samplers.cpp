@@ -7,14 +7,14 @@
 #include <tuple>
 #include <vector>
 #include "chi_square.h"
-#include "render/samplers/hashed_permutation.h"
-#include "render/samplers/independent_sampler.h"
-#include "render/samplers/low_discrepancy_sampler.h"
-#include "render/samplers/multijitter_sampler.h"
-#include "render/samplers/pixel_sample_state.h"
-#include "render/samplers/sobol.h"
-#include "render/samplers/stratified_sampler.h"
-#include "scene/properties.h"
+#include "samplers/hashed_permutation.h"
+#include "samplers/independent_sampler.h"
+#include "samplers/low_discrepancy_sampler.h"
+#include "samplers/multijitter_sampler.h"
+#include "samplers/pixel_sample_state.h"
+#include "samplers/sobol.h"
+#include "samplers/stratified_sampler.h"
+#include "core/properties.h"
 
 using namespace columba;
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <memory>
 #include "core/rng.h"
-#include "render/film.h"
-#include "render/filters/gaussian_filter.h"
-#include "render/samplers/independent_sampler.h"
+#include "film/film.h"
+#include "film/gaussian_filter.h"
+#include "samplers/independent_sampler.h"
 #include "sensors/bsdf_visualizer_sensor.h"
 
 using namespace columba;

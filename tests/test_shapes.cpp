@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "builtin/builtin_plugins.h"
 #include "scene/scene.h"
 
 using namespace columba;
@@ -7,7 +8,7 @@ using namespace columba;
 namespace {
 std::unique_ptr<Scene> sceneWith(const std::string& shapes) {
   ParsedScene parsed =
-      loadSceneString("<scene version=\"3.0.0\">" + shapes + "</scene>", "<test>", ".", {}, PluginRegistry::builtin());
+      loadSceneString("<scene version=\"3.0.0\">" + shapes + "</scene>", "<test>", ".", {}, builtinPlugins());
   return std::make_unique<Scene>(parsed, SourceLocation{"<test>", 0});
 }
 }  // namespace
@@ -42,7 +43,7 @@ TEST(Shapes, SurfaceAreasFollowTheirTransforms) {
     <shape type="rectangle"><transform name="to_world"><scale x="2" y="0.5" z="1"/><rotate x="1" angle="40"/></transform></shape>
     <shape type="sphere"><float name="radius" value="0.5"/></shape>
     <shape type="cube"><transform name="to_world"><scale value="2"/></transform></shape></scene>)",
-                                       "<test>", ".", {}, PluginRegistry::builtin());
+                                       "<test>", ".", {}, builtinPlugins());
   std::vector<float> areas;
   for (const auto& object : parsed.objects) areas.push_back(std::dynamic_pointer_cast<Shape>(object)->surfaceArea());
   ASSERT_EQ(areas.size(), 4u);

@@ -13,11 +13,12 @@
 #include <mutex>
 #include <thread>
 
-#include "app/default_scene.h"
+#include "builtin/default_scene.h"
 #include "core/error.h"
 #include "core/version.h"
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
-#include "render/samplers/sampler_parameters.h"
+#include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
 
 namespace py = pybind11;
@@ -51,7 +52,7 @@ std::shared_ptr<PyScene> loadFile(const std::string& path, const Defines& define
   ParsedScene parsed;
   {
     py::gil_scoped_release release;
-    parsed = loadSceneFile(path, defines, PluginRegistry::builtin());
+    parsed = loadSceneFile(path, defines, builtinPlugins());
   }
   return makeScene(std::move(parsed), path);
 }
@@ -61,7 +62,7 @@ std::shared_ptr<PyScene> loadString(const std::string& xml, const std::string& n
   ParsedScene parsed;
   {
     py::gil_scoped_release release;
-    parsed = loadSceneString(xml, name, baseDir, defines, PluginRegistry::builtin());
+    parsed = loadSceneString(xml, name, baseDir, defines, builtinPlugins());
   }
   return makeScene(std::move(parsed), name);
 }

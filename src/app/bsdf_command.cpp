@@ -6,7 +6,7 @@
 #include <iterator>
 #include <limits>
 
-#include "app/data_files.h"
+#include "io/data_files.h"
 #include "bsdfs/barbule_measurement.h"
 #include "core/version.h"
 #include "plot/canvas.h"

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "app/data_files.h"
+#include "io/data_files.h"
 #include "fit/fit_report.h"
 #include "fit/scene_fit.h"
 #include "fit/spectra_fit.h"

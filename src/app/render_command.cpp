@@ -5,11 +5,12 @@
 #include <charconv>
 #include <filesystem>
 
-#include "app/default_scene.h"
+#include "builtin/default_scene.h"
 #include "app/interruption.h"
 #include "app/progress_reporter.h"
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
-#include "render/samplers/sampler_parameters.h"
+#include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
 
 namespace columba {
@@ -96,7 +97,7 @@ int runRender(const RenderOptions& options) {
 
   Defines defines = parseDefines(options.defines);
   ParsedScene parsed = options.scenePath.empty() ? loadDefaultScene(defines)
-                                                 : loadSceneFile(options.scenePath, defines, PluginRegistry::builtin());
+                                                 : loadSceneFile(options.scenePath, defines, builtinPlugins());
   SourceLocation source{options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
   for (const std::string& name : parsed.unusedDefines)
     fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,

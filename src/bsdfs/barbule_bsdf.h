@@ -35,7 +35,7 @@
 #include "bsdfs/barbule_cross_section.h"
 #include "bsdfs/barbule_parameters.h"
 #include "bsdfs/bsdf.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

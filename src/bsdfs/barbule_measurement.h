@@ -4,7 +4,7 @@
 // radiance for one light direction. All deterministic (grids and quadrature, no sampling).
 #include <vector>
 #include "bsdfs/barbule_bsdf.h"
-#include "render/image.h"
+#include "io/image.h"
 
 namespace columba {
 

@@ -2,7 +2,7 @@
 // Scene parameters shared by several BSDF plug-ins, read with Mitsuba's names and conventions.
 #include <string>
 #include "bsdfs/microfacet.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

@@ -3,7 +3,7 @@
 // refraction, one of them chosen with the Fresnel reflectance as its probability.
 #include <memory>
 #include "bsdfs/bsdf.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

@@ -2,7 +2,7 @@
 // Lambertian reflection (Mitsuba's `diffuse`). One-sided: black when seen from below.
 #include <memory>
 #include "bsdfs/bsdf.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

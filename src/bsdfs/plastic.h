@@ -6,7 +6,7 @@
 // into and out of the coat. One-sided.
 #include <memory>
 #include "bsdfs/bsdf.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

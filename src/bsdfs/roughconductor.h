@@ -5,7 +5,7 @@
 #include <optional>
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

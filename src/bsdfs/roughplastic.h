@@ -17,7 +17,7 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

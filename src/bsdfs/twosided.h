@@ -4,7 +4,7 @@
 // that transmit would scatter into the wrong side.
 #include <memory>
 #include "bsdfs/bsdf.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

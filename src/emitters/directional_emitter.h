@@ -2,7 +2,7 @@
 // `directional`: light from infinitely far away along `direction`, of irradiance `irradiance`
 // (W/m^2/nm) on a surface facing it.
 #include "emitters/emitter.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

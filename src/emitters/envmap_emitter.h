@@ -5,8 +5,8 @@
 #include "core/distribution.h"
 #include "core/transform.h"
 #include "emitters/emitter.h"
-#include "render/image.h"
-#include "scene/properties.h"
+#include "io/image.h"
+#include "core/properties.h"
 
 namespace columba {
 

@@ -6,11 +6,11 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "app/data_files.h"
+#include "io/data_files.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
 #include "fit/spectra_fit.h"
-#include "render/image.h"
+#include "io/image.h"
 
 namespace columba {
 

@@ -6,7 +6,8 @@
 #include <stdexcept>
 
 #include "core/quiet_warnings.h"
-#include "render/film.h"
+#include "film/film.h"
+#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -17,7 +18,7 @@ namespace {
 // The built-in plug-ins with every hdrfilm resized to width x height (after the scene's own
 // values are checked), so the render matches the target pixel for pixel.
 PluginRegistry registryWithFilmSize(int width, int height) {
-  PluginRegistry registry = PluginRegistry::builtin();
+  PluginRegistry registry = builtinPlugins();
   registry.add("film", "hdrfilm", [width, height](const Properties& props) -> std::shared_ptr<Object> {
     return std::static_pointer_cast<Film>(makeHDRFilm(props))->resized(width, height);
   });

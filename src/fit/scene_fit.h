@@ -6,7 +6,7 @@
 #include <string>
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
-#include "render/image.h"
+#include "io/image.h"
 #include "scene/scene_loader.h"
 
 namespace columba {

@@ -3,7 +3,7 @@
 // BSDF samples per hit, combined by MIS when both are used. Camera rays continue through
 // pass-through surfaces with their transmitted weight.
 #include "integrators/integrator.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

@@ -2,7 +2,7 @@
 // The integrator interface: radiance arriving along a camera ray at the path's wavelengths.
 #include "core/ray.h"
 #include "core/spectrum.h"
-#include "render/sampler.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

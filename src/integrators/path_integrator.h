@@ -3,7 +3,7 @@
 // sampling of emitters and BSDFs (power heuristic), Russian roulette after `rr_depth`.
 // Pass-through components (barbule gaps) continue the path without counting a bounce.
 #include "integrators/integrator.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

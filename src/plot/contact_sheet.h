@@ -2,7 +2,7 @@
 // A contact sheet: images scaled into a grid of equal tiles, each labelled below.
 #include <string>
 #include <vector>
-#include "render/image.h"
+#include "io/image.h"
 
 namespace columba {
 

@@ -2,7 +2,7 @@
 // A scatterometer image made readable: the hemisphere disk with rings of equal polar angle, the
 // azimuth-zero axis named, the light and its mirror direction marked, and a title.
 #include <string>
-#include "render/image.h"
+#include "io/image.h"
 
 namespace columba {
 

@@ -2,7 +2,7 @@
 // Line charts with labelled axes, ticks and a legend, rendered to an image.
 #include <string>
 #include <vector>
-#include "render/image.h"
+#include "io/image.h"
 #include "core/vector.h"
 
 namespace columba {

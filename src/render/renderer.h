@@ -4,7 +4,7 @@
 // thread count.
 #include <atomic>
 #include <functional>
-#include "render/image.h"
+#include "io/image.h"
 #include "scene/scene.h"
 
 namespace columba {

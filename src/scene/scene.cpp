@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "core/lanes.h"
-#include "integrators/integrator.h"
-#include "scene/plugin_registry.h"
+#include "integrators/path_integrator.h"
+#include "sensors/perspective_sensor.h"
 
 namespace columba {
 
@@ -39,8 +39,8 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   }
   for (const auto& e : emitters_)
     if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
-  if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>("sensor", "perspective", source);
-  if (!integrator_) integrator_ = makeDefaultPlugin<Integrator>("integrator", "path", source);
+  if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);
+  if (!integrator_) integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
 
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("cannot create an Embree device");

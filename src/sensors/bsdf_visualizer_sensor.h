@@ -4,7 +4,7 @@
 // (v grows downward with the image row, as in the paper's implementation: what a camera at the
 // sample looking up at the instrument's dome sees), theta = r pi/2 with r = |(u, v)|,
 // phi = atan2(v, u). Every pixel looks at the origin from its direction; outside the disk, black.
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "sensors/sensor.h"
 
 namespace columba {

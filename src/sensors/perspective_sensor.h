@@ -5,7 +5,7 @@
 // `focal_length` (50mm by default) on 36 x 24 mm film, measured on the diagonal and fitted to the
 // image's aspect.
 #include "core/transform.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "sensors/sensor.h"
 
 namespace columba {

@@ -3,8 +3,8 @@
 #include <memory>
 #include <optional>
 #include "core/ray.h"
-#include "render/film.h"
-#include "render/sampler.h"
+#include "film/film.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

@@ -1,6 +1,6 @@
 #pragma once
 // `disk`: the unit disk in the local xy plane, facing +z.
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/planar_shape.h"
 
 namespace columba {

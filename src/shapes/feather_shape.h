@@ -41,7 +41,7 @@
 #include <memory>
 #include <vector>
 #include "core/transform.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/barb_strip.h"
 #include "shapes/feather_barbule_values.h"
 #include "shapes/feather_ply.h"

@@ -1,6 +1,6 @@
 // The scene-file entry point of the feather shape, apart from the shape itself so that code
 // using FeatherShape directly does not depend on the plug-in registry.
-#include "scene/plugin_registry.h"
+#include "bsdfs/diffuse.h"
 #include "shapes/feather_shape.h"
 
 namespace columba {
@@ -42,7 +42,7 @@ std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
   auto shape = std::make_shared<FeatherShape>(std::move(ply), params);
   shape->bsdf = props.child<BSDF>();
   // Mitsuba's default material when none is nested.
-  if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>("bsdf", "diffuse", props.location);
+  if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
   return shape;
 }
 

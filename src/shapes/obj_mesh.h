@@ -8,7 +8,7 @@
 // faces the face's number (counting from 1 in file order).
 #include <memory>
 #include <string>
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/triangle_mesh.h"
 
 namespace columba {

@@ -10,7 +10,7 @@
 // an InputError naming the file and the line (ASCII) or the element's index (binary).
 #include <memory>
 #include <string>
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/triangle_mesh.h"
 
 namespace columba {

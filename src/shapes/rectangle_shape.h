@@ -1,6 +1,6 @@
 #pragma once
 // `rectangle`: the square [-1, 1]^2 in the local xy plane, facing +z; uv = ((x + 1) / 2, (y + 1) / 2).
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/planar_shape.h"
 
 namespace columba {

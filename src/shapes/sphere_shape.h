@@ -1,7 +1,7 @@
 #pragma once
 // `sphere`: a sphere of `radius` around `center`, then `to_world`. Area emission assumes the
 // transform scales uniformly (the sphere stays round).
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/analytic_shape.h"
 
 namespace columba {

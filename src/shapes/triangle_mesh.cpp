@@ -4,7 +4,7 @@
 
 #include "core/sampling.h"
 #include "emitters/emitter.h"
-#include "scene/plugin_registry.h"
+#include "bsdfs/diffuse.h"
 
 namespace columba {
 
@@ -106,7 +106,7 @@ PositionSample TriangleMesh::samplePosition(Vec2 u) const {
 void attachMaterial(const Properties& props, Shape& shape) {
   shape.bsdf = props.child<BSDF>();
   // Mitsuba's default material: a plain diffuse BSDF with its default reflectance.
-  if (!shape.bsdf) shape.bsdf = makeDefaultPlugin<BSDF>("bsdf", "diffuse", props.location);
+  if (!shape.bsdf) shape.bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
   shape.emitter = props.child<Emitter>();
   if (shape.emitter) {
     if (!(shape.surfaceArea() > 0.0f)) throw InputError(props.location, "an area emitter needs a shape with positive area");

@@ -3,7 +3,7 @@
 #include <vector>
 #include "core/distribution.h"
 #include "core/transform.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 #include "shapes/shape.h"
 
 namespace columba {

@@ -1,12 +1,13 @@
-#include "app/default_scene.h"
+#include "builtin/default_scene.h"
 
 #include <unistd.h>
 
 #include <filesystem>
 #include <optional>
 
-#include "app/default_scene_xml.h"
+#include "builtin/default_scene_xml.h"
 #include "feather/feather_generator.h"
+#include "builtin/builtin_plugins.h"
 
 namespace columba {
 
@@ -42,7 +43,7 @@ ParsedScene loadDefaultScene(const Defines& userDefines) {
     defines["feathers"] = neck->path();
   }
   return loadSceneString(kDefaultSceneXML, "<default scene>", std::filesystem::current_path().string(), defines,
-                         PluginRegistry::builtin());
+                         builtinPlugins());
 }
 
 }  // namespace columba

@@ -1,11 +1,11 @@
-#include "render/film.h"
+#include "film/film.h"
 
 #include <fmt/format.h>
 
 #include <new>
 #include <stdexcept>
 
-#include "scene/plugin_registry.h"
+#include "film/gaussian_filter.h"
 
 namespace columba {
 
@@ -32,7 +32,7 @@ std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
   if (componentFormat != "float16" && componentFormat != "float32")
     throw props.error("component_format", "only 'float16' and 'float32' are supported, not '" + componentFormat + "'");
   auto filter = props.child<ReconstructionFilter>();
-  if (!filter) filter = makeDefaultPlugin<ReconstructionFilter>("rfilter", "gaussian", props.location);
+  if (!filter) filter = makeDefaultPlugin<ReconstructionFilter>(makeGaussianFilter, "rfilter", "gaussian", props.location);
   return std::make_shared<Film>(width, height, std::move(filter));
 }
 

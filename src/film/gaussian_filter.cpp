@@ -1,8 +1,8 @@
-#include "render/filters/gaussian_filter.h"
+#include "film/gaussian_filter.h"
 
 #include <cmath>
 #include "core/math.h"
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

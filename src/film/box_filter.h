@@ -1,7 +1,7 @@
 #pragma once
 // The box filter: each sample counts for the pixel it lands in (Mitsuba's `box`, radius 0.5 px).
 #include <memory>
-#include "render/reconstruction_filter.h"
+#include "film/reconstruction_filter.h"
 
 namespace columba {
 

@@ -1,4 +1,4 @@
-#include "render/image.h"
+#include "io/image.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>

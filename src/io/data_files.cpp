@@ -1,4 +1,4 @@
-#include "app/data_files.h"
+#include "io/data_files.h"
 
 #include <fmt/format.h>
 

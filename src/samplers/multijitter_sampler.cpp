@@ -1,8 +1,8 @@
-#include "render/samplers/multijitter_sampler.h"
+#include "samplers/multijitter_sampler.h"
 
 #include <cmath>
-#include "render/samplers/hashed_permutation.h"
-#include "render/samplers/sampler_parameters.h"
+#include "samplers/hashed_permutation.h"
+#include "samplers/sampler_parameters.h"
 
 namespace columba {
 

@@ -1,4 +1,4 @@
-#include "render/filters/box_filter.h"
+#include "film/box_filter.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // deviation `stddev` pixels truncated at radius 4 stddev, sampled exactly by inverting its CDF
 // with a closed-form inverse error function (no tables to miss in the cache per camera sample).
 #include <memory>
-#include "render/reconstruction_filter.h"
+#include "film/reconstruction_filter.h"
 
 namespace columba {
 

@@ -1,8 +1,8 @@
-#include "render/samplers/low_discrepancy_sampler.h"
+#include "samplers/low_discrepancy_sampler.h"
 
-#include "render/samplers/hashed_permutation.h"
-#include "render/samplers/sampler_parameters.h"
-#include "render/samplers/sobol.h"
+#include "samplers/hashed_permutation.h"
+#include "samplers/sampler_parameters.h"
+#include "samplers/sobol.h"
 
 namespace columba {
 

@@ -1,9 +1,9 @@
 #pragma once
 // `hdrfilm`: the image size and the reconstruction filter. Pixels are accumulated by the renderer.
 #include <memory>
-#include "render/image.h"
-#include "render/reconstruction_filter.h"
-#include "scene/properties.h"
+#include "io/image.h"
+#include "film/reconstruction_filter.h"
+#include "core/properties.h"
 
 namespace columba {
 

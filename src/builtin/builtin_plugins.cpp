@@ -1,4 +1,5 @@
-// The table of every plug-in Columba ships, by scene element and type name.
+#include "builtin/builtin_plugins.h"
+
 #include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
@@ -13,14 +14,13 @@
 #include "emitters/point_emitter.h"
 #include "integrators/direct_integrator.h"
 #include "integrators/path_integrator.h"
-#include "render/film.h"
-#include "render/filters/box_filter.h"
-#include "render/filters/gaussian_filter.h"
-#include "render/samplers/independent_sampler.h"
-#include "render/samplers/low_discrepancy_sampler.h"
-#include "render/samplers/multijitter_sampler.h"
-#include "render/samplers/stratified_sampler.h"
-#include "scene/plugin_registry.h"
+#include "film/film.h"
+#include "film/box_filter.h"
+#include "film/gaussian_filter.h"
+#include "samplers/independent_sampler.h"
+#include "samplers/low_discrepancy_sampler.h"
+#include "samplers/multijitter_sampler.h"
+#include "samplers/stratified_sampler.h"
 #include "sensors/bsdf_visualizer_sensor.h"
 #include "sensors/perspective_sensor.h"
 #include "shapes/disk_shape.h"
@@ -33,7 +33,7 @@
 
 namespace columba {
 
-const PluginRegistry& PluginRegistry::builtin() {
+const PluginRegistry& builtinPlugins() {
   static const PluginRegistry registry = [] {
     PluginRegistry r;
     r.add("integrator", "path", makePathIntegrator);

@@ -104,4 +104,18 @@ class Properties {
   std::vector<Child> children_;
 };
 
+// The plug-in a scene leaves out (e.g. the diffuse BSDF of a shape with none nested), built by
+// its factory with every parameter at its default and reported at `where`.
+template <typename T>
+std::shared_ptr<T> makeDefaultPlugin(std::shared_ptr<Object> (*factory)(const Properties&), const std::string& tag,
+                                     const std::string& type, const SourceLocation& where) {
+  Properties defaults;
+  defaults.tag = tag;
+  defaults.type = type;
+  defaults.location = where;
+  auto object = std::dynamic_pointer_cast<T>(factory(defaults));
+  if (!object) throw InputError(where, "the default " + tag + " '" + type + "' is not a " + tag);
+  return object;
+}
+
 }  // namespace columba

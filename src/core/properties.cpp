@@ -1,4 +1,4 @@
-#include "scene/properties.h"
+#include "core/properties.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The parameters every sampler plug-in shares (Mitsuba 3 names and defaults).
 #include <cstdint>
-#include "scene/properties.h"
+#include "core/properties.h"
 
 namespace columba {
 

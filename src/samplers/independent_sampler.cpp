@@ -1,6 +1,6 @@
-#include "render/samplers/independent_sampler.h"
+#include "samplers/independent_sampler.h"
 
-#include "render/samplers/sampler_parameters.h"
+#include "samplers/sampler_parameters.h"
 
 namespace columba {
 

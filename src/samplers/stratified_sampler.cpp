@@ -1,7 +1,7 @@
-#include "render/samplers/stratified_sampler.h"
+#include "samplers/stratified_sampler.h"
 
-#include "render/samplers/hashed_permutation.h"
-#include "render/samplers/sampler_parameters.h"
+#include "samplers/hashed_permutation.h"
+#include "samplers/sampler_parameters.h"
 
 namespace columba {
 
