@@ -15,8 +15,9 @@ FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh exr_envmap
 deps:
 	@./scripts/install-deps.sh
 
+# CMAKE_FLAGS: further CMake options, e.g. -DCOLUMBA_WARNINGS_AS_ERRORS=ON (as CI builds).
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release > /dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) > /dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
@@ -59,7 +60,7 @@ fuzz-build: deps
 # `make sanitize`: the whole unit suite (GoogleTest) once under ASan + UBSan, built in $(SANITIZE_BUILD);
 # the Python tests are left out (the interpreter is not instrumented).
 sanitize: deps
-	@cmake -S . -B $(SANITIZE_BUILD) -DCOLUMBA_SANITIZE=address,undefined -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	@cmake -S . -B $(SANITIZE_BUILD) -DCOLUMBA_SANITIZE=address,undefined -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CMAKE_FLAGS) \
 	    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG -fno-math-errno" > /dev/null
 	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target columba_tests
 	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 \

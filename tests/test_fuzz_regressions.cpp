@@ -43,9 +43,11 @@ const std::map<std::string, Reader>& readers() {
 
 TEST(FuzzRegressions, EveryDirectoryNamesAReader) {
   ASSERT_TRUE(fs::is_directory(kRegressions));
-  for (const auto& entry : fs::directory_iterator(kRegressions))
-    if (entry.is_directory())
+  for (const auto& entry : fs::directory_iterator(kRegressions)) {
+    if (entry.is_directory()) {
       EXPECT_TRUE(readers().count(entry.path().filename().string())) << entry.path() << " names no reader";
+    }
+  }
 }
 
 TEST(FuzzRegressions, EveryInputIsReadOrRejected) {

@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfRgbaFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <png.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <string>
@@ -198,16 +200,41 @@ TEST_F(ImageFiles, FailedRenameRemovesTheTemporaryFile) {
   }
 }
 
+namespace {
+// Runs `attempt` in a child process that cannot write to `dir` (its write permission removed;
+// for root, whom permissions do not restrict, the child also becomes the unprivileged user
+// nobody); true if the child ran it and it returned true.
+bool inProcessThatCannotWrite(const fs::path& dir, const std::function<bool()>& attempt) {
+  fs::permissions(dir, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                  fs::perm_options::remove);
+  fs::permissions(dir, fs::perms::others_read | fs::perms::others_exec, fs::perm_options::add);
+  pid_t child = ::fork();
+  if (child == 0) {
+    constexpr uid_t kNobody = 65534;
+    if (::geteuid() == 0 && (::setgid(kNobody) != 0 || ::setuid(kNobody) != 0)) ::_exit(2);
+    ::_exit(attempt() ? 0 : 1);
+  }
+  int status = 0;
+  return child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+}  // namespace
+
 TEST_F(ImageFiles, UnwritableDirectoryKeepsTheOldFile) {
-  if (::geteuid() == 0) GTEST_SKIP() << "permissions do not restrict root";
   const std::string target = path("keep.exr");
   writeEXR(target, testImage());
   const std::string good = fileBytes(target);
-  fs::permissions(dir_, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
-                  fs::perm_options::remove);
-  Image other(2, 2);
-  EXPECT_THROW(writeEXR(target, other), std::runtime_error);
-  EXPECT_THROW(writePNG(target, other), std::runtime_error);
+  EXPECT_TRUE(inProcessThatCannotWrite(dir_, [&] {
+    Image other(2, 2);
+    auto fails = [](const std::function<void()>& write) {
+      try {
+        write();
+      } catch (const std::runtime_error&) {
+        return true;
+      }
+      return false;
+    };
+    return fails([&] { writeEXR(target, other); }) && fails([&] { writePNG(target, other); });
+  })) << "writing into a directory without write permission did not fail with an error";
   EXPECT_EQ(fileBytes(target), good);
   EXPECT_EQ(entries(), std::vector<std::string>{"keep.exr"});
 }

@@ -1,5 +1,8 @@
 #include "integrators/path_integrator.h"
 
+#include <map>
+#include <string>
+
 #include "core/sampling.h"
 #include "integrators/direct_light.h"
 
@@ -9,6 +12,22 @@ namespace {
 // Bounds the pass-through steps of one path (a ray crossing a whole feather coat).
 constexpr int kMaxPassThroughSteps = 1024;
 }  // namespace
+
+// The weight of an emitter found by a BSDF-sampled ray, and of one found by emitter sampling.
+float PathIntegrator::hitWeight(bool afterDeltaBounce, float bsdfPdf, float lightPdf) const {
+  if (afterDeltaBounce) return 1.0f;  // no emitter sample could have found it
+  switch (strategy_) {
+    case Strategy::MIS: return powerHeuristic(bsdfPdf, lightPdf);
+    case Strategy::EmitterOnly: return 0.0f;
+    case Strategy::BSDFOnly: return 1.0f;
+  }
+  return 0.0f;
+}
+
+float PathIntegrator::emitterSampleWeight(bool deltaLight, float lightPdf, float bsdfPdf) const {
+  if (deltaLight || strategy_ == Strategy::EmitterOnly) return 1.0f;
+  return powerHeuristic(lightPdf, bsdfPdf);
+}
 
 Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sampler& sampler, const Wavelengths& wl,
                                   uint64_t& rays) const {
@@ -25,7 +44,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     if (!(depth == 0 && hideEmitters_)) {
       EmitterHit seen = emitterSeenAlong(scene, prevP, dir, hit, wl);
       if (!seen.radiance.isZero())
-        L += beta * seen.radiance * (deltaBounce ? 1.0f : powerHeuristic(prevBsdfPdf, seen.lightPdf));
+        L += beta * seen.radiance * hitWeight(deltaBounce, prevBsdfPdf, seen.lightPdf);
     }
     if (!hit) break;
     if (maxDepth_ >= 0 && depth + 1 >= maxDepth_) break;
@@ -34,7 +53,8 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     Vec3 wi = hit->shading.toLocal(-dir);
     // Emitter sampling and BSDF sampling, with one call to the BSDF for both.
     Vec2 uLight = sampler.get2D();
-    std::optional<LightSample> light = bsdf.isDeltaOnly() ? std::nullopt : sampleLight(scene, *hit, wl, uLight);
+    bool sampleEmitters = !bsdf.isDeltaOnly() && strategy_ != Strategy::BSDFOnly;
+    std::optional<LightSample> light = sampleEmitters ? sampleLight(scene, *hit, wl, uLight) : std::nullopt;
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();
     BSDFVertexRequest request;
@@ -46,7 +66,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext, wi, wl, request);
     if (light) {
       if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays))
-        L += beta * ds->value * (ds->deltaLight ? 1.0f : powerHeuristic(ds->lightPdf, ds->bsdfPdf));
+        L += beta * ds->value * emitterSampleWeight(ds->deltaLight, ds->lightPdf, ds->bsdfPdf);
     }
 
     const std::optional<BSDFSample>& bs = queries.sampled;
@@ -77,7 +97,15 @@ std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
   if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
   if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
-  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false));
+  std::string strategy = props.getString("strategy", "mis");
+  static const std::map<std::string, PathIntegrator::Strategy> kStrategies = {
+      {"mis", PathIntegrator::Strategy::MIS},
+      {"emitter", PathIntegrator::Strategy::EmitterOnly},
+      {"bsdf", PathIntegrator::Strategy::BSDFOnly}};
+  auto found = kStrategies.find(strategy);
+  if (found == kStrategies.end())
+    throw props.error("strategy", "strategy must be 'mis', 'emitter' or 'bsdf', not '" + strategy + "'");
+  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false), found->second);
 }
 
 }  // namespace columba

@@ -2,6 +2,10 @@
 // `path`: unidirectional path tracing with next-event estimation and multiple importance
 // sampling of emitters and BSDFs (power heuristic), Russian roulette after `rr_depth`.
 // Pass-through components (barbule gaps) continue the path without counting a bounce.
+// `strategy` (a Columba parameter, as pbrt-v4's simplepath offers) keeps one of the two
+// estimators alone, to check the combination against each: "emitter" finds emitters only by
+// sampling them (and through delta BSDFs), "bsdf" only by hitting them (delta emitters, which
+// no ray hits, then add nothing).
 #include "integrators/integrator.h"
 #include "core/properties.h"
 
@@ -9,15 +13,20 @@ namespace columba {
 
 class PathIntegrator : public Integrator {
  public:
-  PathIntegrator(int maxDepth, int rrDepth, bool hideEmitters)
-      : maxDepth_(maxDepth), rrDepth_(rrDepth), hideEmitters_(hideEmitters) {}
+  enum class Strategy { MIS, EmitterOnly, BSDFOnly };
+  PathIntegrator(int maxDepth, int rrDepth, bool hideEmitters, Strategy strategy = Strategy::MIS)
+      : maxDepth_(maxDepth), rrDepth_(rrDepth), hideEmitters_(hideEmitters), strategy_(strategy) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
 
  private:
+  float hitWeight(bool afterDeltaBounce, float bsdfPdf, float lightPdf) const;
+  float emitterSampleWeight(bool deltaLight, float lightPdf, float bsdfPdf) const;
+
   int maxDepth_;  // longest path in vertices after the camera; -1: unlimited (Mitsuba's meaning)
   int rrDepth_;
   bool hideEmitters_;
+  Strategy strategy_;
 };
 
 std::shared_ptr<Object> makePathIntegrator(const Properties& props);

@@ -1,0 +1,172 @@
+// Light-transport tests with answers known in closed form or from another estimator: a
+// multi-bounce furnace that reaches the Russian-roulette depth, and the path tracer's
+// combination of emitter and BSDF sampling against each strategy alone, with several emitters
+// of different kinds. Each compares a mean with its own standard error, so a bias of a few
+// tenths of a percent fails and noise does not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "render_test_support.h"
+
+using namespace columba;
+using namespace columba::testing;
+
+namespace {
+
+double luminance(const Image& image, int x, int y) {
+  const float* c = image.pixel(x, y);
+  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+struct Estimate {
+  double mean = 0, standardError = 0;
+};
+
+// Mean luminance over the image and its standard error, for images whose pixels are independent
+// estimates of one value.
+Estimate pixelMean(const Image& image) {
+  double sum = 0, sumSquares = 0;
+  const int n = image.width * image.height;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      double v = luminance(image, x, y);
+      sum += v;
+      sumSquares += v * v;
+    }
+  double mean = sum / n, variance = (sumSquares - n * mean * mean) / (n - 1);
+  return {mean, std::sqrt(variance / n)};
+}
+
+// Inside a closed sphere whose inner surface is diffuse with albedo a and emits Le, every ray
+// sees L = Le (1 + a + ... + a^(m-1)) for paths of at most m vertices after the camera, and
+// Le / (1 - a) without a limit. Le is white of luminance 1 (a <spectrum> value, as Mitsuba
+// reads emitters), so the answer is the image's luminance.
+std::string closedDiffuseSphere(float albedo, int maxDepth, int rrDepth) {
+  return R"(<scene version="3.0.0">
+    <integrator type="path"><integer name="max_depth" value=")" + std::to_string(maxDepth) + R"("/>
+      <integer name="rr_depth" value=")" + std::to_string(rrDepth) + R"("/></integrator>
+    <sensor type="perspective"><float name="fov" value="90"/>
+      <transform name="to_world"><lookat origin="0.1, 0.2, 0" target="1, 0.2, 0" up="0, 1, 0"/></transform>
+      <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="24"/>
+        <rfilter type="box"/></film>
+      <sampler type="independent"><integer name="sample_count" value="64"/></sampler></sensor>
+    <shape type="sphere"><float name="radius" value="1"/><boolean name="flip_normals" value="true"/>
+      <bsdf type="diffuse"><float name="reflectance" value=")" + std::to_string(albedo) + R"("/></bsdf>
+      <emitter type="area"><spectrum name="radiance" value="1"/></emitter></shape>
+    </scene>)";
+}
+
+double closedSphereRadiance(double albedo, int maxDepth) {
+  if (maxDepth < 0) return 1.0 / (1.0 - albedo);
+  return (1.0 - std::pow(albedo, maxDepth)) / (1.0 - albedo);
+}
+
+// White's luminance is 1 only to the accuracy of the spectral tables (D65, CIE matching
+// functions) and the wavelength sampling: their agreement, measured, is within 0.1 %.
+constexpr double kWhiteLuminanceTolerance = 0.002;
+// Means further than this many standard errors apart fail (a 1-in-1.7-million chance when the
+// estimators agree and their errors are normal).
+constexpr double kSigmas = 5.0;
+
+}  // namespace
+
+TEST(Transport, ClosedDiffuseSphereMatchesTheGeometricSeries) {
+  const float albedo = 0.8f;
+  struct Depths {
+    int maxDepth, rrDepth;
+  };
+  // Unlimited paths with roulette from the first, third and fifth bounce; limited ones that
+  // stop before, at and after the roulette starts.
+  for (Depths d : {Depths{-1, 1}, Depths{-1, 3}, Depths{-1, 5}, Depths{3, 5}, Depths{8, 2}, Depths{12, 5}}) {
+    Estimate e = pixelMean(renderSceneString(closedDiffuseSphere(albedo, d.maxDepth, d.rrDepth)));
+    double expected = closedSphereRadiance(albedo, d.maxDepth);
+    SCOPED_TRACE("max_depth " + std::to_string(d.maxDepth) + ", rr_depth " + std::to_string(d.rrDepth));
+    EXPECT_NEAR(e.mean, expected, kSigmas * e.standardError + kWhiteLuminanceTolerance * expected)
+        << "standard error " << e.standardError;
+    std::printf("furnace max_depth %3d rr_depth %d: %.4f (closed form %.4f, standard error %.4f)\n", d.maxDepth,
+                d.rrDepth, e.mean, expected, e.standardError);
+  }
+}
+
+namespace {
+
+// A diffuse room corner with a glossy sphere, lit at once by a rectangular area light, a small
+// spherical area light and a uniform sky: three emitters of two kinds, so emitter sampling
+// chooses among them and the choice's probability enters every MIS weight.
+std::string threeEmitterScene(const std::string& strategy) {
+  return R"(<scene version="3.0.0">
+    <integrator type="path"><integer name="max_depth" value="4"/>
+      <string name="strategy" value=")" + strategy + R"("/></integrator>
+    <sensor type="perspective"><float name="fov" value="50"/>
+      <transform name="to_world"><lookat origin="0, 1.2, 4" target="0, 0.3, 0" up="0, 1, 0"/></transform>
+      <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="12"/>
+        <rfilter type="box"/></film>
+      <sampler type="independent"><integer name="sample_count" value="256"/></sampler></sensor>
+    <shape type="rectangle"><transform name="to_world"><scale value="3"/><rotate x="1" angle="-90"/></transform>
+      <bsdf type="diffuse"><rgb name="reflectance" value="0.7, 0.6, 0.5"/></bsdf></shape>
+    <shape type="rectangle"><transform name="to_world"><scale value="3"/><translate z="-1.5"/></transform>
+      <bsdf type="diffuse"><float name="reflectance" value="0.6"/></bsdf></shape>
+    <shape type="sphere"><point name="center" x="0.4" y="0.5" z="0"/><float name="radius" value="0.5"/>
+      <bsdf type="roughplastic"><float name="alpha" value="0.3"/></bsdf></shape>
+    <shape type="rectangle"><transform name="to_world"><scale value="0.6"/><rotate x="1" angle="90"/>
+        <translate x="-0.6" y="2" z="0"/></transform>
+      <emitter type="area"><spectrum name="radiance" value="6"/></emitter></shape>
+    <shape type="sphere"><point name="center" x="-0.8" y="0.35" z="0.6"/><float name="radius" value="0.2"/>
+      <emitter type="area"><rgb name="radiance" value="8, 4, 2"/></emitter></shape>
+    <emitter type="constant"><spectrum name="radiance" value="0.5"/></emitter>
+    </scene>)";
+}
+
+// The image's mean luminance over `renders` renders with different seeds, and its standard
+// error from their spread.
+Estimate meanOverSeeds(const std::string& strategy, int renders) {
+  std::vector<double> means;
+  for (int k = 0; k < renders; ++k) {
+    RenderSettings settings;
+    settings.seed = 1000 + k;
+    Image image = renderSceneString(threeEmitterScene(strategy), settings);
+    double sum = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
+    means.push_back(sum / (image.width * image.height));
+  }
+  double mean = 0, variance = 0;
+  for (double m : means) mean += m / renders;
+  for (double m : means) variance += (m - mean) * (m - mean) / (renders - 1);
+  return {mean, std::sqrt(variance / renders)};
+}
+
+}  // namespace
+
+TEST(Transport, MISAgreesWithEmitterSamplingAndBSDFSamplingAlone) {
+  const int renders = 8;
+  Estimate mis = meanOverSeeds("mis", renders), emitter = meanOverSeeds("emitter", renders),
+           bsdf = meanOverSeeds("bsdf", renders);
+  std::printf("mean luminance: mis %.5f +- %.5f, emitter sampling %.5f +- %.5f, BSDF sampling %.5f +- %.5f\n",
+              mis.mean, mis.standardError, emitter.mean, emitter.standardError, bsdf.mean, bsdf.standardError);
+  auto apart = [](const Estimate& a, const Estimate& b) {
+    return std::abs(a.mean - b.mean) / std::hypot(a.standardError, b.standardError);
+  };
+  EXPECT_LT(apart(mis, emitter), kSigmas) << "MIS and emitter sampling disagree";
+  EXPECT_LT(apart(mis, bsdf), kSigmas) << "MIS and BSDF sampling disagree";
+  EXPECT_LT(apart(emitter, bsdf), kSigmas) << "emitter and BSDF sampling disagree";
+  // The combination must also be the least noisy of the three.
+  EXPECT_LT(mis.standardError, emitter.standardError * 1.2);
+  EXPECT_LT(mis.standardError, bsdf.standardError);
+}
+
+TEST(Transport, StrategyOtherThanTheThreeIsAnError) {
+  std::string xml = R"(<scene version="3.0.0"><integrator type="path"><string name="strategy" value="light"/>
+    </integrator></scene>)";
+  try {
+    renderSceneString(xml);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("strategy must be 'mis', 'emitter' or 'bsdf', not 'light'"),
+              std::string::npos)
+        << e.what();
+  }
+}
