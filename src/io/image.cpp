@@ -50,23 +50,31 @@ ImageMetadata withSoftware(const ImageMetadata& metadata) {
   return all;
 }
 
-void writeEXRFile(const std::string& file, const Image& image, const ImageMetadata& metadata) {
-  Imf::Header header(image.width, image.height);
+// The image's pixels lie at `window` of a frame of frameWidth x frameHeight (by default, the
+// image is the whole frame).
+void writeEXRFile(const std::string& file, const Image& image, const ImageMetadata& metadata,
+                  const PixelRect* window = nullptr, int frameWidth = 0, int frameHeight = 0) {
+  const Imath::Box2i data = window ? Imath::Box2i({window->x0, window->y0}, {window->x1 - 1, window->y1 - 1})
+                                   : Imath::Box2i({0, 0}, {image.width - 1, image.height - 1});
+  const Imath::Box2i display =
+      window ? Imath::Box2i({0, 0}, {frameWidth - 1, frameHeight - 1}) : data;
+  Imf::Header header(display, data);
   for (const auto& [name, text] : metadata) header.insert(name, Imf::StringAttribute(text));
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   Imf::FrameBuffer frame;
   const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
-  const char* base = reinterpret_cast<const char*>(image.rgb.data());
-  frame.insert("R", Imf::Slice(Imf::FLOAT, const_cast<char*>(base), xStride, yStride));
-  frame.insert("G", Imf::Slice(Imf::FLOAT, const_cast<char*>(base + sizeof(float)), xStride, yStride));
-  frame.insert("B", Imf::Slice(Imf::FLOAT, const_cast<char*>(base + 2 * sizeof(float)), xStride, yStride));
+  auto slice = [&](const float* first, size_t x, size_t y) {
+    return Imf::Slice::Make(Imf::FLOAT, first, data, x, y);
+  };
+  frame.insert("R", slice(image.rgb.data(), xStride, yStride));
+  frame.insert("G", slice(image.rgb.data() + 1, xStride, yStride));
+  frame.insert("B", slice(image.rgb.data() + 2, xStride, yStride));
   const SpectralBands& bands = image.spectral;
   const size_t bandStride = bands.count() * sizeof(float);
   for (size_t b = 0; b < bands.count(); ++b) {
     std::string name = spectralChannelName(bands.centres[b]);
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    const char* first = reinterpret_cast<const char*>(bands.values.data()) + b * sizeof(float);
-    frame.insert(name, Imf::Slice(Imf::FLOAT, const_cast<char*>(first), bandStride, bandStride * size_t(image.width)));
+    frame.insert(name, slice(bands.values.data() + b, bandStride, bandStride * size_t(image.width)));
   }
 
   // OpenEXR finishes the file in its destructor, which swallows errors: the stream's state
@@ -240,6 +248,27 @@ void writeEXR(const std::string& path, const Image& image, const ImageMetadata& 
   replaceTogether({{path, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }}});
 }
 
+void writeEXRWindow(const std::string& path, const Image& image, const PixelRect& window, int frameWidth,
+                    int frameHeight, const ImageMetadata& metadata) {
+  checkImage(path, image);
+  if (window.width() != image.width || window.height() != image.height || window.x0 < 0 || window.y0 < 0 ||
+      window.x1 > frameWidth || window.y1 > frameHeight)
+    throw std::runtime_error(fmt::format("cannot write '{}': an image of {} x {} pixels does not fill the window "
+                                         "[{}, {}) x [{}, {}) of a frame of {} x {}",
+                                         path, image.width, image.height, window.x0, window.x1, window.y0, window.y1,
+                                         frameWidth, frameHeight));
+  const ImageMetadata all = withSoftware(metadata);
+  replaceTogether({{path, "EXR", [&](const std::string& file) {
+                      writeEXRFile(file, image, all, &window, frameWidth, frameHeight);
+                    }}});
+}
+
+std::string metadataValue(const ImageMetadata& metadata, const std::string& name) {
+  for (const auto& [key, text] : metadata)
+    if (key == name) return text;
+  return "";
+}
+
 void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
   const ImageMetadata all = withSoftware(metadata);
@@ -323,18 +352,30 @@ static void checkEXRAttributeSizes(const std::string& path) {
   }
 }
 
-Image readEXR(const std::string& path) {
+Image readEXR(const std::string& path) { return readEXRFile(path).image; }
+
+EXRImageFile readEXRFile(const std::string& path, bool pixels) {
   try {
     checkEXRAttributeSizes(path);
     Imf::InputFile file(path.c_str());
+    EXRImageFile result;
+    for (auto a = file.header().begin(); a != file.header().end(); ++a)
+      if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&a.attribute()))
+        result.metadata.emplace_back(a.name(), text->value());
+    const Imath::Box2i window = file.header().dataWindow();
+    const Imath::Box2i display = file.header().displayWindow();
+    result.dataWindow = {window.min.x, window.min.y, window.max.x + 1, window.max.y + 1};
+    result.frameWidth = display.max.x - display.min.x + 1;
+    result.frameHeight = display.max.y - display.min.y + 1;
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     if (!rgb && !channels.findChannel("Y"))
       throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
-    const Imath::Box2i window = file.header().dataWindow();
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
     checkEXRPixelCount(path, width, height);
-    Image image(static_cast<int>(width), static_cast<int>(height));
+    if (!pixels) return result;
+    Image& image = result.image;
+    image = Image(static_cast<int>(width), static_cast<int>(height));
     const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
     auto slice = [&](int c) { return Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, window, xStride, yStride); };
     Imf::FrameBuffer frame;
@@ -361,7 +402,7 @@ Image readEXR(const std::string& path) {
     file.readPixels(window.min.y, window.max.y);
     if (!rgb)  // grey
       for (size_t i = 0; i < image.rgb.size(); i += 3) image.rgb[i + 1] = image.rgb[i + 2] = image.rgb[i];
-    return image;
+    return result;
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

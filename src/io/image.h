@@ -31,6 +31,27 @@ struct Image {
 // Text recorded in an image file: EXR string attributes, PNG text chunks (name, text). Every
 // file written also records "Software" (Columba and its version).
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+// The text recorded under `name`, or "" if there is none.
+std::string metadataValue(const ImageMetadata& metadata, const std::string& name);
+
+// A rectangle of pixels, [x0, x1) x [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  bool operator==(const PixelRect& o) const { return x0 == o.x0 && y0 == o.y0 && x1 == o.x1 && y1 == o.y1; }
+};
+
+// An EXR file as its header describes it: its pixels lie in `dataWindow` of a frame of
+// frameWidth x frameHeight pixels (its display window, from the origin), and its string
+// attributes are `metadata`. A whole image's data window is the whole frame.
+struct EXRImageFile {
+  Image image;  // the data window's pixels (empty when only the header was read)
+  ImageMetadata metadata;
+  PixelRect dataWindow;
+  int frameWidth = 0, frameHeight = 0;
+};
 
 // Writers go through a temporary file renamed into place, so a failed or interrupted write
 // never replaces a good file. They throw std::runtime_error naming the path on failure.
@@ -49,8 +70,17 @@ enum class ImageFormat { EXR, PNG };
 // and for one whose directory does not exist: checked before work whose result it will hold.
 ImageFormat checkOutputImagePath(const std::string& path);
 
+// A piece of a larger frame (a part of a split render): `image` holds the pixels of `window`,
+// which lies in a frame of frameWidth x frameHeight pixels. Float32 RGB and spectral bands, the
+// EXR's data window being `window` and its display window the frame.
+void writeEXRWindow(const std::string& path, const Image& image, const PixelRect& window, int frameWidth,
+                    int frameHeight, const ImageMetadata& metadata = {});
+
 // RGB (or Y) and any spectral bands; throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
+// The same with the header's windows and string attributes; with `pixels` false, only the header
+// is read (the image stays empty).
+EXRImageFile readEXRFile(const std::string& path, bool pixels = true);
 // An 8-bit PNG (grey, RGB, with or without alpha) as linear values; throws InputError naming
 // the path if it cannot be read.
 Image readPNG(const std::string& path);
