@@ -4,6 +4,7 @@
 // thread count.
 #include <atomic>
 #include <functional>
+#include <vector>
 #include "io/image.h"
 #include "scene/scene.h"
 
@@ -20,6 +21,13 @@ struct RenderSettings {
   float spectralMin = 400.0f, spectralMax = 700.0f;
   // Called from worker threads as tiles finish (done, total); must be thread-safe.
   std::function<void(int, int)> onTileDone;
+  // A piece of the render. `window` (empty: the whole film) limits it to those pixels, and the
+  // image returned holds just them. [sampleBegin, sampleEnd) limits every pixel to those of its
+  // sample indices 0 .. spp - 1 (sampleEnd 0: spp), and each pixel holds their mean. A pixel's
+  // samples depend only on (pixel, sample index, seed), so a window of a render is bit for bit
+  // the same pixels of the whole render.
+  PixelRect window;
+  int sampleBegin = 0, sampleEnd = 0;
 };
 
 struct RenderStats {
@@ -31,5 +39,12 @@ struct RenderStats {
 };
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats);
+
+// The relative cost of rendering each row of the film, from a pilot that traces sample 0 of a
+// sparse grid of pixels (about 16,000 of them): for each row, the rays its pixels trace, with
+// a small cost for pixels the camera does not see. Deterministic (integer counts of the same
+// sample paths the render traces), so every piece of a split render computes the same costs.
+// Uses settings.seed and settings.threads only.
+std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings& settings);
 
 }  // namespace columba
