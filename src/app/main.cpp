@@ -8,8 +8,10 @@
 #include "app/cli_checks.h"
 #include "app/feather_command.h"
 #include "app/fit_command.h"
+#include "app/merge_command.h"
 #include "app/montage_command.h"
 #include "app/render_command.h"
+#include "app/slurm_command.h"
 #include "core/version.h"
 
 namespace {
@@ -59,6 +61,9 @@ int main(int argc, char** argv) {
   columba::addBSDFCommand(app);
   columba::addMontageCommand(app);
   columba::addFitCommand(app);
+  columba::addMergeCommand(app);
+  columba::addCompareCommand(app);
+  columba::addSlurmCommand(app);
   columba::requireFiniteNumbers(app);
   if (std::string message = unknownCommandMessage(app, argc, argv); !message.empty()) {
     fmt::print(stderr, "error: {}\nRun with --help for more information.\n", message);

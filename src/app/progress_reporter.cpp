@@ -14,8 +14,19 @@ std::string formatDuration(double seconds) {
   return fmt::format("{}h{:02d}m", s / 3600, (s / 60) % 60);
 }
 
-ProgressReporter::ProgressReporter(std::string label)
-    : label_(std::move(label)), terminal_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
+std::string OverallProgress::eta(double itemFraction) const {
+  const double f = fraction(itemFraction);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (f <= 0.0) return "ETA unknown";
+  if (f >= 1.0) return "done";
+  return "ETA " + formatDuration(elapsed * (1.0 - f) / f);
+}
+
+ProgressReporter::ProgressReporter(std::string label, const OverallProgress* overall)
+    : label_(std::move(label)),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
+      overall_(overall) {}
 
 void ProgressReporter::update(int done, int total) {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -31,12 +42,18 @@ void ProgressReporter::update(int done, int total) {
     std::string bar(size_t(filled), '=');
     bar.resize(width, ' ');
     std::string eta = fraction > 0 && done < total ? " ETA " + formatDuration(elapsed * (1.0 - fraction) / fraction) : "";
-    fmt::print(stderr, "\r{} [{}] {:5.1f}% {}{}   ", label_, bar, 100.0 * fraction, formatDuration(elapsed), eta);
+    std::string all = overall_ ? fmt::format(" | all {:.0f}% {}", 100.0 * overall_->fraction(fraction),
+                                             overall_->eta(fraction))
+                               : "";
+    fmt::print(stderr, "\r{} [{}] {:5.1f}% {}{}{}   ", label_, bar, 100.0 * fraction, formatDuration(elapsed), eta, all);
   } else {
     int percent = int(fraction * 100.0);
     if (percent / 10 == lastPercentPrinted_ / 10 && done < total) return;
     lastPercentPrinted_ = percent;
-    fmt::print(stderr, "{}: {}% after {}\n", label_, percent, formatDuration(elapsed));
+    std::string all = overall_ ? fmt::format("; all frames {:.0f}%, {}", 100.0 * overall_->fraction(fraction),
+                                             overall_->eta(fraction))
+                               : "";
+    fmt::print(stderr, "{}: {}% after {}{}\n", label_, percent, formatDuration(elapsed), all);
   }
   std::fflush(stderr);
 }

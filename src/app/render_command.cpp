@@ -3,12 +3,21 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <set>
 
 #include "builtin/default_scene.h"
+#include "builtin/default_scene_xml.h"
 #include "app/interruption.h"
 #include "app/progress_reporter.h"
 #include "builtin/builtin_plugins.h"
+#include "core/version.h"
+#include "distribute/manifest.h"
+#include "distribute/pieces.h"
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
@@ -18,13 +27,12 @@ namespace columba {
 namespace {
 
 struct RenderOptions {
-  std::string scenePath;
+  SceneOptions scene;
   std::string output;
-  std::vector<std::string> defines;
-  std::string spp, threads;  // checked by parseCount, so that every value gets the same message
-  uint64_t seed = 0;
-  bool spectral = false;  // radiance per wavelength bin in the EXR besides RGB
-  std::string bins = "16";
+  std::string threads;
+  std::string frame;           // --frame I: only frame I of the sweep
+  std::string part, pass;      // --part K/N, --pass K/N
+  std::string manifest;        // --manifest FILE
 };
 
 Defines parseDefines(const std::vector<std::string>& items) {
@@ -43,13 +51,9 @@ Defines parseDefines(const std::vector<std::string>& items) {
 struct OutputPair {
   std::filesystem::path exr, png;
 
-  // From -o (or, without one, the scene's name in the working directory); throws before any work
-  // for a name Columba cannot write.
-  static OutputPair fromOption(const RenderOptions& options) {
-    namespace fs = std::filesystem;
-    fs::path given = options.output;
-    if (given.empty())
-      given = (options.scenePath.empty() ? std::string("default") : fs::path(options.scenePath).stem().string()) + ".exr";
+  // Throws before any work for a name Columba cannot write.
+  static OutputPair fromPath(const std::string& path) {
+    std::filesystem::path given = path;
     ImageFormat format = checkOutputImagePath(given.string());
     OutputPair pair{given, given};
     if (format == ImageFormat::EXR) pair.png.replace_extension(".png");
@@ -60,16 +64,219 @@ struct OutputPair {
   }
 
   // Where an interrupted render goes, so that it never replaces a finished image: OUT.partial.exr.
-  OutputPair partial() const {
-    auto mark = [](std::filesystem::path p) {
-      std::filesystem::path extension = p.extension();
-      return p.replace_extension().concat(".partial").concat(extension.string());
-    };
-    return {mark(exr), mark(png)};
-  }
+  OutputPair partial() const { return {partialFileName(exr.string()), partialFileName(png.string())}; }
 };
 
-// A whole number given for `option`, or 0 if it was not given.
+std::string defaultOutput(const std::string& scenePath) {
+  return (scenePath.empty() ? std::string("default") : std::filesystem::path(scenePath).stem().string()) + ".exr";
+}
+
+std::string readSceneText(const std::string& scenePath) {
+  if (scenePath.empty()) return kDefaultSceneXML;
+  std::ifstream in(scenePath, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The manifest of a local sweep: written with every frame pending, then as frames finish.
+std::string defaultManifestPath(const RenderOptions& options) {
+  namespace fs = std::filesystem;
+  if (!options.scene.framesPattern.empty()) {
+    fs::path dir = fs::path(options.scene.framesPattern).parent_path();
+    return (dir / "manifest.json").string();
+  }
+  fs::path out = options.output.empty() ? fs::path(defaultOutput(options.scene.scenePath)) : fs::path(options.output);
+  return out.replace_extension().string() + ".manifest.json";
+}
+
+std::string frameLabel(const SweepFrame& frame) {
+  std::string label;
+  for (const auto& [name, value] : frame.values) label += (label.empty() ? "" : " ") + name + "=" + value;
+  return label;
+}
+
+int runRender(const RenderOptions& options) {
+  const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
+  const int threads = parseCount("--threads", options.threads, 1, 65536);
+  const int bins = parseCount("--bins", options.scene.bins, 1, 470);
+  std::optional<PieceIndex> part, pass;
+  if (!options.part.empty()) part = parsePieceIndex("--part", options.part, 65536);
+  if (!options.pass.empty()) pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
+  const FramePlan plan = planFrames(options.scene, options.output);
+  const int frameCount = int(plan.frames.size());
+  std::vector<int> selected;
+  if (!options.frame.empty()) {
+    int f = parseCount("--frame", options.frame, 0, 1 << 30);
+    if (f >= frameCount)
+      throw std::runtime_error(fmt::format("--frame {}: the sweep has {} frame{} (0 to {})", f, frameCount,
+                                           frameCount == 1 ? "" : "s", frameCount - 1));
+    selected.push_back(f);
+  } else {
+    for (int f = 0; f < frameCount; ++f) selected.push_back(f);
+  }
+  const bool piece = part || pass;
+  // Every output is checked before the first frame is rendered.
+  std::vector<OutputPair> outputs;
+  for (const std::string& file : plan.files) {
+    outputs.push_back(OutputPair::fromPath(file));
+    if (piece) checkOutputImagePath(pieceFileName(file, part, pass));
+  }
+
+  // A sweep rendered here in full keeps a manifest; the pieces of a split render leave that to
+  // whoever split it (`columba slurm`), since many of them run at once.
+  const bool sweeping = !plan.axes.empty();
+  const bool keepManifest = (sweeping || !options.manifest.empty()) && options.frame.empty() && !piece;
+  const std::string manifestPath = options.manifest.empty() ? defaultManifestPath(options) : options.manifest;
+  Manifest manifest;
+  if (keepManifest) {
+    manifest.columbaVersion = kColumbaVersion;
+    manifest.scene = options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath;
+    manifest.sceneHash = plan.sceneHash;
+    manifest.defines = plan.defines;
+    manifest.sweeps = plan.axes;
+    manifest.spp = sppOption;
+    manifest.seed = options.scene.seed;
+    for (int f = 0; f < frameCount; ++f) {
+      ManifestFrame frame;
+      frame.frame = f;
+      frame.defines = plan.frameDefines(f);
+      frame.seed = options.scene.seed;
+      frame.spp = sppOption;
+      frame.output = outputs[size_t(f)].exr.string();
+      manifest.frames.push_back(frame);
+    }
+    writeManifest(manifestPath, manifest);
+  }
+
+  // Kept until the last image is written: a second Ctrl-C while writing exits at once.
+  InterruptionGuard interruption;
+  OverallProgress overall;
+  overall.total = int(selected.size());
+  overall.start = std::chrono::steady_clock::now();
+  std::set<std::string> warned;
+  double renderSeconds = 0.0;
+  for (size_t i = 0; i < selected.size(); ++i) {
+    const int f = selected[i];
+    const Defines defines = plan.frameDefines(f);
+    const std::string label = frameLabel(plan.frames[size_t(f)]);
+    if (sweeping)
+      fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
+    ParsedScene parsed = options.scene.scenePath.empty()
+                             ? loadDefaultScene(defines)
+                             : loadSceneFile(options.scene.scenePath, defines, builtinPlugins());
+    SourceLocation source{options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath, 0};
+    for (const std::string& name : parsed.unusedDefines)
+      if (warned.insert(name).second)
+        fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
+                   defines.at(name), name);
+    Scene scene(parsed, source);
+
+    const Film& film = scene.sensor().film();
+    int spp = sppOption > 0 ? sppOption : scene.sensor().sampler().sampleCount();
+    RenderSettings settings;
+    settings.samplesPerPixel = spp;
+    settings.seed = options.scene.seed;
+    settings.threads = threads;
+    if (options.scene.spectral) settings.spectralBins = bins;
+    PieceInfo info;
+    info.scene = source.file;
+    info.sceneHash = plan.sceneHash;
+    info.defines = describeDefines(defines);
+    info.seed = options.scene.seed;
+    info.spp = spp;
+    info.frameWidth = film.width();
+    info.frameHeight = film.height();
+    if (options.scene.spectral)
+      info.spectral = fmt::format("{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
+                                  "(S0.<centre>nm)",
+                                  bins, (settings.spectralMax - settings.spectralMin) / bins, settings.spectralMin,
+                                  settings.spectralMax);
+    std::string pieceText;
+    if (part) {
+      // Bands of rows of about equal cost, from a pilot every part computes alike.
+      info.part = part;
+      info.partBounds = part->count == 1 ? std::vector<int>{0, film.height()}
+                                         : balancedRowBands(estimateRowCosts(scene, settings), part->count);
+      settings.window = partWindow(info.partBounds, part->index, film.width());
+      pieceText = fmt::format(", part {} (rows {}-{})", part->str(), settings.window.y0, settings.window.y1 - 1);
+    }
+    if (pass) {
+      info.pass = pass;
+      std::tie(info.sampleBegin, info.sampleEnd) = passSamples(*pass, spp);
+      settings.sampleBegin = info.sampleBegin;
+      settings.sampleEnd = info.sampleEnd;
+      pieceText += fmt::format(", pass {} (samples {}:{})", pass->str(), info.sampleBegin, info.sampleEnd);
+    }
+    fmt::print(stderr, "Rendering {} ({}x{}, {} spp{}, {} shapes, {} primitives)\n", source.file, film.width(),
+               film.height(), spp, pieceText, scene.shapeCount(), scene.primitiveCount());
+
+    overall.done = int(i);
+    ProgressReporter progress(sweeping ? fmt::format("frame {}/{}", i + 1, selected.size()) : "render",
+                              sweeping ? &overall : nullptr);
+    settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
+    settings.cancel = &interruption.requested();
+    RenderStats stats;
+    Image image = renderImage(scene, settings, stats);
+    progress.finish();
+    renderSeconds += stats.seconds;
+
+    info.complete = stats.complete;
+    info.seconds = stats.seconds;
+    const ImageMetadata metadata = pieceMetadata(info);
+    const OutputPair& output = outputs[size_t(f)];
+    std::string written;
+    if (piece) {
+      const std::string file = pieceFileName(output.exr.string(), part, pass);
+      written = stats.complete ? file : partialFileName(file);
+      writeEXRWindow(written, image, settings.window.empty() ? PixelRect{0, 0, film.width(), film.height()} : settings.window,
+                     film.width(), film.height(), metadata);
+    } else {
+      const OutputPair pair = stats.complete ? output : output.partial();
+      writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);
+      written = pair.exr.string() + ", " + pair.png.string();
+    }
+    std::string dropped = stats.nonFiniteSamples == 0
+                              ? ""
+                              : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
+    fmt::print("{} {}{}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}\n",
+               stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file,
+               sweeping ? " (" + label + ")" : "", stats.seconds, stats.samples / stats.seconds * 1e-6,
+               stats.rays / stats.seconds * 1e-6, dropped, written);
+    std::fflush(stdout);
+    if (keepManifest) {
+      ManifestFrame& frame = manifest.frames[size_t(f)];
+      frame.status = stats.complete ? "done" : "interrupted";
+      frame.spp = spp;
+      frame.seconds = stats.seconds;
+      if (!stats.complete) frame.output = output.partial().exr.string();
+      writeManifest(manifestPath, manifest);
+    }
+    if (!stats.complete) return 128 + interruption.signalNumber();
+    if (sweeping && selected.size() > 1) {
+      overall.done = int(i) + 1;
+      fmt::print(stderr, "Frame {} done in {}; {} of {} frames, {}\n", f, formatDuration(stats.seconds), i + 1,
+                 selected.size(), overall.eta(0.0));
+    }
+  }
+  if (sweeping && selected.size() > 1)
+    fmt::print("Rendered {} frames: {:.2f} s rendering, {:.2f} s in all{}\n", selected.size(), renderSeconds,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - overall.start).count(),
+               keepManifest ? " (manifest: " + manifestPath + ")" : "");
+  return 0;
+}
+}  // namespace
+
+std::map<std::string, std::string> FramePlan::frameDefines(int f) const {
+  std::map<std::string, std::string> all = defines;
+  for (const auto& [name, value] : frames[size_t(f)].values) all[name] = value;
+  return all;
+}
+
+std::string describeDefines(const std::map<std::string, std::string>& defines) {
+  std::string text;
+  for (const auto& [name, value] : defines) text += (text.empty() ? "" : "\n") + name + "=" + value;
+  return text;
+}
+
 int parseCount(const char* option, const std::string& text, int lowest, int highest) {
   if (text.empty()) return 0;
   long long value = 0;
@@ -81,87 +288,58 @@ int parseCount(const char* option, const std::string& text, int lowest, int high
   return int(value);
 }
 
-std::string describeDefines(const Defines& defines) {
-  std::string text;
-  for (const auto& [name, value] : defines) text += (text.empty() ? "" : "\n") + name + "=" + value;
-  return text;
-}
-
-int runRender(const RenderOptions& options) {
-  const int sppOption = parseCount("--spp", options.spp, 1, kMaxSamplesPerPixel);
-  const int threads = parseCount("--threads", options.threads, 1, 65536);
-  const int bins = parseCount("--bins", options.bins, 1, 470);
+FramePlan planFrames(const SceneOptions& options, const std::string& output) {
   if (!options.scenePath.empty() && !std::filesystem::is_regular_file(options.scenePath))
     throw std::runtime_error("scene file '" + options.scenePath + "' does not exist or is not a regular file");
-  const OutputPair outputs = OutputPair::fromOption(options);
-
-  Defines defines = parseDefines(options.defines);
-  ParsedScene parsed = options.scenePath.empty() ? loadDefaultScene(defines)
-                                                 : loadSceneFile(options.scenePath, defines, builtinPlugins());
-  SourceLocation source{options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
-  for (const std::string& name : parsed.unusedDefines)
-    fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
-               defines.at(name), name);
-  Scene scene(parsed, source);
-
-  const Film& film = scene.sensor().film();
-  int spp = sppOption > 0 ? sppOption : scene.sensor().sampler().sampleCount();
-  fmt::print(stderr, "Rendering {} ({}x{}, {} spp, {} shapes, {} primitives)\n", source.file, film.width(),
-             film.height(), spp, scene.shapeCount(), scene.primitiveCount());
-
-  ProgressReporter progress("render");
-  RenderSettings settings;
-  settings.samplesPerPixel = spp;
-  settings.seed = options.seed;
-  settings.threads = threads;
-  if (options.spectral) settings.spectralBins = bins;
-  settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
-  // Kept until the image is written: a second Ctrl-C while writing exits at once.
-  InterruptionGuard interruption;
-  settings.cancel = &interruption.requested();
-  RenderStats stats;
-  Image image = renderImage(scene, settings, stats);
-  progress.finish();
-
-  ImageMetadata metadata = {{"Scene", source.file},
-                            {"Defines", describeDefines(defines)},
-                            {"Samples per pixel", std::to_string(spp)},
-                            {"Seed", std::to_string(options.seed)},
-                            {"Render time", fmt::format("{:.3f} s", stats.seconds)},
-                            {"Status", stats.complete ? "complete" : "interrupted"}};
-  if (options.spectral)
-    metadata.emplace_back("Spectral channels", fmt::format("{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per "
-                                                           "nm over each bin (S0.<centre>nm)",
-                                                           bins, (settings.spectralMax - settings.spectralMin) / bins,
-                                                           settings.spectralMin, settings.spectralMax));
-  const OutputPair written = stats.complete ? outputs : outputs.partial();
-  writeEXRAndPNG(written.exr.string(), written.png.string(), image, metadata);
-  std::string dropped = stats.nonFiniteSamples == 0
-                            ? ""
-                            : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
-  fmt::print("{} {}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}, {}\n",
-             stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file, stats.seconds,
-             stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, dropped, written.exr.string(),
-             written.png.string());
-  return stats.complete ? 0 : 128 + interruption.signalNumber();
+  FramePlan plan;
+  plan.defines = parseDefines(options.defines);
+  for (const std::string& spec : options.sweeps) {
+    plan.axes.push_back(parseSweep(spec));
+    if (plan.defines.count(plan.axes.back().name))
+      throw std::runtime_error(fmt::format("-D {0}=... and --sweep {0}=... both set ${0}; give one of them",
+                                           plan.axes.back().name));
+  }
+  plan.frames = expandSweeps(plan.axes);
+  plan.files = frameFiles(output.empty() ? defaultOutput(options.scenePath) : output, options.framesPattern, plan.frames);
+  plan.sceneHash = textHash(readSceneText(options.scenePath));
+  return plan;
 }
-}  // namespace
+
+void addSceneOptions(CLI::App* cmd, SceneOptions& options) {
+  cmd->add_option("scene", options.scenePath, "Scene file (XML); none: the built-in default scene");
+  cmd->add_option("-D,--define", options.defines, "Set a scene parameter: -D name=value (repeatable)")
+      ->allow_extra_args(false);  // one name=value per -D, so that a scene file may follow
+  cmd->add_option("--spp", options.spp,
+                  fmt::format("Samples per pixel, 1 to {} (default: the scene's sampler)", kMaxSamplesPerPixel));
+  cmd->add_option("--seed", options.seed, "Random seed; the same seed gives the same image");
+  cmd->add_flag("--spectral", options.spectral,
+                "Also write radiance per wavelength bin over 400-700 nm into the EXR (channels S0.<centre>nm)");
+  cmd->add_option("--bins", options.bins, "Wavelength bins for --spectral, 1 to 470 (default 16)");
+  cmd->add_option("--sweep", options.sweeps,
+                  "Render one frame per value of a scene variable: NAME=START:STOP:STEP (STOP included) or "
+                  "NAME=v1,v2,...; several --sweep form a grid (the first varies slowest)")
+      ->allow_extra_args(false);
+  cmd->add_option("--frames", options.framesPattern,
+                  "The frames' file names: %d or %03d is the frame index, {NAME} a swept value, {NAME:03} the "
+                  "value formatted (default: OUT_NAME=VALUE.exr from -o)");
+}
 
 void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
-  cmd->add_option("scene", options->scenePath, "Scene file (XML); none: the built-in default scene");
+  addSceneOptions(cmd, options->scene);
   cmd->add_option("-o,--output", options->output,
                   "Output image, .exr or .png: the other of the two is written beside it (default: SCENE.exr)");
-  cmd->add_option("-D,--define", options->defines, "Set a scene parameter: -D name=value (repeatable)")
-      ->allow_extra_args(false);  // one name=value per -D, so that a scene file may follow
-  cmd->add_option("--spp", options->spp,
-                  fmt::format("Samples per pixel, 1 to {} (default: the scene's sampler)", kMaxSamplesPerPixel));
   cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)");
-  cmd->add_option("--seed", options->seed, "Random seed; the same seed gives the same image");
-  cmd->add_flag("--spectral", options->spectral,
-                "Also write radiance per wavelength bin over 400-700 nm into the EXR (channels S0.<centre>nm)");
-  cmd->add_option("--bins", options->bins, "Wavelength bins for --spectral, 1 to 470 (default 16)");
+  cmd->add_option("--frame", options->frame, "Render only this frame of the sweep (0-based, as in the manifest)");
+  cmd->add_option("--part", options->part,
+                  "Render only the K-th of N bands of rows (of about equal cost) to OUT.partKofN.exr, for "
+                  "`columba merge`: K/N");
+  cmd->add_option("--pass", options->pass,
+                  "Render only the K-th of N ranges of every pixel's sample indices to OUT.passKofN.exr, for "
+                  "`columba merge`: K/N");
+  cmd->add_option("--manifest", options->manifest,
+                  "The sweep's manifest, JSON (default: OUT.manifest.json, or manifest.json beside --frames)");
   cmd->callback([options] {
     int code = runRender(*options);
     if (code != 0) throw CLI::RuntimeError(code);

@@ -1,0 +1,302 @@
+#include "app/slurm_command.h"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+
+#include "app/render_command.h"
+#include "core/version.h"
+#include "distribute/manifest.h"
+#include "distribute/slurm.h"
+#include "samplers/sampler_parameters.h"
+
+namespace columba {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SlurmOptions {
+  SceneOptions scene;
+  std::string parts = "1", passes = "1";
+  std::string partition, time;
+  std::string cpusPerTask = "1";
+  std::string outDir;
+  std::string jobName;
+  bool submit = false;
+};
+
+std::string nowISO() {
+  std::time_t t = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S%z", std::localtime(&t));
+  return text;
+}
+
+// A finished image (whole or piece) of this render at `path`: complete, of the same scene text,
+// defines and seed.
+bool finishedImage(const std::string& path, const Manifest& manifest, const ManifestFrame& frame) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  try {
+    PieceInfo info = pieceInfoFromFile(path, readEXRFile(path, false));
+    return info.complete && info.sceneHash == manifest.sceneHash && info.defines == describeDefines(frame.defines) &&
+           info.seed == frame.seed && (manifest.spp == 0 || info.spp == manifest.spp);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// The first way in which an earlier manifest in the output directory is of another render.
+std::string difference(const Manifest& old, const Manifest& now) {
+  if (old.sceneHash != now.sceneHash) return "its scene file's text differs (hash " + old.sceneHash + ", now " + now.sceneHash + ")";
+  if (old.defines != now.defines) return "its -D values differ";
+  if (old.sweeps.size() != now.sweeps.size()) return "its sweeps differ";
+  for (size_t i = 0; i < old.sweeps.size(); ++i)
+    if (old.sweeps[i].name != now.sweeps[i].name || old.sweeps[i].values != now.sweeps[i].values)
+      return "its sweep " + old.sweeps[i].spec + " differs from " + now.sweeps[i].spec;
+  if (old.spp != now.spp) return fmt::format("its --spp is {}, now {}", old.spp, now.spp);
+  if (old.seed != now.seed) return fmt::format("its seed is {}, now {}", old.seed, now.seed);
+  if (old.parts != now.parts || old.passes != now.passes)
+    return fmt::format("it is split into {} parts x {} passes, now {} x {}", old.parts, old.passes, now.parts, now.passes);
+  for (size_t f = 0; f < old.frames.size() && f < now.frames.size(); ++f)
+    if (old.frames[f].output != now.frames[f].output)
+      return "its frame " + std::to_string(f) + " goes to " + old.frames[f].output + ", now " + now.frames[f].output;
+  return "";
+}
+
+// Jobs of earlier submissions that are still queued or running ("" if none, or if squeue cannot say).
+std::string activeJobs(const Manifest& manifest) {
+  std::string ids;
+  for (const SlurmSubmission& s : manifest.submissions)
+    for (const std::string& id : {s.renderJob, s.mergeJob})
+      if (!id.empty()) ids += (ids.empty() ? "" : ",") + id;
+  if (ids.empty()) return "";
+  ProgramResult r = runProgram({"squeue", "-h", "-o", "%i %T", "-j", ids});
+  if (r.status != 0) return "";  // finished jobs are forgotten: "Invalid job id specified"
+  std::string active;
+  size_t start = 0;
+  while (start < r.output.size()) {
+    size_t end = r.output.find('\n', start);
+    std::string line = r.output.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!line.empty()) active += (active.empty() ? "" : ", ") + line;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return active;
+}
+
+void writeScript(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  }
+  ::chmod(temporary.c_str(), 0755);
+  fs::rename(temporary, path);
+}
+
+int runSlurm(const SlurmOptions& options) {
+  const int parts = parseCount("--parts", options.parts, 1, 65536);
+  const int passes = parseCount("--passes", options.passes, 1, kMaxSamplesPerPixel);
+  const int cpus = parseCount("--cpus-per-task", options.cpusPerTask, 1, 4096);
+  const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
+  parseCount("--bins", options.scene.bins, 1, 470);
+  const std::string stem =
+      options.scene.scenePath.empty() ? std::string("default") : fs::path(options.scene.scenePath).stem().string();
+  const fs::path outDir = fs::absolute(options.outDir.empty() ? "slurm-" + stem : options.outDir).lexically_normal();
+  const fs::path partsDir = outDir / "parts", logDir = outDir / "logs";
+  const fs::path manifestPath = outDir / "manifest.json";
+
+  // The frames go to the output directory; their pieces to parts/ in it, under the same names.
+  SceneOptions frameOptions = options.scene, pieceOptions = options.scene;
+  if (!options.scene.scenePath.empty())
+    frameOptions.scenePath = pieceOptions.scenePath = fs::absolute(options.scene.scenePath).lexically_normal().string();
+  if (!options.scene.framesPattern.empty()) {
+    frameOptions.framesPattern = (outDir / options.scene.framesPattern).string();
+    pieceOptions.framesPattern = (partsDir / options.scene.framesPattern).string();
+  }
+  fs::create_directories(outDir);
+  const FramePlan plan = planFrames(frameOptions, (outDir / (stem + ".exr")).string());
+  const FramePlan piecePlan = planFrames(pieceOptions, (partsDir / (stem + ".exr")).string());
+  for (const std::string& file : plan.files) fs::create_directories(fs::path(file).parent_path());
+  for (const std::string& file : piecePlan.files) fs::create_directories(fs::path(file).parent_path());
+  fs::create_directories(logDir);
+
+  Manifest manifest;
+  manifest.columbaVersion = kColumbaVersion;
+  manifest.scene = frameOptions.scenePath.empty() ? "<default scene>" : frameOptions.scenePath;
+  manifest.sceneHash = plan.sceneHash;
+  manifest.defines = plan.defines;
+  manifest.sweeps = plan.axes;
+  manifest.spp = sppOption;
+  manifest.seed = options.scene.seed;
+  manifest.parts = parts;
+  manifest.passes = passes;
+  for (size_t f = 0; f < plan.frames.size(); ++f) {
+    ManifestFrame frame;
+    frame.frame = int(f);
+    frame.defines = plan.frameDefines(int(f));
+    frame.seed = options.scene.seed;
+    frame.spp = sppOption;
+    frame.output = plan.files[f];
+    for (int k = 1; k <= parts; ++k)
+      for (int p = 1; p <= passes; ++p) {
+        ManifestPiece piece;
+        piece.part = PieceIndex{k, parts};
+        if (passes > 1) piece.pass = PieceIndex{p, passes};
+        piece.file = pieceFileName(piecePlan.files[f], piece.part, piece.pass);
+        frame.pieces.push_back(piece);
+      }
+    manifest.frames.push_back(frame);
+  }
+  // A rerun: the same render, whose earlier submissions are kept.
+  if (fs::exists(manifestPath)) {
+    Manifest old = readManifest(manifestPath.string());
+    std::string different = difference(old, manifest);
+    if (!different.empty())
+      throw std::runtime_error(fmt::format("'{}' is of another render: {}. Use another --out-dir, or remove it",
+                                           manifestPath.string(), different));
+    manifest.submissions = old.submissions;
+    for (size_t f = 0; f < old.frames.size() && f < manifest.frames.size(); ++f) {
+      manifest.frames[f].spp = old.frames[f].spp;
+      manifest.frames[f].seconds = old.frames[f].seconds;
+      for (size_t p = 0; p < old.frames[f].pieces.size() && p < manifest.frames[f].pieces.size(); ++p)
+        manifest.frames[f].pieces[p].seconds = old.frames[f].pieces[p].seconds;
+    }
+  }
+
+  // What is on disk decides what is still to do.
+  for (ManifestFrame& frame : manifest.frames) {
+    frame.status = finishedImage(frame.output, manifest, frame) ? "done" : "pending";
+    for (ManifestPiece& piece : frame.pieces)
+      piece.status = finishedImage(piece.file, manifest, frame) ? "done"
+                     : fs::exists(partialFileName(piece.file)) ? "interrupted"
+                                                               : "pending";
+  }
+  MissingWork work = missingWork(
+      manifest, [](const ManifestFrame& f) { return f.status == "done"; },
+      [](const ManifestPiece& p) { return p.status == "done"; });
+
+  SlurmJob job;
+  job.columba = fs::read_symlink("/proc/self/exe").string();
+  job.workDir = fs::current_path().string();
+  job.manifestPath = manifestPath.string();
+  job.logDir = logDir.string();
+  job.jobName = options.jobName.empty() ? "columba-" + stem : options.jobName;
+  job.partition = options.partition;
+  job.time = options.time;
+  job.cpusPerTask = cpus;
+  job.frames = int(plan.frames.size());
+  job.parts = parts;
+  job.passes = passes;
+  if (!frameOptions.scenePath.empty()) job.renderArguments.push_back(frameOptions.scenePath);
+  for (const std::string& d : options.scene.defines) job.renderArguments.insert(job.renderArguments.end(), {"-D", d});
+  if (sppOption) job.renderArguments.insert(job.renderArguments.end(), {"--spp", std::to_string(sppOption)});
+  job.renderArguments.insert(job.renderArguments.end(), {"--seed", std::to_string(options.scene.seed)});
+  if (options.scene.spectral) job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
+  for (const SweepAxis& axis : plan.axes) job.renderArguments.insert(job.renderArguments.end(), {"--sweep", axis.spec});
+  if (pieceOptions.framesPattern.empty())
+    job.renderArguments.insert(job.renderArguments.end(), {"-o", (partsDir / (stem + ".exr")).string()});
+  else
+    job.renderArguments.insert(job.renderArguments.end(), {"--frames", pieceOptions.framesPattern});
+  const std::string renderScript = (outDir / "render.sbatch").string(), mergeScript = (outDir / "merge.sbatch").string();
+  manifest.renderScript = renderScript;
+  manifest.mergeScript = mergeScript;
+  manifest.logDir = logDir.string();
+  writeScript(renderScript, renderBatchScript(job));
+  writeScript(mergeScript, mergeBatchScript(job));
+  writeManifest(manifestPath.string(), manifest);
+
+  const int taskCount = job.frames * parts * passes;
+  fmt::print("{} frame{} x {} part{} x {} pass{} = {} array tasks; {} to render, {} frame{} to merge\n", job.frames,
+             job.frames == 1 ? "" : "s", parts, parts == 1 ? "" : "s", passes, passes == 1 ? "" : "es", taskCount,
+             work.tasks.size(), work.framesToMerge.size(), work.framesToMerge.size() == 1 ? "" : "s");
+  fmt::print("Scripts: {}, {}\nManifest: {}\nLogs: {}/ (render_JOB_TASK.log, merge_JOB.log)\n", renderScript,
+             mergeScript, manifestPath.string(), logDir.string());
+  if (work.framesToMerge.empty()) {
+    fmt::print("Nothing to do: every frame is merged.\n");
+    return 0;
+  }
+  if (taskCount > 1001)
+    fmt::print(stderr, "warning: task indices reach {}; Slurm's default MaxArraySize (1001) allows at most 1000\n",
+               taskCount - 1);
+  const std::string tasks = arraySpec(work.tasks);
+  if (!options.submit) {
+    fmt::print("Submit with:\n");
+    if (work.tasks.empty()) {
+      fmt::print("  {}\n", shellCommand(mergeSubmitCommand(mergeScript, "")));
+    } else {
+      fmt::print("  render=$({})\n", shellCommand(renderSubmitCommand(job, renderScript, tasks)));
+      std::vector<std::string> merge = mergeSubmitCommand(mergeScript, "RENDER");
+      std::string line = shellCommand(merge);
+      line.replace(line.find("afterok:RENDER"), 14, "afterok:${render%;*}");
+      fmt::print("  {}\n(or run this command again with --submit)\n", line);
+    }
+    return 0;
+  }
+
+  if (std::string active = activeJobs(manifest); !active.empty())
+    throw std::runtime_error("jobs of an earlier submission are still queued or running (" + active +
+                             "); wait for them (squeue) or cancel them (scancel JOBID) first");
+  SlurmSubmission submission;
+  submission.submitted = nowISO();
+  submission.tasks = tasks;
+  auto submitOne = [](const std::vector<std::string>& command) {
+    fmt::print("{}\n", shellCommand(command));
+    ProgramResult r = runProgram(command);
+    if (r.status != 0)
+      throw std::runtime_error(fmt::format("{} failed (status {}): {}", command.front(), r.status, r.output));
+    return parseJobId(r.output);
+  };
+  if (!work.tasks.empty()) submission.renderJob = submitOne(renderSubmitCommand(job, renderScript, tasks));
+  try {
+    submission.mergeJob = submitOne(mergeSubmitCommand(mergeScript, submission.renderJob));
+  } catch (...) {
+    manifest.submissions.push_back(submission);  // the render job is queued: recorded all the same
+    writeManifest(manifestPath.string(), manifest);
+    throw;
+  }
+  manifest.submissions.push_back(submission);
+  writeManifest(manifestPath.string(), manifest);
+  if (!submission.renderJob.empty())
+    fmt::print("Submitted render job {} (array tasks {}) and merge job {} (runs after every task succeeded)\n",
+               submission.renderJob, tasks, submission.mergeJob);
+  else
+    fmt::print("Submitted merge job {} (every piece is rendered)\n", submission.mergeJob);
+  fmt::print("render job: {}\nmerge job: {}\n", submission.renderJob.empty() ? "-" : submission.renderJob,
+             submission.mergeJob);
+  return 0;
+}
+
+}  // namespace
+
+void addSlurmCommand(CLI::App& app) {
+  auto options = std::make_shared<SlurmOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "slurm", "Write (and with --submit, submit) a Slurm job array rendering a sweep or a frame in pieces, and a "
+               "merge job after it; run again, it submits only what is missing");
+  addSceneOptions(cmd, options->scene);
+  cmd->add_option("--parts", options->parts, "Bands of rows each frame is split into (one array task each)");
+  cmd->add_option("--passes", options->passes, "Ranges of sample indices each part is split into (default 1)");
+  cmd->add_option("--partition", options->partition, "Slurm partition (default: the cluster's)");
+  cmd->add_option("--time", options->time, "Time limit of each task, as sbatch --time takes it (e.g. 30:00)");
+  cmd->add_option("--cpus-per-task", options->cpusPerTask, "CPUs of each task, its render threads (default 1)");
+  cmd->add_option("--out-dir", options->outDir,
+                  "Where the frames, parts/, logs/, the batch scripts and manifest.json go (default: slurm-SCENE); "
+                  "--frames names the frames inside it");
+  cmd->add_option("--job-name", options->jobName, "Slurm job name prefix (default: columba-SCENE)");
+  cmd->add_flag("--submit", options->submit, "Submit the jobs (sbatch) and print their ids");
+  cmd->callback([options] {
+    int code = runSlurm(*options);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
+
+}  // namespace columba
