@@ -111,14 +111,3 @@ TEST(FilterSample, GaussianMatchesTheTruncatedNormalQuantiles) {
   for (int i = 0; i < n; ++i) inside += std::abs(filter.sample(Vec2((i + 0.5f) / n, 0.5f)).x) < 0.5f;
   EXPECT_NEAR(double(inside) / n, expected, 2.0 / n);
 }
-
-TEST(ErfInverse, InvertsTheErrorFunction) {
-  // Across the body and into the tails that the truncated Gaussian reaches (|x| <= erf(4 / sqrt 2)).
-  for (int i = -1000; i <= 1000; ++i) {
-    double x = 0.9999367 * i / 1000.0;
-    double y = erfInverse(float(x));
-    ASSERT_NEAR(std::erf(y), x, 3e-7) << x;
-    // Its derivative 2/sqrt(pi) exp(-y^2) bounds how far y may be from the exact inverse.
-    ASSERT_NEAR(y, y - (std::erf(y) - x) / (2.0 / std::sqrt(M_PI) * std::exp(-y * y)), 1e-5 + 1e-6 * std::abs(y)) << x;
-  }
-}

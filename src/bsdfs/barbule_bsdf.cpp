@@ -47,6 +47,8 @@ constexpr float kSinThetaD = kSinBarbuleThetaD;
 // Lower bound on the share of R and TRT in the lobe choice, relative to r: keeps every lobe
 // reachable when the estimate at a few normals happens to be near zero.
 constexpr float kMinLobeShare = 0.01f;
+// The longitudinal normal angles are small enough for cosSinOfSmallAngle.
+static_assert(kBarbuleThetaD <= kSmallAngleLimit);
 
 bool given(float v) { return !std::isnan(v); }
 
@@ -54,17 +56,6 @@ void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
   GaussLegendreRule rule = gaussLegendre(n);
   nodes.assign(rule.nodes.begin(), rule.nodes.end());
   weights.assign(rule.weights.begin(), rule.weights.end());
-}
-
-// The same in groups of four lanes; the last group is padded with weight 0.
-void makeLaneRule(int n, std::vector<FloatLanes>& nodes, std::vector<FloatLanes>& weights) {
-  GaussLegendreRule rule = gaussLegendre(n);
-  nodes.assign((n + kLaneCount - 1) / kLaneCount, FloatLanes{});
-  weights.assign(nodes.size(), FloatLanes{});
-  for (int k = 0; k < n; ++k) {
-    nodes[k / kLaneCount][k % kLaneCount] = float(rule.nodes[k]);
-    weights[k / kLaneCount][k % kLaneCount] = float(rule.weights[k]);
-  }
 }
 
 // Light crossing the vane from below follows the same line as light along -w from above, so it
@@ -147,7 +138,9 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
       role_(role),
       geometry_(params.b, params.phi0, params.phi1, params.mu, params.H),
       offsetNodeCount_(quadrature.offsetNodes) {
-  makeLaneRule(quadrature.offsetNodes, offsetNodes_, offsetWeights_);
+  GaussLegendreRule offsets = gaussLegendre(quadrature.offsetNodes);
+  offsetNodes_ = laneGroups(offsets.nodes);
+  offsetWeights_ = laneGroups(offsets.weights);
   makeRule(quadrature.thetaNodes, thetaNodes_, thetaWeights_);
   makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
 }
@@ -219,10 +212,9 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& 
     Vec2Lanes n = geometry.worldNormalsAtAngles(in.arc, sinPsi, cosPsi);
     FloatLanes projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
     if (thetaNodes_.size() == 1) {
-      // One longitudinal node at the mean angle; |theta| <= thetaD, so two Taylor terms of cos and
-      // sin reach float precision.
-      FloatLanes theta = meanLongitudinalAngles(projectedIn, in.w.y), thetaSqr = theta * theta;
-      FloatLanes c = 1.0f - 0.5f * thetaSqr, sn = theta * (1.0f - thetaSqr * (1.0f / 6.0f));
+      // One longitudinal node at the mean angle (|theta| <= thetaD).
+      FloatLanes c, sn;
+      cosSinOfSmallAngle(meanLongitudinalAngles(projectedIn, in.w.y), c, sn);
       FloatLanes cosIn = projectedIn * c + in.w.y * sn, cosOut = absLanes(projectedOut * c + omegaO.y * sn);
       // The film at the nodes in lanes (padding lanes weigh 0), summed over them per wavelength.
       sum += s.film.weightedTransmittanceProducts(weight, cosIn, cosOut);

@@ -13,7 +13,7 @@
 // across d (h = p . across, across = d turned by +90 degrees); h grows monotonically with the
 // normal angle over the lit side, so every set of lit points below is an interval of offsets.
 #include <optional>
-#include "core/lanes.h"
+#include "core/fast_math.h"
 #include "core/vector.h"
 
 namespace columba {
@@ -32,11 +32,6 @@ struct LitArc {
   float a = 1.0f, invA = 1.0f, q = 0.0f;
 
   float width() const { return hMax > hMin ? hMax - hMin : 0.0f; }
-};
-
-// Four in-plane unit vectors (world frame), one per lane.
-struct Vec2Lanes {
-  FloatLanes x, y;
 };
 
 // Offsets [lo, hi] (empty when hi <= lo).

@@ -62,7 +62,7 @@ LobeSpectra lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const s
   result.lambdas = lambdas;
   result.reflection.assign(lambdas.size(), 0.0f);
   result.trt.assign(lambdas.size(), 0.0f);
-  const double cellSolidAngle = (2.0 / kAxisSteps) * (2.0 * M_PI / kAzimuthSteps);
+  const double cellSolidAngle = (2.0 / kAxisSteps) * (2.0 * kPiDouble / kAzimuthSteps);
   BSDFContext ctx;
   tbb::parallel_for(size_t(0), groups.size(), [&](size_t g) {
     double r[kSpectrumSamples] = {}, t[kSpectrumSamples] = {};

@@ -16,11 +16,14 @@
 
 namespace columba {
 
-// Half-range of the barbules' longitudinal normal angles (their slight bending along t).
-inline constexpr float kBarbuleThetaD = 0.025f * kPi;
-inline constexpr float kSinBarbuleThetaD = 0.0784590957f;  // sin(0.025 pi)
-inline constexpr float kCosBarbuleThetaD = 0.9969173337f;
-inline constexpr float kTanBarbuleThetaD = 0.0787017068f;
+// Half-range of the barbules' longitudinal normal angles (their slight bending along t), 0.025 pi,
+// and its sine, cosine and tangent (from the angle in double, each rounded once to float).
+inline constexpr double kBarbuleThetaDInDouble = 0.025 * kPiDouble;
+inline constexpr float kBarbuleThetaD = float(kBarbuleThetaDInDouble);
+inline constexpr float kSinBarbuleThetaD = float(constexprSin(kBarbuleThetaDInDouble));
+inline constexpr float kCosBarbuleThetaD = float(constexprCos(kBarbuleThetaDInDouble));
+inline constexpr float kTanBarbuleThetaD =
+    float(constexprSin(kBarbuleThetaDInDouble) / constexprCos(kBarbuleThetaDInDouble));
 
 // The 2D part of a 3D direction w = (x, y, z): unit in-plane direction (z, x) / |(z, x)| and
 // cos(theta) = |(z, x)|.
@@ -80,7 +83,12 @@ inline float longitudinalShadowing(float A, float B) {
 // LongitudinalDensity(A, B).mean() for four normals seen from one direction (A per lane, B
 // shared); unclipped it is (B / A) (sin(thetaD) - thetaD cos(thetaD)) / sin(thetaD).
 inline FloatLanes meanLongitudinalAngles(FloatLanes A, float B) {
+  // The scale as first written, to six digits: 8e-6 above the computed 0.0020570136, and kept so
+  // that rendered images stay as they were.
   constexpr float kUnclippedMeanScale = 0.00205703f;
+  constexpr double kComputedScale =
+      1.0 - kBarbuleThetaDInDouble * constexprCos(kBarbuleThetaDInDouble) / constexprSin(kBarbuleThetaDInDouble);
+  static_assert(kUnclippedMeanScale > kComputedScale && kUnclippedMeanScale < kComputedScale * (1.0 + 1e-5));
   FloatLanes theta = B / A * kUnclippedMeanScale;
   for (int j = 0; j < kLaneCount; ++j)
     if (!facesWholeRange(A[j], B)) theta[j] = LongitudinalDensity(A[j], B).mean();

@@ -6,7 +6,7 @@ namespace columba {
 
 namespace {
 
-constexpr double kInvSqrtPi = 0.56418958354775628695;
+constexpr double kInvSqrtPi = 1.0 / constexprSqrt(kPiDouble);
 
 // Slope along the incident azimuth of a normal visible from a direction at polar angle theta,
 // for the unit-roughness Beckmann distribution. In slope space the visible density is

@@ -23,7 +23,7 @@ size_t Distribution1D::sampleDiscrete(float u, float* rescaledU) const {
   while (weights_[i] == 0.0f && i + 1 < weights_.size()) ++i;  // never return an empty bin
   if (rescaledU) {
     double width = cdf_[i + 1] - cdf_[i];
-    *rescaledU = width > 0 ? std::min(float((u - cdf_[i]) / width), 0.99999994f) : 0.0f;
+    *rescaledU = width > 0 ? std::min(float((u - cdf_[i]) / width), kOneMinusEpsilon) : 0.0f;
   }
   return i;
 }
@@ -33,7 +33,7 @@ float Distribution1D::sampleContinuous(float u, float* pdf, size_t* index) const
   size_t i = sampleDiscrete(u, &du);
   if (index) *index = i;
   if (pdf) *pdf = weights_[i] / total_ * float(weights_.size());
-  return std::min((float(i) + du) / float(weights_.size()), 0.99999994f);
+  return std::min((float(i) + du) / float(weights_.size()), kOneMinusEpsilon);
 }
 
 float Distribution1D::continuousPdf(float x) const {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "core/math.h"
 
 namespace columba {
 
@@ -12,7 +13,7 @@ GaussLegendreRule gaussLegendre(int n) {
   rule.weights.resize(n);
   for (int i = 0; i < n; ++i) {
     // i-th root of P_n on [-1, 1], counted from the right.
-    double x = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 1.0;
+    double x = std::cos(kPiDouble * (i + 0.75) / (n + 0.5)), derivative = 1.0;
     for (int iteration = 0; iteration < 100; ++iteration) {
       // Recurrence (k+1) P_{k+1} = (2k+1) x P_k - k P_{k-1}.
       double p0 = 1.0, p1 = x;

@@ -6,7 +6,8 @@
 
 namespace columba {
 
-inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr double kPiDouble = 3.14159265358979323846;
+inline constexpr float kPi = float(kPiDouble);
 inline constexpr float kInvPi = 1.0f / kPi;
 inline constexpr float kTwoPi = 2.0f * kPi;
 inline constexpr float kHalfPi = 0.5f * kPi;
@@ -23,53 +24,23 @@ inline float safeAcos(float x) { return std::acos(clampf(x, -1.0f, 1.0f)); }
 inline float degToRad(float d) { return d * (kPi / 180.0f); }
 inline float radToDeg(float r) { return r * (180.0f / kPi); }
 
-// sin(x) / x and cos(x) for |x| <= pi/2 by their Taylor polynomials of degree 10 and 12 (truncation
-// errors < 6e-8, about two float ulps with rounding): cheaper than the library's full-range
-// functions. T is float or a SIMD vector of floats. The polynomials are evaluated in Estrin's
-// form, whose dependency chains are half as long as Horner's.
-template <typename T> inline void sincAndCosWithinQuarterTurn(T x, T& sinOverX, T& cosX) {
-  T z = x * x, z2 = z * z, z4 = z2 * z2;
-  // sin(x) / x = sum of (-z)^k / (2k + 1)!, k = 0..5; cos(x) = sum of (-z)^k / (2k)!, k = 0..6.
-  T s01 = 1.0f - z * (1.0f / 6), s23 = 1.0f / 120 - z * (1.0f / 5040), s45 = 1.0f / 362880 - z * (1.0f / 39916800);
-  T c01 = 1.0f - z * 0.5f, c23 = 1.0f / 24 - z * (1.0f / 720), c45 = 1.0f / 40320 - z * (1.0f / 3628800);
-  sinOverX = s01 + z2 * s23 + z4 * s45;
-  cosX = c01 + z2 * c23 + z4 * (c45 + z2 * (1.0f / 479001600));
+// sqrt, sin and cos for compile-time constants (std::sqrt and std::sin are not constexpr before
+// C++26), in double. sqrt: Newton's iteration from above, for 0 < x < 2^64.
+constexpr double constexprSqrt(double x) {
+  double r = x > 1.0 ? x : 1.0;
+  for (int k = 0; k < 64; ++k) r = 0.5 * (r + x / r);
+  return r;
 }
-template <typename T> inline void sinCosWithinQuarterTurn(T x, T& sinX, T& cosX) {
-  T sinOverX;
-  sincAndCosWithinQuarterTurn(x, sinOverX, cosX);
-  sinX = x * sinOverX;
+// sin and cos: their Taylor series, within a few double ulps for |x| <= pi/4.
+constexpr double constexprSin(double x) {
+  double term = x, sum = x;
+  for (int k = 1; k <= 12; ++k) sum += term *= -x * x / ((2 * k) * (2 * k + 1));
+  return sum;
 }
-
-// Inverse error function for |x| < 1 in single precision (M. Giles, "Approximating the erfinv
-// function", GPU Computing Gems, 2011): polynomials in w = -log(1 - x^2), one for the body and one
-// in sqrt(w) for the far tails; relative error about 1e-7.
-inline float erfInverse(float x) {
-  float w = -std::log((1.0f - x) * (1.0f + x)), p;
-  if (w < 5.0f) {
-    w -= 2.5f;
-    p = 2.81022636e-08f;
-    p = 3.43273939e-07f + p * w;
-    p = -3.5233877e-06f + p * w;
-    p = -4.39150654e-06f + p * w;
-    p = 0.00021858087f + p * w;
-    p = -0.00125372503f + p * w;
-    p = -0.00417768164f + p * w;
-    p = 0.246640727f + p * w;
-    p = 1.50140941f + p * w;
-  } else {
-    w = std::sqrt(w) - 3.0f;
-    p = -0.000200214257f;
-    p = 0.000100950558f + p * w;
-    p = 0.00134934322f + p * w;
-    p = -0.00367342844f + p * w;
-    p = 0.00573950773f + p * w;
-    p = -0.0076224613f + p * w;
-    p = 0.00943887047f + p * w;
-    p = 1.00167406f + p * w;
-    p = 2.83297682f + p * w;
-  }
-  return p * x;
+constexpr double constexprCos(double x) {
+  double term = 1.0, sum = 1.0;
+  for (int k = 1; k <= 12; ++k) sum += term *= -x * x / ((2 * k - 1) * (2 * k));
+  return sum;
 }
 
 }  // namespace columba

@@ -1,5 +1,6 @@
 #pragma once
 // Warps from the unit square to common domains, each with its density.
+#include "core/fast_math.h"
 #include "core/vector.h"
 
 namespace columba {

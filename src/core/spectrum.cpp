@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include "core/illuminant.h"
-#include "core/lanes.h"
+#include "core/fast_math.h"
 
 namespace columba {
 

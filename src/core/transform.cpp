@@ -70,7 +70,7 @@ Transform Transform::rotate(const Vec3& axis, float angleDeg) {
   // builds it: an axis that is not unit length also scales and shears, and scenes written for
   // Mitsuba (the paper's simulation1 light) depend on that.
   double x = axis.x, y = axis.y, z = axis.z;
-  double a = double(angleDeg) * 3.14159265358979323846 / 180.0;
+  double a = double(angleDeg) * kPiDouble / 180.0;
   double s = std::sin(a), c = std::cos(a), t = 1.0 - c;
   Matrix4 m = Matrix4::identity();
   m.m[0][0] = t * x * x + c;     m.m[0][1] = t * x * y - s * z; m.m[0][2] = t * x * z + s * y;

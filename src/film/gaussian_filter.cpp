@@ -1,14 +1,14 @@
 #include "film/gaussian_filter.h"
 
 #include <cmath>
-#include "core/math.h"
+#include "core/fast_math.h"
 #include "core/properties.h"
 
 namespace columba {
 
 GaussianFilter::GaussianFilter(float stddev) : stddev_(stddev), radius_(4.0f * stddev) {
   cdfLimit_ = std::erf(radius_ / (stddev_ * std::sqrt(2.0)));
-  axisNormalization_ = 1.0 / (stddev_ * std::sqrt(2.0 * 3.14159265358979323846) * cdfLimit_);
+  axisNormalization_ = 1.0 / (stddev_ * std::sqrt(2.0 * kPiDouble) * cdfLimit_);
 }
 
 double GaussianFilter::evalAxis(double x) const {

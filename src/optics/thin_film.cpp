@@ -1,7 +1,5 @@
 #include "optics/thin_film.h"
 
-#include <immintrin.h>
-
 #include <cmath>
 
 namespace columba {
@@ -41,7 +39,7 @@ ThinFilmAmplitudes thinFilmAmplitudes(double cosIncidence, double n1, double n2,
   Complex cos1(c1, 0.0), cos2 = cosineIn(n2, nSin), cos3 = cosineIn(n3, nSin);
   Interface top = fresnel(n1, cos1, n2, cos2), bottom = fresnel(n2, cos2, n3, cos3);
 
-  Complex delta = 4.0 * M_PI * n2 * (thicknessUm * 1000.0) * cos2 / lambdaNm;
+  Complex delta = 4.0 * kPiDouble * n2 * (thicknessUm * 1000.0) * cos2 / lambdaNm;
   Complex roundTrip = std::exp(Complex(0.0, 1.0) * delta), halfTrip = std::exp(Complex(0.0, 0.5) * delta);
 
   ThinFilmAmplitudes a;
@@ -64,12 +62,6 @@ double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n
   ThinFilmAmplitudes a = thinFilmAmplitudes(cosIncidence, n1, n2, n3, thicknessUm, lambdaNm);
   return 0.5 * a.transmittanceFactor * (std::norm(a.ts) + std::norm(a.tp));
 }
-
-namespace {
-constexpr SpectrumLanes lanes(float c) { return SpectrumLanes{c, c, c, c}; }
-}  // namespace
-
-const FreeStandingFilm::Constants FreeStandingFilm::kConstants = {lanes(1.0f / kPi), lanes(kPi), lanes(12582912.0f)};
 
 FreeStandingFilm::FreeStandingFilm(const RefractiveIndex& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
@@ -108,22 +100,17 @@ SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsPortable(FloatLanes
   return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
 }
 
-namespace {
-using FloatLanes8 = float __attribute__((vector_size(32)));
-}  // namespace
-
 __attribute__((target("avx2,fma"))) SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsAvx2(
     FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const {
   // A wavelength at a time, both crossings of the four pairs in eight lanes: cos1 low, cos2 high.
-  FloatLanes8 cSqr = clampedCosSqr(FloatLanes8{cos1[0], cos1[1], cos1[2], cos1[3], cos2[0], cos2[1], cos2[2], cos2[3]});
-  auto low = [](FloatLanes8 v) { return FloatLanes{v[0], v[1], v[2], v[3]}; };
-  auto high = [](FloatLanes8 v) { return FloatLanes{v[4], v[5], v[6], v[7]}; };
+  FloatLanes8 cSqr = clampedCosSqr(joinLanes(cos1, cos2));
   FloatLanes perWavelength[kSpectrumSamples];
   for (int k = 0; k < kSpectrumSamples; ++k) {
     MediumAt m = mediumAt(k);
     FloatLanes8 qSqr = m.etaSqrMinusOne + cSqr;
-    TermsOf<FloatLanes8> t = terms(m, cSqr, qSqr, FloatLanes8(_mm256_sqrt_ps(__m256(qSqr))));
-    Terms first{low(t.aSqr), low(t.sBSqrS), low(t.pBSqrS)}, second{high(t.aSqr), high(t.sBSqrS), high(t.pBSqrS)};
+    TermsOf<FloatLanes8> t = terms(m, cSqr, qSqr, sqrtLanes(qSqr));
+    Terms first{lowLanes(t.aSqr), lowLanes(t.sBSqrS), lowLanes(t.pBSqrS)};
+    Terms second{highLanes(t.aSqr), highLanes(t.sBSqrS), highLanes(t.pBSqrS)};
     perWavelength[k] = weight * product(first, second);
   }
   return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);

@@ -9,8 +9,7 @@
 // t = t12 t21 / (1 - r21^2 e^{i delta}) up to the phase of t.
 #include <array>
 #include <complex>
-#include <type_traits>
-#include "core/lanes.h"
+#include "core/fast_math.h"
 #include "core/spectrum.h"
 #include "optics/dispersion.h"
 
@@ -123,40 +122,12 @@ class FreeStandingFilm {
   }
   static FloatLanes product(const Terms& a, const Terms& b);
 
-  // Constants of the range reduction as full vectors, defined out of line: four-lane arithmetic
-  // then reads them as memory operands, where a visible constant is re-broadcast from a scalar at
-  // each use.
-  struct Constants {
-    SpectrumLanes invPi, pi, round;
-  };
-  static const Constants kConstants;
-
-  // sin^2(x) for 0 <= x up to a few hundred: sin^2 has period pi, so reduce to [-pi/2, pi/2] and
-  // use the Taylor polynomial there.
-  template <typename Lanes> __attribute__((always_inline)) static Lanes sinSqrReduced(Lanes x) {
-    Lanes turns, whole, y;
-    if constexpr (std::is_same_v<Lanes, SpectrumLanes>) {
-      const Constants& k = kConstants;
-      turns = x * k.invPi;
-      whole = (turns + k.round) - k.round;  // rounds to nearest: 1.5 * 2^23
-      y = (turns - whole) * k.pi;
-    } else {
-      turns = x * (1.0f / kPi);
-      whole = (turns + 12582912.0f) - 12582912.0f;
-      y = (turns - whole) * kPi;
-    }
-    Lanes sinOverY, cosY;
-    sincAndCosWithinQuarterTurn(y, sinOverY, cosY);
-    Lanes sinY = y * sinOverY;
-    return sinY * sinY;
-  }
-
   Medium medium_{};  // at the path's wavelengths
 };
 
 template <typename M, typename Lanes>
 inline FreeStandingFilm::TermsOf<Lanes> FreeStandingFilm::terms(const M& m, Lanes cSqr, Lanes qSqr, Lanes q) {
-  Lanes S = sinSqrReduced(m.halfPhaseScale * q);
+  Lanes S = sinSqr(m.halfPhaseScale * q);
   Lanes aSqr = 4.0f * cSqr * qSqr;
   Lanes bp = m.etaSqr * cSqr - qSqr * m.invEtaSqr;
   return {aSqr, m.bsSqr * S, bp * bp * S};

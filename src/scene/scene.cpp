@@ -3,7 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "core/lanes.h"
+#include "core/fast_math.h"
 #include "integrators/path_integrator.h"
 #include "sensors/perspective_sensor.h"
 

@@ -1,5 +1,7 @@
 #include "sensors/bsdf_visualizer_sensor.h"
 
+#include "core/fast_math.h"
+
 namespace columba {
 
 std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
