@@ -10,7 +10,7 @@ SANITIZE_BUILD ?= build-asan
 FUZZ_SECONDS ?= 300
 FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh exr_envmap
 
-.PHONY: deps configure build demo test install bench figures clean fuzz fuzz-build sanitize
+.PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize
 
 deps:
 	@./scripts/install-deps.sh
@@ -32,6 +32,15 @@ test: build
 	awk '/: Skipped$$/ { getline reason; next } \
 	     /^\[  SKIPPED \] [^ ]+ \(/ && reason != "" { if (!n++) print "Skipped tests:"; print "  " $$4 ": " reason; reason = "" }' \
 	    Testing/Temporary/LastTest.log; exit $$status
+
+# `make slurm-test`: renders a sweep in pieces through Slurm and checks the merged frames against
+# local renders (scripts/slurm-render-test.sh), on a one-node cluster started for it and stopped
+# afterwards (scripts/slurm-test-cluster.sh: root on Debian 12). Where this machine cannot run the
+# cluster's daemons, the test is reported as skipped, with the reason.
+slurm-test: build
+	@status=0; ./scripts/slurm-test-cluster.sh ./scripts/slurm-render-test.sh $(COLUMBA) || status=$$?; \
+	if [ $$status -eq 77 ]; then echo "SKIPPED: the Slurm cluster test: this machine cannot run a Slurm cluster (why: above)"; \
+	else exit $$status; fi
 
 # Installs as the current user where PREFIX is writable, through sudo otherwise (the build itself
 # stays the user's).
