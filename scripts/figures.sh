@@ -29,14 +29,16 @@ for scene in bsdf_visualization_normal bsdf_visualization_oblique bsdf_visualiza
   images+=("$out/$scene.png")
   captions+=("${visCaption[$scene]}")
 done
-for angle in -10 0 10 20 30 40 50 60; do
-  name=$(printf 'la%03d' "$angle")
-  [ "$angle" -lt 0 ] && name="la$angle"
-  "$columba" render "$root/scenes/feather_linear_light.xml" -D feather="$out/feather.ply" -D angle="$angle" \
-    "${la[@]}" -o "$out/$name.exr"
-  images+=("$out/$name.png")
+# The strip-light sequence is one sweep (la-10, la000, ..., la060); its manifest lists the frames.
+"$columba" render "$root/scenes/feather_linear_light.xml" -D feather="$out/feather.ply" "${la[@]}" \
+  --sweep angle=-10:60:10 --frames "$out/la{angle:03}.exr" --manifest "$out/strip_light.json"
+while IFS=$'\t' read -r image angle; do
+  images+=("$image")
   captions+=("Paper, 'Rendering': one feather under a strip light at $angle deg")
-done
+done < <(/usr/bin/python3 -c '
+import json, sys
+for frame in json.load(open(sys.argv[1]))["frames"]:
+    print(frame["output"][:-len(".exr")] + ".png", frame["defines"]["angle"], sep="\t")' "$out/strip_light.json")
 declare -A neckCaption=(
   [neck_omnidirectional]="Paper, 'Rendering' (b): neck under omnidirectional light"
   [neck_direction1]="Paper, 'Rendering' (c): neck under directional light, set-up 1"
