@@ -55,3 +55,16 @@ done
 echo "Reference timings of the paper's implementation on this machine kind:"
 echo "  simulation1 (256x256, 64 spp): 17 s with 1 thread, 9.4 s with 2 threads"
 echo "  reference neck.xml on a 4,320-barb patch (1024x768, 16 spp): ~105 s with 2 threads"
+
+# Time to a clean image against the paper's code (bench/equal_error.py): converged images (cached
+# in $build/bench-cache), renders at 1 to 256 spp with 2 threads, relative RMSE against time, the
+# times to 5 % and 2 % and equal-spp timings beside the paper's. BENCH_EQUAL_ERROR=0 skips it.
+if [ "${BENCH_EQUAL_ERROR:-1}" != 0 ]; then
+  python=/usr/bin/python3
+  [ -x "$python" ] || python=python3
+  if "$python" -c 'import numpy' 2> /dev/null; then
+    "$python" "$root/bench/equal_error.py" "$columba" "$root" "$build/bench-cache"
+  else
+    echo "SKIPPED: the equal-error benchmark: it needs Python 3 with numpy"
+  fi
+fi
