@@ -40,7 +40,8 @@ double maxAbs(const Values& v) {
 }
 
 // The rule on [a, b] for a function with several values.
-template <typename F> Values integrateWith(const GaussRule& rule, const F& f, double a, double b, size_t count) {
+template <typename F>
+Values integrateWith(const GaussRule& rule, const F& f, double a, double b, size_t count) {
   Values sum(count, 0.0);
   double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   for (size_t j = 0; j < rule.nodes.size(); ++j) {
@@ -50,23 +51,37 @@ template <typename F> Values integrateWith(const GaussRule& rule, const F& f, do
   return sum;
 }
 
-// Adaptive bisection until the two halves agree with the whole to `absTol`.
+// Adaptive bisection: a piece is done when its `low` and `high` rules agree to `absTol`.
 template <typename F>
-void integrateAdaptively(const GaussRule& rule, const F& f, double a, double b, const Values& whole, double absTol,
-                         int depth, Values& total) {
-  double mid = 0.5 * (a + b);
-  size_t count = whole.size();
-  Values left = integrateWith(rule, f, a, mid, count), right = integrateWith(rule, f, mid, b, count);
-  Values both(count);
-  for (size_t k = 0; k < count; ++k) both[k] = left[k] + right[k];
+void integrateAdaptively(const RulePair& rules, const F& f, double a, double b, double absTol, int depth,
+                         Values& total) {
+  size_t count = total.size();
+  Values low = integrateWith(rules.low, f, a, b, count), high = integrateWith(rules.high, f, a, b, count);
   double difference = 0.0;
-  for (size_t k = 0; k < count; ++k) difference = std::max(difference, std::abs(both[k] - whole[k]));
-  if (difference <= absTol || depth >= 30) {
-    for (size_t k = 0; k < count; ++k) total[k] += both[k];
+  for (size_t k = 0; k < count; ++k) difference = std::max(difference, std::abs(high[k] - low[k]));
+  if (difference <= absTol || depth >= 40) {
+    for (size_t k = 0; k < count; ++k) total[k] += high[k];
     return;
   }
-  integrateAdaptively(rule, f, a, mid, left, absTol, depth + 1, total);
-  integrateAdaptively(rule, f, mid, b, right, absTol, depth + 1, total);
+  double mid = 0.5 * (a + b);
+  integrateAdaptively(rules, f, a, mid, absTol, depth + 1, total);
+  integrateAdaptively(rules, f, mid, b, absTol, depth + 1, total);
+}
+
+// The integral over [cuts[0], cuts.back()], split at the cuts, to `tolerance` relative to its
+// largest value (estimated first with the low rule).
+template <typename F>
+Values integratePieces(const RulePair& rules, const F& f, const std::vector<double>& cuts, size_t count,
+                       double tolerance) {
+  Values estimate(count, 0.0), total(count, 0.0);
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    Values v = integrateWith(rules.low, f, cuts[i], cuts[i + 1], count);
+    for (size_t k = 0; k < count; ++k) estimate[k] += std::abs(v[k]);
+  }
+  double absTol = tolerance * std::max(maxAbs(estimate), std::numeric_limits<double>::min());
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    integrateAdaptively(rules, f, cuts[i], cuts[i + 1], absTol, 0, total);
+  return total;
 }
 
 const GaussRule& longitudinalRule() {
@@ -84,8 +99,10 @@ bool facingRange(double A, double B, double& lo, double& hi) {
   if (loFaces && hiFaces) return true;
   if (!loFaces && !hiFaces) return false;
   double zero = std::atan(-A / B);
-  if (loFaces) hi = zero;
-  else lo = zero;
+  if (loFaces)
+    hi = zero;
+  else
+    lo = zero;
   return hi > lo;
 }
 
@@ -96,19 +113,21 @@ LongitudinalMoments longitudinalMoments(double A, double B) {
   m.A = A;
   m.B = B;
   if (!facingRange(A, B, m.lo, m.hi)) return m;
-  auto f = [&](double t) { return Values{A * std::cos(t) + B * std::sin(t), t * (A * std::cos(t) + B * std::sin(t))}; };
+  auto f = [&](double t) {
+    return Values{A * std::cos(t) + B * std::sin(t), t * (A * std::cos(t) + B * std::sin(t))};
+  };
   Values moments = integrateWith(longitudinalRule(), f, m.lo, m.hi, 2);
   m.mass = moments[0];
   m.mean = moments[0] > 0.0 ? moments[1] / moments[0] : 0.5 * (m.lo + m.hi);
   return m;
 }
 
-BarbuleReference::BarbuleReference(const BarbuleModel& model, int thetaNodes, double tolerance)
+BarbuleReference::BarbuleReference(const BarbuleModel& model, int baseNodes, double tolerance)
     : m_(model),
       H_(std::max(model.H, contactSpacing(model.b, model.mu))),
       wholeEllipse_(model.phi1 - model.phi0 >= 2.0 * M_PI),
-      thetaRule_(gaussLegendreRule(thetaNodes)),
-      phiRule_(gaussLegendreRule(16)),
+      rules_{gaussLegendreRule(baseNodes), gaussLegendreRule(2 * baseNodes)},
+      thetaRules_{gaussLegendreRule(baseNodes / 2), gaussLegendreRule(baseNodes)},
       tolerance_(tolerance) {}
 
 double BarbuleReference::contactSpacing(double b, double mu) {
@@ -174,8 +193,10 @@ std::vector<AngleInterval> BarbuleReference::litNormals(double gamma) const {
   std::vector<AngleInterval> out;
   auto add = [&](double a, double b) {
     if (!(b > a)) return;
-    if (!out.empty() && out.back().hi == a) out.back().hi = b;
-    else out.push_back({a, b});
+    if (!out.empty() && out.back().hi == a)
+      out.back().hi = b;
+    else
+      out.push_back({a, b});
   };
   const int kScan = 256;
   for (size_t i = 0; i + 1 < breaks.size(); ++i) {
@@ -213,18 +234,17 @@ double BarbuleReference::offset(double phi, double gamma) const {
 
 double BarbuleReference::litWidth(double gamma) const {
   double width = 0.0;
-  for (const AngleInterval& piece : litNormals(gamma)) width += offset(piece.hi, gamma) - offset(piece.lo, gamma);
+  for (const AngleInterval& piece : litNormals(gamma))
+    width += offset(piece.hi, gamma) - offset(piece.lo, gamma);
   return width;
 }
 
 double BarbuleReference::litWidthByIntegral(double gamma) const {
   auto f = [&](double phi) { return Values{radiusOfCurvature(phi) * std::cos(phi + m_.mu - gamma)}; };
-  Values total{0.0};
-  for (const AngleInterval& piece : litNormals(gamma)) {
-    Values whole = integrateWith(phiRule_, f, piece.lo, piece.hi, 1);
-    integrateAdaptively(phiRule_, f, piece.lo, piece.hi, whole, 1e-14, 0, total);
-  }
-  return total[0];
+  double total = 0.0;
+  for (const AngleInterval& piece : litNormals(gamma))
+    total += integratePieces(rules_, f, {piece.lo, piece.hi}, 1, 1e-14)[0];
+  return total;
 }
 
 double BarbuleReference::coverage(const Direction& w) const {
@@ -238,6 +258,8 @@ double BarbuleReference::coverage(const Direction& w) const {
 }
 
 namespace {
+
+double sqr(double x) { return x * x; }
 
 Direction normalised(const Direction& w) {
   double l = std::sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
@@ -259,6 +281,8 @@ BarbuleReference::Reflection BarbuleReference::reflection(const Direction& wiIn,
   Reflection r;
   r.value.assign(lambdas.size(), 0.0);
   r.envelope.assign(lambdas.size(), 0.0);
+  r.phaseSensitivity.assign(lambdas.size(), 0.0);
+  r.roundingSensitivity.assign(lambdas.size(), 0.0);
   r.phiMargin = r.thetaMargin = std::numeric_limits<double>::infinity();
   Direction wi = normalised(wiIn), wo = normalised(woIn);
   if (!(wi.z > 0.0) || wo.z == 0.0) return r;
@@ -273,17 +297,55 @@ BarbuleReference::Reflection BarbuleReference::reflection(const Direction& wiIn,
 
   // D(m) = D_phi D_theta / cos(theta_m), D_phi = rho / H, D_theta = 1 / (2 sin thetaD).
   double D = radiusOfCurvature(phi) / H_ / (2.0 * std::sin(kThetaD)) / std::cos(thetaM);
-  auto shadowing = [&](const Direction& w) {
-    return longitudinalMoments(w.z * std::cos(phiWorld) + w.x * std::sin(phiWorld), w.y).shadowing();
-  };
-  double scale = D * shadowing(wi) * shadowing(wo) / (4.0 * std::abs(wi.z) * std::abs(wo.z));
+  // Longitudinal shadowing of w at this normal, from w's projection A onto the normal's in-plane part.
+  auto projection = [&](const Direction& w) { return w.z * std::cos(phiWorld) + w.x * std::sin(phiWorld); };
+  auto shadowing = [&](double A, const Direction& w) { return longitudinalMoments(A, w.y).shadowing(); };
+  double Ai = projection(wi), Ao = projection(wo);
+  double Si = shadowing(Ai, wi), So = shadowing(Ao, wo);
+  double scale = D * Si * So / (4.0 * std::abs(wi.z) * std::abs(wo.z));
   double cosHalf = wi.x * m.x + wi.y * m.y + wi.z * m.z;
+  // Relative change of the geometric factor per unit absolute change of A_i, A_o, and of phi times
+  // |omega_i + omega_o| (the half vector is a normalised sum: its angle errs by a rounding over that).
+  auto logSlope = [](const auto& f, double x, double h) {
+    return std::abs(f(x + h) - f(x - h)) / (2.0 * h * f(x));
+  };
+  double geometric = logSlope([&](double A) { return shadowing(A, wi); }, Ai, std::min(1e-6, 0.5 * Ai)) +
+                     logSlope([&](double A) { return shadowing(A, wo); }, Ao, std::min(1e-6, 0.5 * Ao)) +
+                     logSlope([&](double p) { return radiusOfCurvature(p); }, phi, 1e-6) /
+                         std::sqrt(sqr(wi.x + wo.x) + sqr(wi.y + wo.y) + sqr(wi.z + wo.z));
   for (size_t k = 0; k < lambdas.size(); ++k) {
     double n = m_.filmIndex(lambdas[k]);
-    r.value[k] = scale * airyFilm(cosHalf, m_.nOutside, n, m_.nOutside, m_.heightUm, lambdas[k]).reflectance();
+    auto film = [&](double c, double phaseScale) {
+      return airyFilm(c, m_.nOutside, n, m_.nOutside, m_.heightUm, lambdas[k], phaseScale).reflectance();
+    };
+    r.value[k] = scale * film(cosHalf, 1.0);
     r.envelope[k] = scale * freeStandingReflectanceEnvelope(cosHalf, m_.nOutside, n);
+    const double h = 1e-6, dc = std::min(1e-6, 0.5 * cosHalf);
+    r.phaseSensitivity[k] = scale * std::abs(film(cosHalf, 1.0 + h) - film(cosHalf, 1.0 - h)) / (2.0 * h);
+    r.roundingSensitivity[k] =
+        scale * std::abs(film(cosHalf + dc, 1.0) - film(cosHalf - dc, 1.0)) / (2.0 * dc) +
+        geometric * r.value[k];
   }
   return r;
+}
+
+std::vector<AngleInterval> BarbuleReference::commonNormals(double gammaI, double gammaO) const {
+  // As angles within the half facing gammaI.
+  std::vector<AngleInterval> both;
+  for (const AngleInterval& a : litNormals(gammaI))
+    for (const AngleInterval& b : litNormals(gammaO))
+      for (int k = -1; k <= 1; ++k) {
+        double lo = std::max(a.lo, b.lo + 2.0 * M_PI * k), hi = std::min(a.hi, b.hi + 2.0 * M_PI * k);
+        if (hi > lo) both.push_back({lo, hi});
+      }
+  return both;
+}
+
+double BarbuleReference::commonWidth(const Direction& wi, const Direction& wo) const {
+  double gammaI = inPlaneAngle(wi), width = 0.0;
+  for (const AngleInterval& piece : commonNormals(gammaI, inPlaneAngle(wo)))
+    width += offset(piece.hi, gammaI) - offset(piece.lo, gammaI);
+  return width;
 }
 
 BarbuleReference::TRT BarbuleReference::trt(const Direction& wiIn, const Direction& woIn,
@@ -292,19 +354,13 @@ BarbuleReference::TRT BarbuleReference::trt(const Direction& wiIn, const Directi
   TRT out;
   size_t count = lambdas.size();
   out.value.assign(count, 0.0);
+  out.endDensity.assign(count, 0.0);
   Direction wi = normalised(wiIn), wo = normalised(woIn);
   if (!(wi.z > 0.0) || wo.z == 0.0) return out;
   double gammaI = inPlaneAngle(wi), gammaO = inPlaneAngle(wo), alphaI = gammaI - m_.mu;
-
-  // Normals lit from both directions, as angles within the half facing omega_i.
-  std::vector<AngleInterval> fromI = litNormals(gammaI), fromO = litNormals(gammaO), both;
-  for (const AngleInterval& a : fromI)
-    for (const AngleInterval& b : fromO)
-      for (int k = -1; k <= 1; ++k) {
-        double lo = std::max(a.lo, b.lo + 2.0 * M_PI * k), hi = std::min(a.hi, b.hi + 2.0 * M_PI * k);
-        if (hi > lo) both.push_back({lo, hi});
-      }
-  for (const AngleInterval& piece : both) out.commonWidth += offset(piece.hi, gammaI) - offset(piece.lo, gammaI);
+  std::vector<AngleInterval> both = commonNormals(gammaI, gammaO);
+  for (const AngleInterval& piece : both)
+    out.commonWidth += offset(piece.hi, gammaI) - offset(piece.lo, gammaI);
   if (both.empty()) return out;
 
   // Split where the longitudinal range starts being clipped (|B| tan(thetaD) = A): a kink of the
@@ -323,43 +379,59 @@ BarbuleReference::TRT BarbuleReference::trt(const Direction& wiIn, const Directi
 
   std::vector<double> nFilm(count);
   for (size_t k = 0; k < count; ++k) nFilm[k] = m_.filmIndex(lambdas[k]);
-  // rho(phi) cos(gamma_i - mu - phi) E_theta[I_TRT / R_m]: dh = rho cos dphi, and the
-  // longitudinal mean with density proportional to (omega_i . m)+.
-  auto integrand = [&](double phi) {
+  // E_theta[I_TRT / R_m] at the normal phi: the longitudinal mean with density proportional to
+  // (omega_i . m)+.
+  auto meanTransmission = [&](double phi) {
     Values v(count, 0.0);
     double phiWorld = phi + m_.mu;
     double Ai = wi.z * std::cos(phiWorld) + wi.x * std::sin(phiWorld), Bi = wi.y;
     double Ao = wo.z * std::cos(phiWorld) + wo.x * std::sin(phiWorld), Bo = wo.y;
     double lo, hi;
     if (!facingRange(Ai, Bi, lo, hi)) return v;
-    double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo), norm = 0.0;
-    for (size_t j = 0; j < thetaRule_.nodes.size(); ++j) {
-      double theta = mid + half * thetaRule_.nodes[j];
+    // (omega_i . m) and (omega_i . m) I_TRT / R_m, the mean's denominator and numerators.
+    auto longitudinal = [&](double theta) {
+      Values u(count + 1);
       double cosIn = Ai * std::cos(theta) + Bi * std::sin(theta);
       double cosOut = std::abs(Ao * std::cos(theta) + Bo * std::sin(theta));
-      double w = thetaRule_.weights[j] * half * cosIn;
-      norm += w;
       for (size_t k = 0; k < count; ++k)
-        v[k] += w * freeStandingTransmittanceProduct(cosIn, cosOut, m_.nOutside, nFilm[k], m_.heightUm, lambdas[k]);
-    }
-    double dh = radiusOfCurvature(phi) * std::cos(phi - alphaI);
-    for (size_t k = 0; k < count; ++k) v[k] = norm > 0.0 ? dh * v[k] / norm : 0.0;
+        u[k] = cosIn * freeStandingTransmittanceProduct(cosIn, cosOut, m_.nOutside, nFilm[k], m_.heightUm,
+                                                        lambdas[k]);
+      u[count] = cosIn;
+      return u;
+    };
+    // Where omega_o . m changes sign the exit transmittance rises from 0 within a width that shrinks
+    // near a resonance of the film: cut there (adaptivity resolves the rise).
+    std::vector<double> cuts = {lo, hi};
+    double zero = Bo != 0.0 ? std::atan(-Ao / Bo) : lo;
+    if (zero > lo && zero < hi) cuts.push_back(zero);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    Values sums = integratePieces(thetaRules_, longitudinal, cuts, count + 1, tolerance_);
+    double norm = sums[count];
+    for (size_t k = 0; k < count; ++k) v[k] = norm > 0.0 ? sums[k] / norm : 0.0;
     return v;
   };
-  std::vector<Values> wholes;
-  Values estimate(count, 0.0);
-  for (const AngleInterval& piece : pieces) {
-    wholes.push_back(integrateWith(phiRule_, integrand, piece.lo, piece.hi, count));
-    for (size_t k = 0; k < count; ++k) estimate[k] += wholes.back()[k];
-  }
-  double absTol = tolerance_ * std::max(maxAbs(estimate), std::numeric_limits<double>::min());
+  // Integrated over the offsets h, dh = rho cos(gamma_i - mu - phi) dphi.
+  auto integrand = [&](double phi) {
+    Values v = meanTransmission(phi);
+    double dh = radiusOfCurvature(phi) * std::cos(phi - alphaI);
+    for (double& x : v) x *= dh;
+    return v;
+  };
   Values integral(count, 0.0);
-  for (size_t i = 0; i < pieces.size(); ++i)
-    integrateAdaptively(phiRule_, integrand, pieces[i].lo, pieces[i].hi, wholes[i], absTol, 0, integral);
+  for (const AngleInterval& piece : pieces) {
+    Values v = integratePieces(rules_, integrand, {piece.lo, piece.hi}, count, tolerance_);
+    for (size_t k = 0; k < count; ++k) integral[k] += v[k];
+  }
 
   // rho_TRT = R_m / (H |cos gamma_i|) * integral; f_TRT = rho_TRT / pi.
   double cosGammaI = wi.z / cosThetaI;
   for (size_t k = 0; k < count; ++k) out.value[k] = melanin[k] * integral[k] / (H_ * cosGammaI) / M_PI;
+  for (const AngleInterval& piece : both)
+    for (double end : {piece.lo, piece.hi}) {
+      Values atEnd = meanTransmission(end);
+      for (size_t k = 0; k < count; ++k) out.endDensity[k] += melanin[k] * atEnd[k] / (H_ * cosGammaI) / M_PI;
+    }
   return out;
 }
 

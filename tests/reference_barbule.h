@@ -25,6 +25,10 @@ struct GaussRule {
   std::vector<double> nodes, weights;
 };
 GaussRule gaussLegendreRule(int n);
+// Two rules whose agreement decides an adaptive subdivision.
+struct RulePair {
+  GaussRule low, high;
+};
 
 // Half-range of the longitudinal normal angles, 0.025 pi.
 inline constexpr double kThetaD = 0.025 * M_PI;
@@ -46,8 +50,8 @@ struct AngleInterval {
 // (A cos(theta) + B sin(theta))+, the projected area of the normals at one phi from a direction
 // with in-plane projection A and longitudinal component B.
 struct LongitudinalMoments {
-  double mass = 0.0;     // integral of (A cos + B sin)+ dtheta
-  double mean = 0.0;     // mean theta
+  double mass = 0.0;          // integral of (A cos + B sin)+ dtheta
+  double mean = 0.0;          // mean theta
   double lo = 0.0, hi = 0.0;  // where the density is positive
   // The model's longitudinal shadowing S: the cross-section's projected area 2 A sin(thetaD)
   // over the visible normals' mass (1 unless the range is clipped).
@@ -58,9 +62,10 @@ LongitudinalMoments longitudinalMoments(double A, double B);
 
 class BarbuleReference {
  public:
-  // `thetaNodes`: Gauss-Legendre nodes of the longitudinal mean; `tolerance`: relative tolerance
-  // of the adaptive integral over phi.
-  explicit BarbuleReference(const BarbuleModel& model, int thetaNodes = 16, double tolerance = 1e-10);
+  // The TRT integrals (over phi, and over theta inside) are adaptive Gauss-Legendre: a piece is
+  // halved until its `baseNodes` and 2 `baseNodes` rules (half as many over theta, a range of at
+  // most 9 degrees) agree to `tolerance` relative to the integral.
+  explicit BarbuleReference(const BarbuleModel& model, int baseNodes = 8, double tolerance = 1e-6);
 
   // The spacing used: H, raised to the contact spacing where neighbours would overlap.
   double spacing() const { return H_; }
@@ -86,29 +91,39 @@ class BarbuleReference {
   // uses -w (the same line through the layer).
   double coverage(const Direction& w) const;
 
-  // f_R per wavelength, the same with the film's reflectance replaced by its envelope (the scale
-  // of an interference error), and how far the half vector's normal is from a jump of G or D
-  // (radians in phi, and in theta from thetaD), for tests to leave out ambiguous pairs.
+  // f_R per wavelength; the same with the film's reflectance replaced by its envelope (the scale
+  // of an interference error); |d f_R / d ln(phase)|, what a relative error of the film's phase does
+  // to it; the sum of |d f_R / dx| over the cosines x that an implementation computes as dot
+  // products of unit vectors (omega_i . m for the film, the projections of omega_i and omega_o on
+  // the normal's in-plane part for S) and over the normal angle phi_m times |omega_i + omega_o|
+  // (the half vector normalises that sum), what a rounding of those by 1 does to it; and how far
+  // the half vector's normal is from a jump of G or D (radians in phi, and in theta from thetaD,
+  // negative outside), for tests to leave out ambiguous pairs.
   struct Reflection {
-    std::vector<double> value, envelope;
+    std::vector<double> value, envelope, phaseSensitivity, roundingSensitivity;
     double phiMargin = 0.0, thetaMargin = 0.0;
   };
   Reflection reflection(const Direction& wi, const Direction& wo, const std::vector<double>& lambdas) const;
 
-  // f_TRT per wavelength, `melanin` the melanin layer's reflectance at each wavelength; also the
-  // width of the offsets lit from both directions.
+  // f_TRT per wavelength, `melanin` the melanin layer's reflectance at each wavelength; the width
+  // of the offsets lit from both directions; and d f_TRT / dh at their ends, summed (what an error
+  // in where those ends are does to it).
   struct TRT {
-    std::vector<double> value;
+    std::vector<double> value, endDensity;
     double commonWidth = 0.0;
   };
   TRT trt(const Direction& wi, const Direction& wo, const std::vector<double>& lambdas,
           const std::vector<double>& melanin) const;
+  // Width of the offsets across omega_i (its in-plane part) of the points lit from both directions.
+  double commonWidth(const Direction& wi, const Direction& wo) const;
+  // The normal angles lit from both in-plane directions, within the half facing gammaI.
+  std::vector<AngleInterval> commonNormals(double gammaI, double gammaO) const;
 
  private:
   BarbuleModel m_;
   double H_;
   bool wholeEllipse_;
-  GaussRule thetaRule_, phiRule_;
+  RulePair rules_, thetaRules_;
   double tolerance_;
 };
 
