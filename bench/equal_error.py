@@ -161,7 +161,7 @@ def time_to(points, target):
     """Time at which the error reaches target, from (spp, seconds, error) rows: log-log
     interpolation between the two renders around it; beyond the last render, its error scaled
     as spp^(-1/2) and the time per sample of the last two renders ("*")."""
-    pts = [p for p in points if p[2] > 0 and p[1] > 0]
+    pts = [p for p in points if math.isfinite(p[2]) and p[2] > 0 and p[1] > 0]
     for (s0, t0, e0), (s1, t1, e1) in zip(pts, pts[1:]):
         if e0 >= target >= e1 and e0 != e1:
             f = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
@@ -184,7 +184,7 @@ def equal_error(columba, cache, work, name, title, scene, inputs, defines, ref_s
     ref, mean, ref_mse = converged(columba, cache, name, scene, inputs, defines, ref_spp,
                                    threads, work)
     print(f"{'spp':>6} {'wall_s':>8} {'render_s':>9} {'rel_RMSE':>9} {'corrected':>9} "
-          f"{'var/sample':>10}")
+          f"{'var/sample':>10} {'non-finite_px':>13}")
     points = []
     timings = {}
     spp = 1
@@ -192,13 +192,15 @@ def equal_error(columba, cache, work, name, title, scene, inputs, defines, ref_s
         out = os.path.join(work, f"{name}-{spp}.exr")
         wall, secs = render(columba, scene, defines, spp, 0, threads, out)
         img = read_exr_rgb(out)
-        mse = np.mean((img - ref) ** 2)
+        bad = int(np.count_nonzero(~np.isfinite(img).all(axis=-1)))
+        with np.errstate(over="ignore", invalid="ignore"):
+            mse = np.mean((img - ref) ** 2)
         raw = math.sqrt(mse) / mean
         corr = math.sqrt(max(mse - ref_mse, 0.0)) / mean
         points.append((spp, wall, secs, corr))
         timings[spp] = wall
-        print(f"{spp:>6} {wall:>8.2f} {secs:>9.2f} {raw:>9.4f} {corr:>9.4f} "
-              f"{corr * corr * spp:>10.4f}", flush=True)
+        print(f"{spp:>6} {wall:>8.2f} {secs:>9.2f} {raw:>9.4g} {corr:>9.4g} "
+              f"{corr * corr * spp:>10.4g} {bad:>13}", flush=True)
         spp *= 2
     pt, pe, pspp = paper
     print(f"  paper's code: relative RMSE {pe} at {pspp} spp in {pt} s (2 threads)")
