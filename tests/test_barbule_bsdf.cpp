@@ -233,9 +233,9 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
 // differ from each other by their discretisation: measured over the 80 cases below, the ratio
 // integral / means - 1 is 0.00006 on average (spread 0.0006, at most 0.0044) for R and 0.0021
 // (spread 0.0055, -0.0086 to +0.0207) for TRT. Each case must lie within bounds that hold all of
-// these (with a small absolute floor); the mean over all cases, where the discretisation errors of different cases cancel, must lie
-// within a narrow band around its measured value, so that a loss of 1 % of R's or TRT's energy
-// (which moves every case) fails.
+// these (with a small absolute floor); the mean over all cases, where the discretisation errors
+// of different cases cancel, must lie within a narrow band around its measured value, so that a
+// loss of 1 % of R's or TRT's energy (which moves every case) fails.
 constexpr double kMeanRatioR = 0.00006, kMeanRatioTRT = 0.0021, kMeanRatioBand = 0.004;
 
 TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeans) {
