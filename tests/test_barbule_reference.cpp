@@ -457,11 +457,11 @@ FilmErrors filmErrors(double phaseScale) {
       c2[j] = randomCos();
       weight[j] = rng.nextFloat();
     }
-    Spectrum product = production.transmittanceProduct(c1[0], c2[0]);
+    auto product = production.transmittanceProduct(c1[0], c2[0]);
     FloatLanes w{weight[0], weight[1], weight[2], weight[3]}, l1{c1[0], c1[1], c1[2], c1[3]},
         l2{c2[0], c2[1], c2[2], c2[3]};
-    Spectrum portable = production.weightedTransmittanceProductsPortable(w, l1, l2);
-    Spectrum avx2 =
+    auto portable = production.weightedTransmittanceProductsPortable(w, l1, l2);
+    auto avx2 =
         FreeStandingFilm::hasAvx2() ? production.weightedTransmittanceProductsAvx2(w, l1, l2) : portable;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       double lambda = wl[k], n = film(wl[k]);
