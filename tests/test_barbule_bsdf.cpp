@@ -177,7 +177,7 @@ LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
 LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
   BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H);
   FreeStandingFilm film(p.filmIOR, p.extIOR, p.height, kWavelengths);
-  SpectrumLanes melanin{};
+  Spectrum melanin;
   for (int k = 0; k < kSpectrumSamples; ++k) melanin[k] = melaninReflectance(kWavelengths[k]);
   InPlaneDirection ip = inPlane(wi);
   LitArc arc = geometry.litArc(ip.dir);
@@ -218,7 +218,7 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
           if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
           FreeStandingFilm::Reflectance out = film.reflectance(std::abs(dot(wo, vn.m)));
           float weight = std::abs(wo.z) / kPi * (kTwoPi / (rows * columns));
-          SpectrumLanes energy =
+          Spectrum energy =
               (0.5f * weight) * melanin * ((1.0f - in.s) * (1.0f - out.s) + (1.0f - in.p) * (1.0f - out.p));
           for (int k = 0; k < kSpectrumSamples; ++k) sumTRT[k] += energy[k];
         }

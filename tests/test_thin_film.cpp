@@ -140,7 +140,7 @@ TEST(ThinFilm, FreeStandingFilmTransmittanceProductMatchesTheAirySum) {
     float height = 1.2f * rng.nextFloat(), cos1 = rng.nextFloat(), cos2 = rng.nextFloat();
     Wavelengths wl = Wavelengths::fixed(lambdas);
     FreeStandingFilm film(RefractiveIndex::keratin(), float(kAir), height, wl);
-    SpectrumLanes product = film.transmittanceProduct(cos1, cos2);
+    Spectrum product = film.transmittanceProduct(cos1, cos2);
     double tolerance = std::min(cos1, cos2) > 0.05f ? 2e-5 : 5e-4;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       ThinFilmAmplitudes a = thinFilmAmplitudes(std::max(cos1, 1e-4f), kAir, keratin(wl[k]), kAir, height, wl[k]);
@@ -206,12 +206,12 @@ TEST(ThinFilm, FreeStandingFilmWeightedProductsMatchThePairwiseProducts) {
       cos1[j] = rng.nextFloat() * 1.01f - 0.005f;
       cos2[j] = rng.nextFloat() * 1.01f - 0.005f;
     }
-    SpectrumLanes expected{};
+    Spectrum expected;
     for (int j = 0; j < kLaneCount; ++j) expected += weight[j] * film.transmittanceProduct(cos1[j], cos2[j]);
-    std::vector<SpectrumLanes> results = {film.weightedTransmittanceProducts(weight, cos1, cos2),
-                                          film.weightedTransmittanceProductsPortable(weight, cos1, cos2)};
+    std::vector<Spectrum> results = {film.weightedTransmittanceProducts(weight, cos1, cos2),
+                                     film.weightedTransmittanceProductsPortable(weight, cos1, cos2)};
     if (FreeStandingFilm::hasAvx2()) results.push_back(film.weightedTransmittanceProductsAvx2(weight, cos1, cos2));
-    for (const SpectrumLanes& r : results)
+    for (const Spectrum& r : results)
       for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_NEAR(r[k], expected[k], 2e-5f * (1.0f + expected[k])) << i;
   }
 }

@@ -82,7 +82,7 @@ struct BarbuleBSDF::Shading {
   std::optional<BarbuleCrossSection> overridden;
   const BarbuleCrossSection& geometry;
   FreeStandingFilm film;
-  SpectrumLanes melanin;
+  Spectrum melanin;
 };
 
 // The model's incident direction and what depends on it alone.
@@ -185,7 +185,7 @@ Spectrum BarbuleBSDF::reflection(const Shading& s, const Incident& in, const Out
   float shadowOut = longitudinalShadowing(out.w.z * mp.dir.x + out.w.x * mp.dir.y, out.w.y);
   float scale = ndf * shadowIn * shadowOut / (4.0f * std::abs(in.w.z) * std::abs(out.w.z));
   FreeStandingFilm::Reflectance film = s.film.reflectance(dot(in.w, m));
-  return toSpectrum((0.5f * scale) * (film.s + film.p));
+  return (0.5f * scale) * (film.s + film.p);
 }
 
 Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& out) const {
@@ -204,7 +204,7 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& 
   float psiLo = psiEnds[0], psiSpan = psiEnds[1] - psiEnds[0];
   // Weights of the mean over [lo, hi] in h.
   float weightScale = halfWidth * psiSpan / length;
-  SpectrumLanes sum{};
+  Spectrum sum;
   for (size_t group = 0; group < offsetNodes_.size(); ++group) {
     FloatLanes sinPsi, cosPsi;
     sinCosWithinQuarterTurn(psiLo + offsetNodes_[group] * psiSpan, sinPsi, cosPsi);
@@ -226,11 +226,11 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& 
   }
   // f_TRT = rho / pi, rho = (1 / (H |cos gamma_i|)) * length * mean; |cos gamma_i| = |z| / cos(theta_i).
   float scale = length * in.plane.cosTheta / (kPi * geometry.spacing() * std::abs(in.w.z));
-  return toSpectrum(scale * s.melanin * sum);
+  return scale * s.melanin * sum;
 }
 
-FloatLanes BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
-                                            float outY) const {
+Spectrum BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
+                                          float outY) const {
   // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
   // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
   LongitudinalDensity longitudinal(projectedIn, inY);
@@ -243,7 +243,7 @@ FloatLanes BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn,
       pieceCount = 2;
     }
   }
-  SpectrumLanes inner{};
+  Spectrum inner;
   float norm = 0.0f;
   for (int piece = 0; piece < pieceCount; ++piece) {
     float lo = pieces[piece], span = pieces[piece + 1] - lo;
@@ -257,7 +257,7 @@ FloatLanes BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn,
       norm += w;
     }
   }
-  return norm > 0.0f ? inner / norm : SpectrumLanes{};
+  return norm > 0.0f ? inner / norm : Spectrum();
 }
 
 BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Outgoing& out) const {
@@ -276,10 +276,10 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident
     float h = in.arc.hMin + lobeNodes_[k] * in.arc.width();
     Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, h)));
     FreeStandingFilm::Reflectance film = s.film.reflectance(in.w.z * n.x + in.w.x * n.y);
-    SpectrumLanes r = 0.5f * (film.s + film.p);
-    SpectrumLanes trt = s.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
-    meanR += lobeWeights_[k] * toSpectrum(r).average();
-    meanTRT += lobeWeights_[k] * toSpectrum(trt).average();
+    Spectrum r = 0.5f * (film.s + film.p);
+    Spectrum trt = s.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
+    meanR += lobeWeights_[k] * r.average();
+    meanTRT += lobeWeights_[k] * trt.average();
   }
   float r = in.coverage;
   float energyR = r * std::max(meanR, kMinLobeShare), energyTRT = r * std::max(meanTRT, kMinLobeShare);

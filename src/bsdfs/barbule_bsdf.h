@@ -101,8 +101,8 @@ class BarbuleBSDF : public BSDF {
   Spectrum trt(const Shading& s, const Incident& in, const Outgoing& out) const;
   // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
   // per wavelength.
-  FloatLanes trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
-                                 float outY) const;
+  Spectrum trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
+                               float outY) const;
   LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;

@@ -212,8 +212,7 @@ Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
   const RgbMatchingTable& t = rgbMatchingTable();
   // Per wavelength: the weight s / pdf (0 where the pdf is), in lanes.
   FloatLanes pdf{wl.pdf[0], wl.pdf[1], wl.pdf[2], wl.pdf[3]};
-  FloatLanes value{s[0], s[1], s[2], s[3]};
-  FloatLanes weight = pdf > 0.0f ? value / pdf : FloatLanes{};
+  FloatLanes weight = pdf > 0.0f ? s.lanes / pdf : FloatLanes{};
   FloatLanes rgb{};
   for (int i = 0; i < kSpectrumSamples; ++i) rgb += interpolateNanometres(t.rgb, wl.lambda[i]) * weight[i];
   rgb *= 1.0f / kSpectrumSamples;

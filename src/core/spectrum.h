@@ -2,7 +2,7 @@
 // Spectral quantities carried along a path: 4 wavelengths (hero + 3 rotations) and values there.
 #include <array>
 #include <vector>
-#include "core/math.h"
+#include "core/fast_math.h"
 #include "core/vector.h"
 
 namespace columba {
@@ -11,29 +11,50 @@ inline constexpr int kSpectrumSamples = 4;
 inline constexpr float kLambdaMin = 360.0f;
 inline constexpr float kLambdaMax = 830.0f;
 
-// Values of a quantity at the path's wavelengths.
+// Values of a quantity at the path's wavelengths, one per SIMD lane: arithmetic on a spectrum is
+// one vector instruction.
 struct Spectrum {
-  std::array<float, kSpectrumSamples> v{};
+  static_assert(kSpectrumSamples == kLaneCount, "one SIMD register per spectrum");
+  FloatLanes lanes{};
   Spectrum() = default;
-  explicit Spectrum(float c) { v.fill(c); }
-  float operator[](int i) const { return v[i]; }
-  float& operator[](int i) { return v[i]; }
-#define COLUMBA_SPECTRUM_OP(op)                                                                  \
-  Spectrum operator op(const Spectrum& o) const { Spectrum r; for (int i = 0; i < kSpectrumSamples; ++i) r.v[i] = v[i] op o.v[i]; return r; } \
-  Spectrum operator op(float s) const { Spectrum r; for (int i = 0; i < kSpectrumSamples; ++i) r.v[i] = v[i] op s; return r; } \
-  Spectrum& operator op##=(const Spectrum& o) { for (int i = 0; i < kSpectrumSamples; ++i) v[i] op##= o.v[i]; return *this; } \
-  Spectrum& operator op##=(float s) { for (int i = 0; i < kSpectrumSamples; ++i) v[i] op##= s; return *this; }
+  explicit Spectrum(float c) : lanes{c, c, c, c} {}
+  explicit Spectrum(FloatLanes l) : lanes(l) {}
+  float operator[](int i) const { return lanes[i]; }
+  // Through the address: Clang binds no reference to a vector element (vector types alias their
+  // element type).
+  float& operator[](int i) { return reinterpret_cast<float*>(&lanes)[i]; }
+#define COLUMBA_SPECTRUM_OP(op)                                                             \
+  Spectrum operator op(const Spectrum& o) const { return Spectrum(lanes op o.lanes); }      \
+  Spectrum operator op(float s) const { return Spectrum(lanes op s); }                      \
+  Spectrum& operator op##=(const Spectrum& o) { lanes op##= o.lanes; return *this; }       \
+  Spectrum& operator op##=(float s) { lanes op##= s; return *this; }                       \
+  friend Spectrum operator op(float s, const Spectrum& a) { return Spectrum(s op a.lanes); }
   COLUMBA_SPECTRUM_OP(+)
   COLUMBA_SPECTRUM_OP(-)
   COLUMBA_SPECTRUM_OP(*)
   COLUMBA_SPECTRUM_OP(/)
 #undef COLUMBA_SPECTRUM_OP
-  float average() const { float s = 0; for (float x : v) s += x; return s / kSpectrumSamples; }
-  float maxValue() const { float m = v[0]; for (float x : v) m = std::max(m, x); return m; }
-  bool isZero() const { for (float x : v) if (x != 0.0f) return false; return true; }
-  bool isFinite() const { for (float x : v) if (!std::isfinite(x)) return false; return true; }
+  float average() const {
+    float s = 0;
+    for (int i = 0; i < kSpectrumSamples; ++i) s += lanes[i];
+    return s / kSpectrumSamples;
+  }
+  float maxValue() const {
+    float m = lanes[0];
+    for (int i = 1; i < kSpectrumSamples; ++i) m = std::max(m, lanes[i]);
+    return m;
+  }
+  bool isZero() const {
+    for (int i = 0; i < kSpectrumSamples; ++i)
+      if (lanes[i] != 0.0f) return false;
+    return true;
+  }
+  bool isFinite() const {
+    for (int i = 0; i < kSpectrumSamples; ++i)
+      if (!std::isfinite(lanes[i])) return false;
+    return true;
+  }
 };
-inline Spectrum operator*(float s, const Spectrum& a) { return a * s; }
 
 // The wavelengths (nm) a path carries and the density each was drawn with.
 struct Wavelengths {

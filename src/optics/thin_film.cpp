@@ -65,10 +65,9 @@ double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n
 
 FreeStandingFilm::FreeStandingFilm(const RefractiveIndex& film, float nOutside, float thicknessUm,
                                    const Wavelengths& wl) {
-  SpectrumLanes lambda = toLanes(wl.lambda);
-  SpectrumLanes nFilm;
-  for (int k = 0; k < kSpectrumSamples; ++k) nFilm[k] = film(wl.lambda[k]);
-  SpectrumLanes eta = nFilm * (1.0f / nOutside);
+  FloatLanes lambda{wl[0], wl[1], wl[2], wl[3]}, nFilm;
+  for (int k = 0; k < kSpectrumSamples; ++k) nFilm[k] = film(wl[k]);
+  FloatLanes eta = nFilm * (1.0f / nOutside);
   medium_.etaSqr = eta * eta;
   medium_.invEtaSqr = 1.0f / medium_.etaSqr;
   medium_.etaSqrMinusOne = medium_.etaSqr - 1.0f;
@@ -82,14 +81,14 @@ bool FreeStandingFilm::hasAvx2() {
   return avx2;
 }
 
-SpectrumLanes FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1,
-                                                              FloatLanes cos2) const {
+Spectrum FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1,
+                                                         FloatLanes cos2) const {
   return hasAvx2() ? weightedTransmittanceProductsAvx2(weight, cos1, cos2)
                    : weightedTransmittanceProductsPortable(weight, cos1, cos2);
 }
 
-SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1,
-                                                                      FloatLanes cos2) const {
+Spectrum FreeStandingFilm::weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1,
+                                                                 FloatLanes cos2) const {
   // A wavelength at a time, the four pairs in lanes.
   FloatLanes cSqr1 = clampedCosSqr(cos1), cSqr2 = clampedCosSqr(cos2);
   FloatLanes perWavelength[kSpectrumSamples];
@@ -97,10 +96,10 @@ SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsPortable(FloatLanes
     MediumAt m = mediumAt(k);
     perWavelength[k] = weight * product(terms(m, cSqr1), terms(m, cSqr2));
   }
-  return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
+  return Spectrum(laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]));
 }
 
-__attribute__((target("avx2,fma"))) SpectrumLanes FreeStandingFilm::weightedTransmittanceProductsAvx2(
+__attribute__((target("avx2,fma"))) Spectrum FreeStandingFilm::weightedTransmittanceProductsAvx2(
     FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const {
   // A wavelength at a time, both crossings of the four pairs in eight lanes: cos1 low, cos2 high.
   FloatLanes8 cSqr = clampedCosSqr(joinLanes(cos1, cos2));
@@ -113,7 +112,7 @@ __attribute__((target("avx2,fma"))) SpectrumLanes FreeStandingFilm::weightedTran
     Terms second{highLanes(t.aSqr), highLanes(t.sBSqrS), highLanes(t.pBSqrS)};
     perWavelength[k] = weight * product(first, second);
   }
-  return laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]);
+  return Spectrum(laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]));
 }
 
 }  // namespace columba

@@ -7,7 +7,6 @@
 //   t = t12 t23 e^{i delta / 2} / (1 + r12 r23 e^{i delta}),
 // which for n3 = n1 is the form r = r12 + t12 r21 t21 e^{i delta} / (1 - r21^2 e^{i delta}) with
 // t = t12 t21 / (1 - r21^2 e^{i delta}) up to the phase of t.
-#include <array>
 #include <complex>
 #include "core/fast_math.h"
 #include "core/spectrum.h"
@@ -36,20 +35,6 @@ double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3,
 double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
                              double lambdaNm);
 
-// The path's four wavelengths' values in one SIMD register: the film is evaluated at every
-// quadrature node of the barbule BSDF.
-using SpectrumLanes = FloatLanes;
-static_assert(kSpectrumSamples == kLaneCount, "one SIMD register per path spectrum");
-
-inline SpectrumLanes toLanes(const std::array<float, kSpectrumSamples>& a) {
-  return SpectrumLanes{a[0], a[1], a[2], a[3]};
-}
-inline Spectrum toSpectrum(SpectrumLanes v) {
-  Spectrum s;
-  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = v[i];
-  return s;
-}
-
 // A film (index nFilm(lambda), optically denser than its surroundings) with the same medium on
 // both sides, evaluated at a path's wavelengths: the barbule cortex in air. With a lossless film
 // and equal media, R + T = 1 per polarisation. Real arithmetic only: from the Airy sum
@@ -65,27 +50,28 @@ class FreeStandingFilm {
   FreeStandingFilm(const RefractiveIndex& film, float nOutside, float thicknessUm, const Wavelengths& wl);
 
   struct Reflectance {
-    SpectrumLanes s, p;
+    Spectrum s, p;
   };
   // Intensity reflectance for light meeting the film with incidence cosine `cosIncidence` (>= 0).
   Reflectance reflectance(float cosIncidence) const;
   // Unpolarised transmittance of two crossings, 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)):
   // light entering the film at one angle and leaving it at another (one division for all four).
-  SpectrumLanes transmittanceProduct(float cos1, float cos2) const;
+  Spectrum transmittanceProduct(float cos1, float cos2) const;
   // The same for four pairs of cosines, one per lane (a quadrature's nodes), weighted and summed
   // over the lanes: the sum at each of the path's wavelengths. On processors with AVX2 and FMA
   // both crossings of a wavelength are evaluated at once in eight lanes.
-  SpectrumLanes weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
+  Spectrum weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
   // Its two implementations (public so that tests compare them): four lanes on any x86-64, and
   // eight lanes, which needs a processor with AVX2 and FMA.
-  SpectrumLanes weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
-  __attribute__((target("avx2,fma"))) SpectrumLanes weightedTransmittanceProductsAvx2(FloatLanes weight,
-                                                                                      FloatLanes cos1,
-                                                                                      FloatLanes cos2) const;
+  Spectrum weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
+  __attribute__((target("avx2,fma"))) Spectrum weightedTransmittanceProductsAvx2(FloatLanes weight,
+                                                                                 FloatLanes cos1,
+                                                                                 FloatLanes cos2) const;
   static bool hasAvx2();
 
  private:
-  // The film's constants, one wavelength per lane (or one wavelength in every lane).
+  // The film's constants at the path's wavelengths, one per lane as in a Spectrum (the kernels
+  // below work on the lanes themselves), or one wavelength in every lane.
   struct Medium {
     FloatLanes etaSqrMinusOne;  // eta^2 - 1, eta = nFilm / nOutside
     FloatLanes etaSqr, invEtaSqr;
@@ -144,13 +130,15 @@ inline FloatLanes FreeStandingFilm::product(const Terms& a, const Terms& b) {
 inline FreeStandingFilm::Reflectance FreeStandingFilm::reflectance(float cosIncidence) const {
   Terms t = terms(medium_, clampedCosSqr(cosIncidence + FloatLanes{}));
   // One division serves both polarisations.
-  SpectrumLanes sDen = t.aSqr + t.sBSqrS, pDen = t.aSqr + t.pBSqrS;
-  SpectrumLanes inv = 1.0f / (sDen * pDen);
-  return {t.sBSqrS * pDen * inv, t.pBSqrS * sDen * inv};
+  FloatLanes sDen = t.aSqr + t.sBSqrS, pDen = t.aSqr + t.pBSqrS;
+  FloatLanes inv = 1.0f / (sDen * pDen);
+  return {Spectrum(t.sBSqrS * pDen * inv), Spectrum(t.pBSqrS * sDen * inv)};
 }
 
-inline SpectrumLanes FreeStandingFilm::transmittanceProduct(float cos1, float cos2) const {
-  return product(terms(medium_, clampedCosSqr(cos1 + FloatLanes{})), terms(medium_, clampedCosSqr(cos2 + FloatLanes{})));
+inline Spectrum FreeStandingFilm::transmittanceProduct(float cos1, float cos2) const {
+  Terms first = terms(medium_, clampedCosSqr(cos1 + FloatLanes{}));
+  Terms second = terms(medium_, clampedCosSqr(cos2 + FloatLanes{}));
+  return Spectrum(product(first, second));
 }
 
 }  // namespace columba
