@@ -193,7 +193,7 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
       Vec3 wo = reflect(wi, vn.m);
       if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
       Vec2 n = geometry.toWorld(vn.localNormal);
-      float shadow = LongitudinalDensity(wo.z * n.x + wo.x * n.y, wo.y).shadowing();
+      float shadow = LongitudinalDensity(inPlaneProjection(wo, n), wo.y).shadowing();
       FreeStandingFilm::Reflectance R = film.reflectance(dot(wi, vn.m));
       for (int k = 0; k < kSpectrumSamples; ++k) sumR[k] += 0.5 * shadow * (R.s[k] + R.p[k]);
     }

@@ -43,7 +43,6 @@ namespace columba {
 
 namespace {
 
-constexpr float kSinThetaD = kSinBarbuleThetaD;
 // Lower bound on the share of R and TRT in the lobe choice, relative to r: keeps every lobe
 // reachable when the estimate at a few normals happens to be near zero.
 constexpr float kMinLobeShare = 0.01f;
@@ -72,12 +71,13 @@ float gapTransmission(const BarbuleCrossSection& geometry, const Vec3& w) {
 
 }  // namespace
 
-// What a call needs besides the directions: the geometry with the point's overrides, and the film
-// and melanin at the path's wavelengths. Built in place: `geometry` may refer to `overridden`.
-struct BarbuleBSDF::Shading {
-  Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl);
-  Shading(const Shading&) = delete;
-  Shading& operator=(const Shading&) = delete;
+// The model at one shading point, what a call needs besides the directions: the cross-section
+// with the point's own tilt and spacing, and the film (with the point's thickness) and melanin at
+// the path's wavelengths. Built in place: `geometry` may refer to `overridden`.
+struct BarbuleBSDF::PointModel {
+  PointModel(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl);
+  PointModel(const PointModel&) = delete;
+  PointModel& operator=(const PointModel&) = delete;
 
   std::optional<BarbuleCrossSection> overridden;
   const BarbuleCrossSection& geometry;
@@ -115,18 +115,18 @@ struct BarbuleBSDF::Outgoing {
   bool reflects = false;
 };
 
-BarbuleBSDF::Outgoing BarbuleBSDF::outgoing(const Shading& s, const Incident& in, const Vec3& wo,
+BarbuleBSDF::Outgoing BarbuleBSDF::outgoing(const PointModel& point, const Incident& in, const Vec3& wo,
                                             const LitArc& arc) const {
   Outgoing out;
   out.w = wo;
   if (!in.scatters) return out;  // no lobe and no density reads the rest
-  const BarbuleCrossSection& geometry = s.geometry;
+  const BarbuleCrossSection& geometry = point.geometry;
   out.common = geometry.commonOffsets(in.arc, arc);
   Vec3 sum = in.w + wo;
   float lengthSqr = lengthSquared(sum);
   if (!(lengthSqr > 0.0f)) return out;
   out.m = sum / std::sqrt(lengthSqr);
-  if (std::abs(out.m.y) >= kSinThetaD) return out;
+  if (std::abs(out.m.y) >= kSinBarbuleThetaD) return out;
   out.mPlane = inPlane(out.m);
   out.mLocal = geometry.toLocal(out.mPlane.dir);
   out.reflects = geometry.isLit(in.arc, out.mLocal) && geometry.isLit(arc, out.mLocal);
@@ -145,7 +145,7 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
   makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
 }
 
-BarbuleBSDF::Shading::Shading(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl)
+BarbuleBSDF::PointModel::PointModel(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl)
     : overridden(bsdf.overriddenGeometry(ctx)),
       geometry(overridden ? *overridden : bsdf.geometry_),
       film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
@@ -160,36 +160,35 @@ std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFCon
                                       given(ctx.barbuleH) ? ctx.barbuleH : params_.H);
 }
 
-BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w) const {
-  return incident(s, w, s.geometry.litArc(inPlane(w).dir));
+BarbuleBSDF::Incident BarbuleBSDF::incident(const PointModel& point, const Vec3& w) const {
+  return incident(point, w, point.geometry.litArc(inPlane(w).dir));
 }
 
-BarbuleBSDF::Incident BarbuleBSDF::incident(const Shading& s, const Vec3& w, const LitArc& arc) const {
+BarbuleBSDF::Incident BarbuleBSDF::incident(const PointModel& point, const Vec3& w, const LitArc& arc) const {
   Incident in;
   in.w = w;
   in.plane = inPlane(w);
   in.arc = arc;  // also below the vane, where it is the arc seen by an outgoing direction
   if (!(w.z > 0.0f) || !(in.plane.cosTheta > 0.0f)) return in;
-  in.coverage = s.geometry.coverage(in.arc, in.plane.dir);
+  in.coverage = point.geometry.coverage(in.arc, in.plane.dir);
   in.scatters = in.arc.width() > 0.0f && in.coverage > 0.0f;
   return in;
 }
 
-Spectrum BarbuleBSDF::reflection(const Shading& s, const Incident& in, const Outgoing& out) const {
+Spectrum BarbuleBSDF::reflection(const PointModel& point, const Incident& in, const Outgoing& out) const {
   if (!out.reflects) return Spectrum(0.0f);
-  const BarbuleCrossSection& geometry = s.geometry;
   const Vec3& m = out.m;
   const InPlaneDirection& mp = out.mPlane;
-  float ndf = geometry.radiusOfCurvature(out.mLocal) / geometry.spacing() / (2.0f * kSinThetaD * mp.cosTheta);
-  float shadowIn = longitudinalShadowing(in.w.z * mp.dir.x + in.w.x * mp.dir.y, in.w.y);
-  float shadowOut = longitudinalShadowing(out.w.z * mp.dir.x + out.w.x * mp.dir.y, out.w.y);
+  float ndf = barbuleNDF(point.geometry, out.mLocal, mp.cosTheta);
+  float shadowIn = longitudinalShadowing(inPlaneProjection(in.w, mp.dir), in.w.y);
+  float shadowOut = longitudinalShadowing(inPlaneProjection(out.w, mp.dir), out.w.y);
   float scale = ndf * shadowIn * shadowOut / (4.0f * std::abs(in.w.z) * std::abs(out.w.z));
-  FreeStandingFilm::Reflectance film = s.film.reflectance(dot(in.w, m));
+  FreeStandingFilm::Reflectance film = point.film.reflectance(dot(in.w, m));
   return (0.5f * scale) * (film.s + film.p);
 }
 
-Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& out) const {
-  const BarbuleCrossSection& geometry = s.geometry;
+Spectrum BarbuleBSDF::trt(const PointModel& point, const Incident& in, const Outgoing& out) const {
+  const BarbuleCrossSection& geometry = point.geometry;
   const OffsetInterval& common = out.common;
   const Vec3& omegaO = out.w;
   float length = common.length();
@@ -210,27 +209,27 @@ Spectrum BarbuleBSDF::trt(const Shading& s, const Incident& in, const Outgoing& 
     sinCosWithinQuarterTurn(psiLo + offsetNodes_[group] * psiSpan, sinPsi, cosPsi);
     FloatLanes weight = offsetWeights_[group] * (weightScale * cosPsi);
     Vec2Lanes n = geometry.worldNormalsAtAngles(in.arc, sinPsi, cosPsi);
-    FloatLanes projectedIn = in.w.z * n.x + in.w.x * n.y, projectedOut = omegaO.z * n.x + omegaO.x * n.y;
+    FloatLanes projectedIn = inPlaneProjection(in.w, n), projectedOut = inPlaneProjection(omegaO, n);
     if (thetaNodes_.size() == 1) {
       // One longitudinal node at the mean angle (|theta| <= thetaD).
       FloatLanes c, sn;
       cosSinOfSmallAngle(meanLongitudinalAngles(projectedIn, in.w.y), c, sn);
       FloatLanes cosIn = projectedIn * c + in.w.y * sn, cosOut = absLanes(projectedOut * c + omegaO.y * sn);
       // The film at the nodes in lanes (padding lanes weigh 0), summed over them per wavelength.
-      sum += s.film.weightedTransmittanceProducts(weight, cosIn, cosOut);
+      sum += point.film.weightedTransmittanceProducts(weight, cosIn, cosOut);
       continue;
     }
     int lanes = std::min(kLaneCount, offsetNodeCount_ - int(group) * kLaneCount);
     for (int j = 0; j < lanes; ++j)
-      sum += weight[j] * trtLongitudinalMean(s, projectedIn[j], projectedOut[j], in.w.y, omegaO.y);
+      sum += weight[j] * trtLongitudinalMean(point, projectedIn[j], projectedOut[j], in.w.y, omegaO.y);
   }
   // f_TRT = rho / pi, rho = (1 / (H |cos gamma_i|)) * length * mean; |cos gamma_i| = |z| / cos(theta_i).
   float scale = length * in.plane.cosTheta / (kPi * geometry.spacing() * std::abs(in.w.z));
-  return scale * s.melanin * sum;
+  return scale * point.melanin * sum;
 }
 
-Spectrum BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
-                                          float outY) const {
+Spectrum BarbuleBSDF::trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut,
+                                          float inY, float outY) const {
   // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
   // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
   LongitudinalDensity longitudinal(projectedIn, inY);
@@ -253,31 +252,33 @@ Spectrum BarbuleBSDF::trtLongitudinalMean(const Shading& s, float projectedIn, f
       float cosIn = projectedIn * c + inY * sn, cosOut = std::abs(projectedOut * c + outY * sn);
       float w = thetaWeights_[j] * span * std::max(cosIn, 0.0f);
       if (!(w > 0.0f)) continue;
-      inner += w * s.film.transmittanceProduct(cosIn, cosOut);
+      inner += w * point.film.transmittanceProduct(cosIn, cosOut);
       norm += w;
     }
   }
   return norm > 0.0f ? inner / norm : Spectrum();
 }
 
-BarbuleBSDF::Lobes BarbuleBSDF::lobes(const Shading& s, const Incident& in, const Outgoing& out) const {
+BarbuleBSDF::Lobes BarbuleBSDF::evalLobesForPair(const PointModel& point, const Incident& in,
+                                                 const Outgoing& out) const {
   if (!in.scatters || out.w.z == 0.0f) return {};
-  return {reflection(s, in, out), trt(s, in, out)};
+  return {reflection(point, in, out), trt(point, in, out)};
 }
 
-BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident& in) const {
+BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const Incident& in) const {
   LobeChoice choice;
   if (!in.scatters) return choice;
-  const BarbuleCrossSection& geometry = s.geometry;
+  const BarbuleCrossSection& geometry = point.geometry;
   // Means of I_R and of R_m T^2 (TRT with the same film transmission on the way out) over the lit
   // offsets at theta_m = 0, averaged over the wavelengths.
   float meanR = 0.0f, meanTRT = 0.0f;
   for (size_t k = 0; k < lobeNodes_.size(); ++k) {
     float h = in.arc.hMin + lobeNodes_[k] * in.arc.width();
     Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, h)));
-    FreeStandingFilm::Reflectance film = s.film.reflectance(in.w.z * n.x + in.w.x * n.y);
+    FreeStandingFilm::Reflectance film = point.film.reflectance(inPlaneProjection(in.w, n));
     Spectrum r = 0.5f * (film.s + film.p);
-    Spectrum trt = s.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
+    Spectrum trt =
+        point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
     meanR += lobeWeights_[k] * r.average();
     meanTRT += lobeWeights_[k] * trt.average();
   }
@@ -291,14 +292,15 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const Shading& s, const Incident
   return choice;
 }
 
-float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice,
+float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice,
                                const Outgoing& out) const {
   if (!in.scatters) return 0.0f;
   float density = 0.0f;
   if (out.reflects) {
     float cosHalf = dot(in.w, out.m);
     if (cosHalf > 0.0f) {
-      float normalPdf = visibleNormalPdf(s.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
+      float normalPdf =
+          visibleNormalPdf(point.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
       density += choice.reflection * normalPdf / (4.0f * cosHalf);
     }
   }
@@ -306,66 +308,71 @@ float BarbuleBSDF::samplingPdf(const Shading& s, const Incident& in, const LobeC
   return density;
 }
 
-Spectrum BarbuleBSDF::cameraSideValue(const Shading& s, const Incident& in, const Outgoing& out) const {
-  return total(lobes(s, in, out)) * std::abs(out.w.z);
+Spectrum BarbuleBSDF::evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const {
+  Lobes lobes = evalLobesForPair(point, in, out);
+  return (lobes.reflection + lobes.trt) * std::abs(out.w.z);
 }
 
-Spectrum BarbuleBSDF::evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const {
-  if (role_ == Role::CameraIncident) return cameraSideValue(s, fromWi, outgoing(s, fromWi, wo, outArc));
+Spectrum BarbuleBSDF::evalAt(const PointModel& point, const Incident& fromWi, const Vec3& wo,
+                             const LitArc& woArc) const {
+  if (role_ == Role::CameraIncident) return evalForPair(point, fromWi, outgoing(point, fromWi, wo, woArc));
   // The scatterometer's quantity: light from wo, the camera's cosine (wi), so that a visualiser
   // image is the power scattered per solid angle toward each camera direction.
-  Incident fromWo = incident(s, wo, outArc);
-  return total(lobes(s, fromWo, outgoing(s, fromWo, fromWi.w, fromWi.arc))) * std::abs(fromWi.w.z);
+  Incident fromWo = incident(point, wo, woArc);
+  return evalForPair(point, fromWo, outgoing(point, fromWo, fromWi.w, fromWi.arc));
 }
 
 Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  Shading s(*this, ctx, wl);
-  LitArc wiArc = s.geometry.litArc(inPlane(wi).dir), woArc = s.geometry.litArc(inPlane(wo).dir);
-  return evalWith(s, incident(s, wi, wiArc), wo, woArc);
+  PointModel point(*this, ctx, wl);
+  LitArc wiArc = point.geometry.litArc(inPlane(wi).dir), woArc = point.geometry.litArc(inPlane(wo).dir);
+  return evalAt(point, incident(point, wi, wiArc), wo, woArc);
 }
 
-BSDFEvalPdf BarbuleBSDF::evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
-                                     const LitArc& outArc) const {
-  Outgoing out = outgoing(s, fromWi, wo, outArc);
+BSDFEvalPdf BarbuleBSDF::evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice,
+                                   const Vec3& wo, const LitArc& woArc) const {
+  Outgoing out = outgoing(point, fromWi, wo, woArc);
   // With omega_i on the camera side, value and density share the pair's geometry.
-  Spectrum value = role_ == Role::CameraIncident ? cameraSideValue(s, fromWi, out) : evalWith(s, fromWi, wo, outArc);
-  return {value, samplingPdf(s, fromWi, choice, out)};
+  Spectrum value =
+      role_ == Role::CameraIncident ? evalForPair(point, fromWi, out) : evalAt(point, fromWi, wo, woArc);
+  return {value, samplingPdf(point, fromWi, choice, out)};
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  Shading s(*this, ctx, wl);
-  Incident in = incident(s, wi);
+  PointModel point(*this, ctx, wl);
+  Incident in = incident(point, wi);
   if (!in.scatters) return 0.0f;
-  return samplingPdf(s, in, lobeChoice(s, in), outgoing(s, in, wo, s.geometry.litArc(inPlane(wo).dir)));
+  Outgoing out = outgoing(point, in, wo, point.geometry.litArc(inPlane(wo).dir));
+  return samplingPdf(point, in, lobeChoice(point, in), out);
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                               float uComponent, Vec2 u) const {
-  Shading s(*this, ctx, wl);
-  Incident in = incident(s, wi);
-  return sampleWith(s, in, lobeChoice(s, in), uComponent, u);
+  PointModel point(*this, ctx, wl);
+  Incident in = incident(point, wi);
+  return sampleAt(point, in, lobeChoice(point, in), uComponent, u);
 }
 
 BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                            const BSDFVertexRequest& request) const {
-  Shading s(*this, ctx, wl);
-  Incident in = incident(s, wi);
+  PointModel point(*this, ctx, wl);
+  Incident in = incident(point, wi);
   bool needsChoice = request.sample || (request.woLight && request.lightPdf);
-  LobeChoice choice = needsChoice ? lobeChoice(s, in) : LobeChoice{};
+  LobeChoice choice = needsChoice ? lobeChoice(point, in) : LobeChoice{};
   BSDFVertexQueries q;
   if (request.woLight) {
     const Vec3& wo = *request.woLight;
-    LitArc woArc = s.geometry.litArc(inPlane(wo).dir);
-    q.toLight = request.lightPdf ? evalPdfWith(s, in, choice, wo, woArc) : BSDFEvalPdf{evalWith(s, in, wo, woArc), 0.0f};
+    LitArc woArc = point.geometry.litArc(inPlane(wo).dir);
+    q.toLight = request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc)
+                                 : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   }
-  if (request.sample) q.sampled = sampleWith(s, in, choice, request.uComponent, request.u);
-  if (request.passThrough) q.passThrough = Spectrum(transmission(s.geometry, in));
+  if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u);
+  if (request.passThrough) q.passThrough = Spectrum(transmission(point.geometry, in));
   return q;
 }
 
-std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice,
-                                                  float uComponent, Vec2 u) const {
-  const BarbuleCrossSection& geometry = s.geometry;
+std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const Incident& in,
+                                                const LobeChoice& choice, float uComponent, Vec2 u) const {
+  const BarbuleCrossSection& geometry = point.geometry;
   const Vec3& wi = in.w;
   BSDFSample bs;
   if (uComponent < choice.transmission) {
@@ -392,10 +399,10 @@ std::optional<BSDFSample> BarbuleBSDF::sampleWith(const Shading& s, const Incide
     bs.wo = dot(w, m) >= 0.0f ? w : -w;
   }
   // The scattering point must be visible from wo.
-  LitArc outArc = geometry.litArc(inPlane(bs.wo).dir);
-  if (!geometry.isLit(outArc, localNormal)) return std::nullopt;
+  LitArc woArc = geometry.litArc(inPlane(bs.wo).dir);
+  if (!geometry.isLit(woArc, localNormal)) return std::nullopt;
 
-  BSDFEvalPdf f = evalPdfWith(s, in, choice, bs.wo, outArc);
+  BSDFEvalPdf f = evalPdfAt(point, in, choice, bs.wo, woArc);
   bs.pdf = f.pdf;
   if (!(bs.pdf > 0.0f)) return std::nullopt;
   bs.weight = f.value / bs.pdf;
@@ -409,9 +416,9 @@ Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const 
 
 BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO,
                                           const Wavelengths& wl) const {
-  Shading s(*this, ctx, wl);
-  Incident in = incident(s, omegaI);
-  return lobes(s, in, outgoing(s, in, omegaO, s.geometry.litArc(inPlane(omegaO).dir)));
+  PointModel point(*this, ctx, wl);
+  Incident in = incident(point, omegaI);
+  return evalLobesForPair(point, in, outgoing(point, in, omegaO, point.geometry.litArc(inPlane(omegaO).dir)));
 }
 
 float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {

@@ -82,7 +82,7 @@ class BarbuleBSDF : public BSDF {
   Role role() const { return role_; }
 
  private:
-  struct Shading;
+  struct PointModel;
   struct Incident;
   struct LobeChoice;
   struct Outgoing;
@@ -90,32 +90,37 @@ class BarbuleBSDF : public BSDF {
   // The cross-section with the point's own mu and H, when the context gives any.
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
   // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
-  Incident incident(const Shading& s, const Vec3& w) const;
-  Incident incident(const Shading& s, const Vec3& w, const LitArc& arc) const;
+  Incident incident(const PointModel& point, const Vec3& w) const;
+  Incident incident(const PointModel& point, const Vec3& w, const LitArc& arc) const;
   // omega_o, whose lit arc is `arc`, with what the pair (omega_i, omega_o) shares.
-  Outgoing outgoing(const Shading& s, const Incident& in, const Vec3& wo, const LitArc& arc) const;
-  // The lobes toward omega_o.
-  Lobes lobes(const Shading& s, const Incident& in, const Outgoing& out) const;
-  static Spectrum total(const Lobes& l) { return l.reflection + l.trt; }
-  Spectrum reflection(const Shading& s, const Incident& in, const Outgoing& out) const;
-  Spectrum trt(const Shading& s, const Incident& in, const Outgoing& out) const;
+  Outgoing outgoing(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
+
+  // Evaluation, one scheme. eval* gives the value f |cos omega_o|, evalLobes* the lobes without a
+  // cosine, evalPdf* the value with the sampling density. eval and evalLobes (public) start from a
+  // context and directions; *At starts from the point's model and omega_i's quantities (`fromWi`)
+  // with wo and its lit arc; *ForPair from a prepared pair (omega_i, omega_o). eval, evalAt and
+  // evalPdfAt take the interface's (wi, wo) and apply the role; evalLobes and *ForPair take the
+  // model's (omega_i, omega_o).
+  Spectrum evalAt(const PointModel& point, const Incident& fromWi, const Vec3& wo, const LitArc& woArc) const;
+  BSDFEvalPdf evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice,
+                        const Vec3& wo, const LitArc& woArc) const;
+  Spectrum evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
+  Lobes evalLobesForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
+  // The lobes of a pair.
+  Spectrum reflection(const PointModel& point, const Incident& in, const Outgoing& out) const;
+  Spectrum trt(const PointModel& point, const Incident& in, const Outgoing& out) const;
   // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
   // per wavelength.
-  Spectrum trtLongitudinalMean(const Shading& s, float projectedIn, float projectedOut, float inY,
+  Spectrum trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut, float inY,
                                float outY) const;
-  LobeChoice lobeChoice(const Shading& s, const Incident& in) const;
+
+  LobeChoice lobeChoice(const PointModel& point, const Incident& in) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  float samplingPdf(const Shading& s, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;
-  // eval with pdf, and sample, once the geometry, film, omega_i's incident quantities and lobe choice
-  // are known.
-  BSDFEvalPdf evalPdfWith(const Shading& s, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
-                          const LitArc& outArc) const;
-  std::optional<BSDFSample> sampleWith(const Shading& s, const Incident& in, const LobeChoice& choice, float uComponent,
-                                       Vec2 u) const;
-  // f |cos wo| for the role; `fromWi` = incident(s, wi), `outArc` = wo's lit arc.
-  Spectrum evalWith(const Shading& s, const Incident& fromWi, const Vec3& wo, const LitArc& outArc) const;
-  // f |cos wo| with omega_i = in.w on the camera side: the lobes of the pair `out` already holds.
-  Spectrum cameraSideValue(const Shading& s, const Incident& in, const Outgoing& out) const;
+  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice,
+                    const Outgoing& out) const;
+  // sample, once the point's model, omega_i's quantities and the lobe choice are known.
+  std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
+                                     float uComponent, Vec2 u) const;
 
   BarbuleParameters params_;
   Role role_;

@@ -2,18 +2,13 @@
 
 namespace columba {
 
-namespace {
-constexpr float kSinThetaD = kSinBarbuleThetaD;
-constexpr float kCosThetaD = kCosBarbuleThetaD;
-}  // namespace
-
 LongitudinalDensity::LongitudinalDensity(float A, float B)
     : A_(A), B_(B), thetaMin_(-kBarbuleThetaD), thetaMax_(kBarbuleThetaD) {
-  float atMax = A * kCosThetaD + B * kSinThetaD, atMin = A * kCosThetaD - B * kSinThetaD;
+  float atMax = A * kCosBarbuleThetaD + B * kSinBarbuleThetaD, atMin = A * kCosBarbuleThetaD - B * kSinBarbuleThetaD;
   if (atMax >= 0.0f && atMin >= 0.0f) {
     // The whole range faces w (the usual case): the projected area is exactly A.
-    primitiveMin_ = -A * kSinThetaD - B * kCosThetaD;
-    mass_ = 2.0f * A * kSinThetaD;
+    primitiveMin_ = -A * kSinBarbuleThetaD - B * kCosBarbuleThetaD;
+    mass_ = 2.0f * A * kSinBarbuleThetaD;
     shadowing_ = 1.0f;
     return;
   }
@@ -29,7 +24,7 @@ LongitudinalDensity::LongitudinalDensity(float A, float B)
   auto primitive = [&](float theta) { return A * std::sin(theta) - B * std::cos(theta); };
   primitiveMin_ = primitive(thetaMin_);
   mass_ = std::max(primitive(thetaMax_) - primitiveMin_, 0.0f);
-  shadowing_ = mass_ > 0.0f ? clampf(2.0f * A * kSinThetaD / mass_, 0.0f, 1.0f) : 0.0f;
+  shadowing_ = mass_ > 0.0f ? clampf(2.0f * A * kSinBarbuleThetaD / mass_, 0.0f, 1.0f) : 0.0f;
 }
 
 float LongitudinalDensity::sample(float u) const {
@@ -44,7 +39,7 @@ float LongitudinalDensity::sample(float u) const {
 float LongitudinalDensity::mean() const {
   if (!(mass_ > 0.0f)) return 0.5f * (thetaMin_ + thetaMax_);
   if (shadowing_ == 1.0f && thetaMin_ == -kBarbuleThetaD && thetaMax_ == kBarbuleThetaD)
-    return B_ / A_ * (kSinThetaD - kBarbuleThetaD * kCosThetaD) / kSinThetaD;
+    return B_ / A_ * (kSinBarbuleThetaD - kBarbuleThetaD * kCosBarbuleThetaD) / kSinBarbuleThetaD;
   // Antiderivative of theta (A cos(theta) + B sin(theta)).
   auto moment = [&](float t) {
     float c = std::cos(t), s = std::sin(t);
@@ -58,20 +53,12 @@ float LongitudinalDensity::pdf(float theta) const {
   return std::max(A_ * std::cos(theta) + B_ * std::sin(theta), 0.0f) / mass_;
 }
 
-float barbuleNDF(const BarbuleCrossSection& geometry, const Vec3& m) {
-  if (std::abs(m.y) >= kSinThetaD) return 0.0f;
-  InPlaneDirection p = inPlane(m);
-  Vec2 local = geometry.toLocal(p.dir);
-  if (!geometry.onReflectiveArc(local)) return 0.0f;
-  return geometry.radiusOfCurvature(local) / geometry.spacing() / (2.0f * kSinThetaD * p.cosTheta);
-}
-
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u) {
   float h = arc.hMin + u.x * arc.width();
   VisibleNormal out;
   out.localNormal = geometry.normalAt(geometry.pointAt(arc, h));
   Vec2 n = geometry.toWorld(out.localNormal);
-  LongitudinalDensity longitudinal(w.z * n.x + w.x * n.y, w.y);
+  LongitudinalDensity longitudinal(inPlaneProjection(w, n), w.y);
   float theta = longitudinal.sample(u.y);
   out.m = barbuleNormal(n, std::cos(theta), std::sin(theta));
   return out;
@@ -80,7 +67,7 @@ VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const Lit
 float visibleNormalPdf(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float wCosTheta,
                        float wDotM, const InPlaneDirection& mPlane, Vec2 mLocal) {
   // phi: dh = rho cos(gamma - phi - mu) dphi with h uniform on the lit width.
-  float A = w.z * mPlane.dir.x + w.x * mPlane.dir.y;
+  float A = inPlaneProjection(w, mPlane.dir);
   float pdfPhi = geometry.radiusOfCurvature(mLocal) * (A / wCosTheta) / arc.width();
   // theta given phi: (w . m) / mass, and dm = cos(theta) dtheta dphi.
   float pdfTheta = LongitudinalDensity(A, w.y).pdfFromProjection(wDotM);

@@ -43,6 +43,13 @@ inline Vec3 barbuleNormal(Vec2 worldNormal, float cosTheta, float sinTheta) {
   return {cosTheta * worldNormal.y, sinTheta, cosTheta * worldNormal.x};
 }
 
+// w . m for the normal m = barbuleNormal(n, 1, 0) of world in-plane normal n and longitudinal angle
+// 0: the in-plane projection cos(theta_w) cos(gamma_w - gamma_n), the A of LongitudinalDensity.
+// N is a Vec2, or Vec2Lanes for four normals at once.
+template <typename N> inline auto inPlaneProjection(const Vec3& w, const N& n) {
+  return w.z * n.x + w.x * n.y;
+}
+
 // Density of theta on [-thetaD, thetaD] proportional to (A cos(theta) + B sin(theta))+, the
 // projected area of the normals at one phi seen from a direction with in-plane part
 // A = cos(theta_w) cos(gamma_w - phi - mu) > 0 and longitudinal part B = sin(theta_w).
@@ -95,8 +102,11 @@ inline FloatLanes meanLongitudinalAngles(FloatLanes A, float B) {
   return theta;
 }
 
-// D(m) of the normal m (unit); 0 off the reflective arc or beyond thetaD.
-float barbuleNDF(const BarbuleCrossSection& geometry, const Vec3& m);
+// D(m) of a normal m on the reflective arc with |theta_m| < thetaD, from its in-plane normal in the
+// ellipse's frame and cos(theta_m): D_phi D_theta / cos(theta_m) with D_phi = rho / H.
+inline float barbuleNDF(const BarbuleCrossSection& geometry, Vec2 localNormal, float cosTheta) {
+  return geometry.radiusOfCurvature(localNormal) / geometry.spacing() / (2.0f * kSinBarbuleThetaD * cosTheta);
+}
 
 struct VisibleNormal {
   Vec3 m;

@@ -113,9 +113,9 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
   }
   if (ply.hasBarbuleValues()) {
     // In the model's terms and interleaved, so that a hit reads its parameters from one place.
-    barbuleParams_.resize(ply.positions.size());
-    tbb::parallel_for(size_t(0), barbuleParams_.size(), [&](size_t i) {
-      barbuleParams_[i] = {modelSpacingFromFile(ply.barbuleH[i]), modelTiltFromFile(ply.barbuleMu[i]),
+    barbuleValues_.resize(ply.positions.size());
+    tbb::parallel_for(size_t(0), barbuleValues_.size(), [&](size_t i) {
+      barbuleValues_[i] = {modelSpacingFromFile(ply.barbuleH[i]), modelTiltFromFile(ply.barbuleMu[i]),
                            ply.barbuleHeight[i]};
     });
   }
@@ -220,9 +220,9 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
     t = angle > 0.0f ? -(s.axis * cosSpan_ + circumferential * sinSpan_) : s.axis * cosSpan_ - circumferential * sinSpan_;
   }
   si.shading = Frame(cross(t, si.ng), t, si.ng);
-  BarbuleParameters values = kDefaultBarbuleParameters;
-  if (!barbuleParams_.empty()) {
-    const BarbuleParameters* v = &barbuleParams_[barb * kBarbVertices + size_t(seg)];
+  BarbuleValues values = kDefaultBarbuleValues;
+  if (!barbuleValues_.empty()) {
+    const BarbuleValues* v = &barbuleValues_[barb * kBarbVertices + size_t(seg)];
     values = {lerp(along, v[0].h, v[1].h), lerp(along, v[0].mu, v[1].mu), lerp(along, v[0].height, v[1].height)};
   }
   const float edgeAngle = std::asin(std::min(profiles_[seg].halfWidthAt(hit.u) / radius_, 1.0f));
@@ -236,7 +236,7 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
 }
 
 size_t FeatherShape::memoryBytes() const {
-  return strips_.capacity() * sizeof(PackedStrip) + barbuleParams_.capacity() * sizeof(BarbuleParameters);
+  return strips_.capacity() * sizeof(PackedStrip) + barbuleValues_.capacity() * sizeof(BarbuleValues);
 }
 
 }  // namespace columba

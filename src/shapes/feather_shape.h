@@ -92,13 +92,13 @@ class FeatherShape : public Shape {
   // vertices are not kept: strip() recovers the mitre planes from the neighbours' axes.
   std::vector<PackedStrip> strips_;
   std::array<StripProfile, kBarbSegments> profiles_;  // by segment index: all barbs taper alike
-  struct BarbuleParameters {
-    float h, mu, height;  // the model's, before the ramus tilt
+  // A vertex's barbule values (H, mu, height) in the model's terms, before the ramus tilt.
+  struct BarbuleValues {
+    float h, mu, height;
   };
-  static constexpr BarbuleParameters kDefaultBarbuleParameters{modelSpacingFromFile(kDefaultFileSpacing),
-                                                               modelTiltFromFile(kDefaultFileTilt),
-                                                               kDefaultCortexThickness};
-  std::vector<BarbuleParameters> barbuleParams_;  // per vertex, or empty when the file has none
+  static constexpr BarbuleValues kDefaultBarbuleValues{modelSpacingFromFile(kDefaultFileSpacing),
+                                                       modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
+  std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };
