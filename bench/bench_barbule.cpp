@@ -86,10 +86,11 @@ BENCHMARK(BM_BarbuleSample);
 void BM_BarbuleEvalOverrides(benchmark::State& state) {
   BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role::CameraIncident);
   const std::vector<Query>& q = queries();
-  BSDFContext ctx;
-  ctx.barbuleH = 1.4f;
-  ctx.barbuleMu = -0.3f;
-  ctx.barbuleHeight = 0.62f;
+  SurfaceAttributes point;
+  point.set("H", 1.4f);
+  point.set("mu", -0.3f);
+  point.set("height", 0.62f);
+  const BSDFContext ctx{&point};
   size_t i = 0;
   for (auto _ : state) {
     const Query& x = q[i++ & 4095];

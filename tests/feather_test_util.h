@@ -7,11 +7,17 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string_view>
 #include <vector>
 #include "core/rng.h"
 #include "shapes/feather_shape.h"
 
 namespace columba::test {
+
+// A hit's attribute `name` (a per-point BSDF parameter), NaN where the hit does not give it.
+inline float attribute(const SurfaceInteraction& si, std::string_view name) {
+  return si.attributes.find(name).value_or(std::nanf(""));
+}
 
 // Barbs laid side by side along y, each curving in its vane plane (bend), lifting out of it
 // (lift) and wiggling by `zigzag` radians at alternate joints, with vane normal +z tilted

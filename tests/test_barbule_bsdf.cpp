@@ -382,10 +382,10 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
 }
 
 TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
-  BSDFContext overridden;
-  overridden.barbuleH = 1.6f;
-  overridden.barbuleMu = -0.2f;
-  for (const BSDFContext& ctx : {BSDFContext{}, overridden})
+  SurfaceAttributes point;
+  point.set("H", 1.6f);
+  point.set("mu", -0.2f);
+  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point}})
     for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(reference(0.58f), role);
       PCG32 rng(37);
@@ -458,10 +458,11 @@ TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
 TEST(BarbuleBSDF, PerPointOverridesActLikeTheParameters) {
   BarbuleParameters base = reference(0.58f);
   BarbuleBSDF bsdf(base);
-  BSDFContext ctx;
-  ctx.barbuleH = 1.6f;
-  ctx.barbuleMu = -0.2f;
-  ctx.barbuleHeight = 0.63f;
+  SurfaceAttributes point;
+  point.set("H", 1.6f);
+  point.set("mu", -0.2f);
+  point.set("height", 0.63f);
+  const BSDFContext ctx{&point};
   BarbuleParameters changed = base;
   changed.H = 1.6f;
   changed.mu = -0.2f;

@@ -717,14 +717,15 @@ TEST(BarbuleReference, PerPointOverridesMatchTheReferenceOfThoseParameters) {
   BarbuleBSDF bsdf(base, BarbuleBSDF::Role::CameraIncident, kFineQuadrature);
   double worst = 0.0;
   for (int i = 0; i < 60; ++i) {
-    BSDFContext ctx;
-    ctx.barbuleMu = uniform(rng, -0.8f, 0.4f);
-    ctx.barbuleH = uniform(rng, 1.0f, 2.5f);
-    ctx.barbuleHeight = uniform(rng, 0.4f, 0.7f);
     BarbuleParameters p = base;
-    p.mu = ctx.barbuleMu;
-    p.H = ctx.barbuleH;
-    p.height = ctx.barbuleHeight;
+    p.mu = uniform(rng, -0.8f, 0.4f);
+    p.H = uniform(rng, 1.0f, 2.5f);
+    p.height = uniform(rng, 0.4f, 0.7f);
+    SurfaceAttributes point;
+    point.set("mu", p.mu);
+    point.set("H", p.H);
+    point.set("height", p.height);
+    const BSDFContext ctx{&point};
     Case c = makeCase(p, -1.0f, "override");
     ref::BarbuleReference model(c.model);
     Vec3 wi = upperHemisphere(rng),

@@ -56,9 +56,9 @@ TEST(FeatherReferenceConvention, FileValuesReachTheBsdfAsTheOriginalConvertsThem
   BarbStrip s = shape.strip(10);
   auto hit = hitAt(scene, shape, 10, 0.5f, 0.5f * edgeAngle(s, 0.5f));
   ASSERT_TRUE(hit.has_value());
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleH, 1.25f, 1e-6f);
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleMu, -0.35f, 1e-6f);
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleHeight, 0.6f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "H"), 1.25f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "mu"), -0.35f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "height"), 0.6f, 1e-6f);
 }
 
 TEST(FeatherReferenceConvention, BarbulesTiltMoreNearTheRamusOnBothSides) {
@@ -74,10 +74,10 @@ TEST(FeatherReferenceConvention, BarbulesTiltMoreNearTheRamusOnBothSides) {
     for (float side : {-1.0f, 1.0f}) {
       auto near = hitAt(scene, shape, seg, 0.5f, side * 0.25f * zone);
       ASSERT_TRUE(near.has_value());
-      EXPECT_NEAR(near->second.bsdfContext.barbuleMu, -0.725f, 2e-3f) << "segment " << seg << ", side " << side;
+      EXPECT_NEAR(attribute(near->second, "mu"), -0.725f, 2e-3f) << "segment " << seg << ", side " << side;
       auto beyond = hitAt(scene, shape, seg, 0.5f, side * 1.5f * zone);
       ASSERT_TRUE(beyond.has_value());
-      EXPECT_NEAR(beyond->second.bsdfContext.barbuleMu, -0.35f, 1e-6f);
+      EXPECT_NEAR(attribute(beyond->second, "mu"), -0.35f, 1e-6f);
     }
   }
 }
@@ -89,9 +89,9 @@ TEST(FeatherReferenceConvention, WithoutPerVertexValuesTheFeathersOwnDefaultsApp
   auto hit = hitAt(scene, shape, 20, 0.5f, 0.5f * edgeAngle(s, 0.5f));
   ASSERT_TRUE(hit.has_value());
   // File H 0.5, mu 0.35, height 0.65 (not the BSDF's H, mu and height).
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleH, 1.25f, 1e-6f);
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleMu, -0.35f, 1e-6f);
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleHeight, 0.65f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "H"), 1.25f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "mu"), -0.35f, 1e-6f);
+  EXPECT_NEAR(attribute(hit->second, "height"), 0.65f, 1e-6f);
 }
 
 TEST(FeatherReferenceConvention, ZeroTiltOrThicknessLeavesTheBsdfsOwn) {
@@ -100,9 +100,9 @@ TEST(FeatherReferenceConvention, ZeroTiltOrThicknessLeavesTheBsdfsOwn) {
   BarbStrip s = shape.strip(20);
   auto hit = hitAt(scene, shape, 20, 0.5f, 0.5f * edgeAngle(s, 0.5f));
   ASSERT_TRUE(hit.has_value());
-  EXPECT_NEAR(hit->second.bsdfContext.barbuleH, 1.0f, 1e-6f);
-  EXPECT_TRUE(std::isnan(hit->second.bsdfContext.barbuleMu));
-  EXPECT_TRUE(std::isnan(hit->second.bsdfContext.barbuleHeight));
+  EXPECT_NEAR(attribute(hit->second, "H"), 1.0f, 1e-6f);
+  EXPECT_FALSE(hit->second.attributes.find("mu"));
+  EXPECT_FALSE(hit->second.attributes.find("height"));
 }
 
 TEST(FeatherReferenceConvention, ShadingFramesPointTowardTheRamusOnBothSides) {
@@ -203,9 +203,9 @@ TEST(FeatherReferenceConvention, GeneratedFeatherRoundTripsThroughTheFile) {
     BarbStrip s = shape.strip(barb * kBarbSegments + seg);
     auto hit = hitAt(scene, shape, int(barb * kBarbSegments + seg), 0.5f, 0.5f * edgeAngle(s, 0.5f));
     if (!hit || hit->first.primID != barb * kBarbSegments + seg) continue;
-    EXPECT_NEAR(hit->second.bsdfContext.barbuleH, 1.25f, 1.25f * 0.041f);
-    EXPECT_NEAR(hit->second.bsdfContext.barbuleMu, -0.35f, 1e-6f);
-    EXPECT_NEAR(hit->second.bsdfContext.barbuleHeight, kGreenCortexThickness, 0.0081f);
+    EXPECT_NEAR(attribute(hit->second, "H"), 1.25f, 1.25f * 0.041f);
+    EXPECT_NEAR(attribute(hit->second, "mu"), -0.35f, 1e-6f);
+    EXPECT_NEAR(attribute(hit->second, "height"), kGreenCortexThickness, 0.0081f);
     ++checked;
   }
   EXPECT_GT(checked, 2);

@@ -263,9 +263,9 @@ TEST(FeatherShape, PerVertexParametersAreInterpolatedAlongTheBarb) {
       ASSERT_TRUE(hit.has_value());
       float pos = (float(seg) + along) / float(kBarbSegments);  // syntheticBarbs: file H = 1 + pos
       EXPECT_NEAR(hit->second.uv.x, pos, 1e-4f);
-      EXPECT_NEAR(hit->second.bsdfContext.barbuleH, 2.5f * (1.0f + pos), 1e-4f);
-      EXPECT_NEAR(hit->second.bsdfContext.barbuleMu, 0.35f, 1e-6f);  // file mu -0.35
-      EXPECT_NEAR(hit->second.bsdfContext.barbuleHeight, 0.6f - 0.1f * pos, 1e-4f);
+      EXPECT_NEAR(attribute(hit->second, "H"), 2.5f * (1.0f + pos), 1e-4f);
+      EXPECT_NEAR(attribute(hit->second, "mu"), 0.35f, 1e-6f);  // file mu -0.35
+      EXPECT_NEAR(attribute(hit->second, "height"), 0.6f - 0.1f * pos, 1e-4f);
     }
   }
 }

@@ -49,8 +49,6 @@ constexpr float kMinLobeShare = 0.01f;
 // The longitudinal normal angles are small enough for cosSinOfSmallAngle.
 static_assert(kBarbuleThetaD <= kSmallAngleLimit);
 
-bool given(float v) { return !std::isnan(v); }
-
 void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
   GaussLegendreRule rule = gaussLegendre(n);
   nodes.assign(rule.nodes.begin(), rule.nodes.end());
@@ -149,15 +147,15 @@ BarbuleBSDF::PointModel::PointModel(const BarbuleBSDF& bsdf, const BSDFContext& 
     : overridden(bsdf.overriddenGeometry(ctx)),
       geometry(overridden ? *overridden : bsdf.geometry_),
       film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
-           std::max(given(ctx.barbuleHeight) ? ctx.barbuleHeight : bsdf.params_.height, 0.0f), wl) {
+           std::max(ctx.attribute("height").value_or(bsdf.params_.height), 0.0f), wl) {
   const std::optional<SpectralDistribution>& own = bsdf.params_.melanin;
   for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = own ? own->eval(wl[i]) : melaninReflectance(wl[i]);
 }
 
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
-  if (!given(ctx.barbuleH) && !given(ctx.barbuleMu)) return std::nullopt;
-  return geometry_.withTiltAndSpacing(given(ctx.barbuleMu) ? ctx.barbuleMu : params_.mu,
-                                      given(ctx.barbuleH) ? ctx.barbuleH : params_.H);
+  std::optional<float> mu = ctx.attribute("mu"), H = ctx.attribute("H");
+  if (!mu && !H) return std::nullopt;
+  return geometry_.withTiltAndSpacing(mu.value_or(params_.mu), H.value_or(params_.H));
 }
 
 BarbuleBSDF::Incident BarbuleBSDF::incident(const PointModel& point, const Vec3& w) const {

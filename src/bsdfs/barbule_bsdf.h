@@ -87,7 +87,7 @@ class BarbuleBSDF : public BSDF {
   struct LobeChoice;
   struct Outgoing;
 
-  // The cross-section with the point's own mu and H, when the context gives any.
+  // The cross-section with the point's own mu and H, when its attributes give any.
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
   // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
   Incident incident(const PointModel& point, const Vec3& w) const;

@@ -3,20 +3,23 @@
 // from the surface: `wi` toward where the path came from (camera side), `wo` toward the light
 // (Mitsuba's convention). Values include the cosine of `wo`.
 #include <cmath>
-#include <limits>
 #include <optional>
+#include <string_view>
 #include "core/object.h"
 #include "core/spectrum.h"
+#include "core/surface_attributes.h"
 #include "core/vector.h"
 
 namespace columba {
 
-// Per-hit inputs besides the directions: per-point parameters supplied by the geometry
-// (the feather's per-vertex barbule spacing, tilt and cortex thickness). NaN means "not given".
+// Per-call inputs besides the directions: the shading point's attributes, the values of BSDF
+// parameters its shape gives per point (none by default).
 struct BSDFContext {
-  float barbuleH = std::numeric_limits<float>::quiet_NaN();
-  float barbuleMu = std::numeric_limits<float>::quiet_NaN();
-  float barbuleHeight = std::numeric_limits<float>::quiet_NaN();
+  const SurfaceAttributes* attributes = nullptr;
+
+  std::optional<float> attribute(std::string_view name) const {
+    return attributes ? attributes->find(name) : std::nullopt;
+  }
 };
 
 struct BSDFSample {

@@ -63,7 +63,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     request.sample = true;
     request.uComponent = uComponent;
     request.u = uDirection;
-    BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext, wi, wl, request);
+    BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext(), wi, wl, request);
     if (light) {
       if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays))
         L += beta * ds->value * emitterSampleWeight(ds->deltaLight, ds->lightPdf, ds->bsdfPdf);

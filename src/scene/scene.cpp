@@ -94,7 +94,7 @@ Spectrum Scene::traceThrough(Ray ray, const Wavelengths& wl, uint64_t& rays,
       return result;
     }
     Vec3 dir = normalize(ray.d);
-    result *= bsdf.passThrough(hit->bsdfContext, hit->shading.toLocal(-dir), wl);
+    result *= bsdf.passThrough(hit->bsdfContext(), hit->shading.toLocal(-dir), wl);
     if (result.isZero()) return result;
     // Continue from just beyond the surface, keeping the same end point.
     Ray next = hit->spawnRay(dir);

@@ -227,11 +227,11 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   }
   const float edgeAngle = std::asin(std::min(profiles_[seg].halfWidthAt(hit.u) / radius_, 1.0f));
   values.mu += ramusTilt(angle, edgeAngle);
-  // A zero tilt or thickness leaves the BSDF's own parameter in force, as in the original.
-  constexpr float kBsdfsOwn = std::numeric_limits<float>::quiet_NaN();
-  si.bsdfContext.barbuleH = values.h;
-  si.bsdfContext.barbuleMu = values.mu == 0.0f ? kBsdfsOwn : values.mu;
-  si.bsdfContext.barbuleHeight = values.height == 0.0f ? kBsdfsOwn : values.height;
+  // Named as the barbule BSDF's parameters. A zero tilt or thickness leaves the BSDF's own
+  // parameter in force, as in the original.
+  si.attributes.set("H", values.h);
+  if (values.mu != 0.0f) si.attributes.set("mu", values.mu);
+  if (values.height != 0.0f) si.attributes.set("height", values.height);
   return si;
 }
 

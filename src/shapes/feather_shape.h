@@ -35,8 +35,9 @@
 //   given; they are interpolated linearly along the segment (the original holds the value of
 //   the segment's base-ward vertex). A file without them gets the feather's defaults (file H
 //   0.5, mu 0.35, height 0.65 um), not the BSDF's. At a hit at angle phi, mu gains the ramus
-//   tilt 0.5 (|phi| / d_r - 1) where |phi| < d_r = 0.1 phi_edge. A resulting mu or height of
-//   exactly 0 leaves the BSDF's own parameter in force (NaN in the context), as in the original.
+//   tilt 0.5 (|phi| / d_r - 1) where |phi| < d_r = 0.1 phi_edge. The hit carries them as its
+//   attributes "H", "mu" and "height"; a mu or height of exactly 0 is left out, so the BSDF's
+//   own parameter stays in force, as in the original.
 #include <array>
 #include <memory>
 #include <vector>

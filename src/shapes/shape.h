@@ -30,7 +30,9 @@ struct SurfaceInteraction {
   Vec2 uv;
   float t = 0.0f;     // ray distance
   const Shape* shape = nullptr;
-  BSDFContext bsdfContext;  // per-point BSDF parameters from the geometry
+  SurfaceAttributes attributes;  // per-point values of the BSDF's parameters (a feather's barbules)
+
+  BSDFContext bsdfContext() const { return BSDFContext{&attributes}; }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
   Ray spawnRay(const Vec3& d) const;
