@@ -461,8 +461,7 @@ FilmErrors filmErrors(double phaseScale) {
     FloatLanes w{weight[0], weight[1], weight[2], weight[3]}, l1{c1[0], c1[1], c1[2], c1[3]},
         l2{c2[0], c2[1], c2[2], c2[3]};
     auto portable = production.weightedTransmittanceProductsPortable(w, l1, l2);
-    auto avx2 =
-        FreeStandingFilm::hasAvx2() ? production.weightedTransmittanceProductsAvx2(w, l1, l2) : portable;
+    auto avx2 = hasAvx2() ? production.weightedTransmittanceProductsAvx2(w, l1, l2) : portable;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       double lambda = wl[k], n = film(wl[k]);
       auto airy = [&](double scale) {
@@ -511,7 +510,7 @@ TEST(ThinFilmReference, FreeStandingFilmMatchesTheAirySum) {
       "free-standing film vs reference, error over allowance: reflectance %.2f (error %.2e of the "
       "envelope), transmittance product %.2f, weighted products %.2f (AVX2 %s)\n",
       e.reflectance, e.reflectanceOfEnvelope, e.transmittance, e.weighted,
-      FreeStandingFilm::hasAvx2() ? "yes" : "no");
+      hasAvx2() ? "yes" : "no");
   EXPECT_LT(e.reflectance, 1.0);
   EXPECT_LT(e.transmittance, 1.0);
   EXPECT_LT(e.weighted, 1.0);

@@ -71,7 +71,6 @@ __attribute__((target("avx2,fma"))) void sqrtEight(const float* x, float* out) {
   FloatLanes low = lowLanes(v), high = highLanes(v);
   for (int k = 0; k < 4; ++k) out[k] = low[k], out[k + 4] = high[k];
 }
-bool hasAvx2() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
 
 }  // namespace
 

@@ -210,7 +210,7 @@ TEST(ThinFilm, FreeStandingFilmWeightedProductsMatchThePairwiseProducts) {
     for (int j = 0; j < kLaneCount; ++j) expected += weight[j] * film.transmittanceProduct(cos1[j], cos2[j]);
     std::vector<Spectrum> results = {film.weightedTransmittanceProducts(weight, cos1, cos2),
                                      film.weightedTransmittanceProductsPortable(weight, cos1, cos2)};
-    if (FreeStandingFilm::hasAvx2()) results.push_back(film.weightedTransmittanceProductsAvx2(weight, cos1, cos2));
+    if (hasAvx2()) results.push_back(film.weightedTransmittanceProductsAvx2(weight, cos1, cos2));
     for (const Spectrum& r : results)
       for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_NEAR(r[k], expected[k], 2e-5f * (1.0f + expected[k])) << i;
   }

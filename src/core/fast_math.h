@@ -60,6 +60,12 @@ inline FloatLanes laneSums(FloatLanes a, FloatLanes b, FloatLanes c, FloatLanes 
 #endif
 }
 
+// Whether this processor runs the eight-lane code (AVX2 with FMA), for callers that dispatch on it.
+inline bool hasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return avx2;
+}
+
 // Eight lanes as two halves of four, and back.
 __attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 joinLanes(FloatLanes low, FloatLanes high) {
   return FloatLanes8{low[0], low[1], low[2], low[3], high[0], high[1], high[2], high[3]};

@@ -54,7 +54,6 @@ float sampleVisibleWavelength(float u) {
 }
 
 Wavelengths Wavelengths::sampleVisible(float u) {
-  static_assert(kSpectrumSamples == kLaneCount, "one wavelength per lane");
   // The hero and three more at equal offsets in sample space, wrapped into [0, 1), in lanes:
   // which of them wrap depends on u, so branches would be mispredicted.
   FloatLanes ui = u + FloatLanes{0.0f, 0.25f, 0.5f, 0.75f};

@@ -76,11 +76,6 @@ FreeStandingFilm::FreeStandingFilm(const RefractiveIndex& film, float nOutside, 
   medium_.halfPhaseScale = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
 }
 
-bool FreeStandingFilm::hasAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return avx2;
-}
-
 Spectrum FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1,
                                                          FloatLanes cos2) const {
   return hasAvx2() ? weightedTransmittanceProductsAvx2(weight, cos1, cos2)

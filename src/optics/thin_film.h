@@ -62,12 +62,11 @@ class FreeStandingFilm {
   // both crossings of a wavelength are evaluated at once in eight lanes.
   Spectrum weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
   // Its two implementations (public so that tests compare them): four lanes on any x86-64, and
-  // eight lanes, which needs a processor with AVX2 and FMA.
+  // eight lanes, which needs a processor with AVX2 and FMA (hasAvx2()).
   Spectrum weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
   __attribute__((target("avx2,fma"))) Spectrum weightedTransmittanceProductsAvx2(FloatLanes weight,
                                                                                  FloatLanes cos1,
                                                                                  FloatLanes cos2) const;
-  static bool hasAvx2();
 
  private:
   // The film's constants at the path's wavelengths, one per lane as in a Spectrum (the kernels
