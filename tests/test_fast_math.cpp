@@ -101,7 +101,8 @@ TEST(FastMath, LaneHelpersAreExact) {
 TEST(FastMath, LaneGroupsArePaddedWithZeros) {
   std::vector<FloatLanes> groups = laneGroups({0.5, 0.25, 0.125, 1.0, 2.0});
   ASSERT_EQ(groups.size(), 2u);
-  for (int k = 0; k < kLaneCount; ++k) EXPECT_EQ(groups[0][k], std::vector<float>({0.5f, 0.25f, 0.125f, 1.0f})[k]);
+  const float first[kLaneCount] = {0.5f, 0.25f, 0.125f, 1.0f};
+  for (int k = 0; k < kLaneCount; ++k) EXPECT_EQ(groups[0][k], first[k]);
   for (int k = 0; k < kLaneCount; ++k) EXPECT_EQ(groups[1][k], k == 0 ? 2.0f : 0.0f);
   EXPECT_TRUE(laneGroups({}).empty());
 }
@@ -141,8 +142,8 @@ TEST(FastMath, SinAndCosWithinAQuarterTurn) {
       sine.add(std::abs(sinLanes[k] - std::sin(t)), t);
     }
   });
-  std::printf("quarter turn: max abs error sin(x)/x %.2e at %.9g, cos %.2e at %.9g, sin %.2e at %.9g\n", sinc.value,
-              sinc.at, cosine.value, cosine.at, sine.value, sine.at);
+  std::printf("quarter turn: max abs error sin(x)/x %.2e at %.9g, cos %.2e at %.9g, sin %.2e at %.9g\n",
+              sinc.value, sinc.at, cosine.value, cosine.at, sine.value, sine.at);
   EXPECT_LT(sinc.value, kQuarterTurnMaxAbsError) << sinc.at;
   EXPECT_LT(cosine.value, kQuarterTurnMaxAbsError) << cosine.at;
   EXPECT_LT(sine.value, kQuarterTurnMaxAbsError) << sine.at;
@@ -163,8 +164,8 @@ TEST(FastMath, CosSinOfSmallAngles) {
       sine.add(std::abs(s[k] - std::sin(double(v[k]))), v[k]);
     }
   });
-  std::printf("small angles: max abs error cos %.2e at %.9g, sin %.2e at %.9g\n", cosine.value, cosine.at, sine.value,
-              sine.at);
+  std::printf("small angles: max abs error cos %.2e at %.9g, sin %.2e at %.9g\n", cosine.value, cosine.at,
+              sine.value, sine.at);
   EXPECT_LT(cosine.value, kSmallAngleCosMaxAbsError) << cosine.at;
   EXPECT_LT(sine.value, kSmallAngleSinMaxAbsError) << sine.at;
 }
@@ -223,7 +224,8 @@ TEST(FastMath, CompileTimeSqrtSinAndCos) {
     sine.add(x == 0.0 ? 0.0 : std::abs(constexprSin(x) / std::sin(x) - 1.0), x);
     cosine.add(std::abs(constexprCos(x) / std::cos(x) - 1.0), x);
   }
-  std::printf("compile-time: max relative error sqrt %.2e, sin %.2e, cos %.2e\n", root.value, sine.value, cosine.value);
+  std::printf("compile-time: max relative error sqrt %.2e, sin %.2e, cos %.2e\n", root.value, sine.value,
+              cosine.value);
   EXPECT_LE(root.value, kConstexprMaxRelError) << root.at;
   EXPECT_LE(sine.value, kConstexprMaxRelError) << sine.at;
   EXPECT_LE(cosine.value, kConstexprMaxRelError) << cosine.at;

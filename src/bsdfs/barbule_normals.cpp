@@ -4,7 +4,8 @@ namespace columba {
 
 LongitudinalDensity::LongitudinalDensity(float A, float B)
     : A_(A), B_(B), thetaMin_(-kBarbuleThetaD), thetaMax_(kBarbuleThetaD) {
-  float atMax = A * kCosBarbuleThetaD + B * kSinBarbuleThetaD, atMin = A * kCosBarbuleThetaD - B * kSinBarbuleThetaD;
+  float atMax = A * kCosBarbuleThetaD + B * kSinBarbuleThetaD;
+  float atMin = A * kCosBarbuleThetaD - B * kSinBarbuleThetaD;
   if (atMax >= 0.0f && atMin >= 0.0f) {
     // The whole range faces w (the usual case): the projected area is exactly A.
     primitiveMin_ = -A * kSinBarbuleThetaD - B * kCosBarbuleThetaD;

@@ -93,8 +93,8 @@ inline FloatLanes meanLongitudinalAngles(FloatLanes A, float B) {
   // The scale as first written, to six digits: 8e-6 above the computed 0.0020570136, and kept so
   // that rendered images stay as they were.
   constexpr float kUnclippedMeanScale = 0.00205703f;
-  constexpr double kComputedScale =
-      1.0 - kBarbuleThetaDInDouble * constexprCos(kBarbuleThetaDInDouble) / constexprSin(kBarbuleThetaDInDouble);
+  constexpr double kThetaD = kBarbuleThetaDInDouble;
+  constexpr double kComputedScale = 1.0 - kThetaD * constexprCos(kThetaD) / constexprSin(kThetaD);
   static_assert(kUnclippedMeanScale > kComputedScale && kUnclippedMeanScale < kComputedScale * (1.0 + 1e-5));
   FloatLanes theta = B / A * kUnclippedMeanScale;
   for (int j = 0; j < kLaneCount; ++j)

@@ -67,7 +67,8 @@ inline bool hasAvx2() {
 }
 
 // Eight lanes as two halves of four, and back.
-__attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 joinLanes(FloatLanes low, FloatLanes high) {
+__attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 joinLanes(FloatLanes low,
+                                                                                FloatLanes high) {
   return FloatLanes8{low[0], low[1], low[2], low[3], high[0], high[1], high[2], high[3]};
 }
 __attribute__((target("avx2,fma"), always_inline)) inline FloatLanes lowLanes(FloatLanes8 v) {

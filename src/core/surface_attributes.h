@@ -21,7 +21,7 @@ class SurfaceAttributes {
         values_[i] = value;
         return;
       }
-    if (count_ == kCapacity) throw std::logic_error("more than SurfaceAttributes::kCapacity attributes at a point");
+    if (count_ == kCapacity) throw std::logic_error("more than SurfaceAttributes::kCapacity attributes");
     names_[count_] = name;
     values_[count_++] = value;
   }

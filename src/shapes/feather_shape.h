@@ -97,8 +97,8 @@ class FeatherShape : public Shape {
   struct BarbuleValues {
     float h, mu, height;
   };
-  static constexpr BarbuleValues kDefaultBarbuleValues{modelSpacingFromFile(kDefaultFileSpacing),
-                                                       modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
+  static constexpr BarbuleValues kDefaultBarbuleValues{
+      modelSpacingFromFile(kDefaultFileSpacing), modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
   std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
