@@ -9,30 +9,15 @@
 #include <iterator>
 #include <sstream>
 
+#include "cli_test_support.h"
 #include "io/image.h"
 
 namespace fs = std::filesystem;
+using columba::testing::CommandResult;
+using columba::testing::run;
+using columba::testing::runShell;
 
 namespace {
-struct CommandResult {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-// Runs a shell command line, collecting stdout and stderr.
-CommandResult runShell(const std::string& commandLine) {
-  CommandResult r;
-  std::string command = "(" + commandLine + ") 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-  int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-CommandResult run(const std::string& args) { return runShell(std::string(COLUMBA_BINARY) + " " + args); }
 
 class CliTest : public columba::testing::TempDirTest {};
 

@@ -8,34 +8,19 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sys/wait.h>
 
+#include "cli_test_support.h"
 #include "distribute/manifest.h"
 #include "io/image.h"
 #include "temp_dir_test.h"
 
 namespace fs = std::filesystem;
+using columba::testing::CommandResult;
+using columba::testing::run;
+using columba::testing::runShell;
 using namespace columba;
 
 namespace {
-
-struct CommandResult {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-CommandResult runShell(const std::string& commandLine) {
-  CommandResult r;
-  FILE* pipe = popen(("(" + commandLine + ") 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-  int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-CommandResult run(const std::string& args) { return runShell(std::string(COLUMBA_BINARY) + " " + args); }
 
 // A sphere lit from a direction that `angle` turns, on a 16 x 12 film.
 const char* kScene = R"(<scene version="3.0.0">
