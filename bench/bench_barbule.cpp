@@ -87,9 +87,9 @@ void BM_BarbuleEvalOverrides(benchmark::State& state) {
   BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role::CameraIncident);
   const std::vector<Query>& q = queries();
   SurfaceAttributes point;
-  point.set("H", 1.4f);
-  point.set("mu", -0.3f);
-  point.set("height", 0.62f);
+  point.set(kBarbuleSpacingAttribute, 1.4f);
+  point.set(kBarbuleTiltAttribute, -0.3f);
+  point.set(kCortexThicknessAttribute, 0.62f);
   const BSDFContext ctx{&point};
   size_t i = 0;
   for (auto _ : state) {

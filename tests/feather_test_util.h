@@ -16,7 +16,7 @@ namespace columba::test {
 
 // A hit's attribute `name` (a per-point BSDF parameter), NaN where the hit does not give it.
 inline float attribute(const SurfaceInteraction& si, std::string_view name) {
-  return si.attributes.find(name).value_or(std::nanf(""));
+  return si.attributes.find(SurfaceAttributeKey(name)).value_or(std::nanf(""));
 }
 
 // Barbs laid side by side along y, each curving in its vane plane (bend), lifting out of it

@@ -383,8 +383,8 @@ TEST(BarbuleBSDF, EvaluationTwinSwapsTheDirections) {
 
 TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
   SurfaceAttributes point;
-  point.set("H", 1.6f);
-  point.set("mu", -0.2f);
+  point.set(kBarbuleSpacingAttribute, 1.6f);
+  point.set(kBarbuleTiltAttribute, -0.2f);
   for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point}})
     for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(reference(0.58f), role);
@@ -459,9 +459,9 @@ TEST(BarbuleBSDF, PerPointOverridesActLikeTheParameters) {
   BarbuleParameters base = reference(0.58f);
   BarbuleBSDF bsdf(base);
   SurfaceAttributes point;
-  point.set("H", 1.6f);
-  point.set("mu", -0.2f);
-  point.set("height", 0.63f);
+  point.set(kBarbuleSpacingAttribute, 1.6f);
+  point.set(kBarbuleTiltAttribute, -0.2f);
+  point.set(kCortexThicknessAttribute, 0.63f);
   const BSDFContext ctx{&point};
   BarbuleParameters changed = base;
   changed.H = 1.6f;

@@ -721,9 +721,9 @@ TEST(BarbuleReference, PerPointOverridesMatchTheReferenceOfThoseParameters) {
     p.H = uniform(rng, 1.0f, 2.5f);
     p.height = uniform(rng, 0.4f, 0.7f);
     SurfaceAttributes point;
-    point.set("mu", p.mu);
-    point.set("H", p.H);
-    point.set("height", p.height);
+    point.set(kBarbuleTiltAttribute, p.mu);
+    point.set(kBarbuleSpacingAttribute, p.H);
+    point.set(kCortexThicknessAttribute, p.height);
     const BSDFContext ctx{&point};
     Case c = makeCase(p, -1.0f, "override");
     ref::BarbuleReference model(c.model);

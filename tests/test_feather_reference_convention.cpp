@@ -101,8 +101,8 @@ TEST(FeatherReferenceConvention, ZeroTiltOrThicknessLeavesTheBsdfsOwn) {
   auto hit = hitAt(scene, shape, 20, 0.5f, 0.5f * edgeAngle(s, 0.5f));
   ASSERT_TRUE(hit.has_value());
   EXPECT_NEAR(attribute(hit->second, "H"), 1.0f, 1e-6f);
-  EXPECT_FALSE(hit->second.attributes.find("mu"));
-  EXPECT_FALSE(hit->second.attributes.find("height"));
+  EXPECT_FALSE(hit->second.attributes.find(kBarbuleTiltAttribute));
+  EXPECT_FALSE(hit->second.attributes.find(kCortexThicknessAttribute));
 }
 
 TEST(FeatherReferenceConvention, ShadingFramesPointTowardTheRamusOnBothSides) {

@@ -147,13 +147,13 @@ BarbuleBSDF::PointModel::PointModel(const BarbuleBSDF& bsdf, const BSDFContext& 
     : overridden(bsdf.overriddenGeometry(ctx)),
       geometry(overridden ? *overridden : bsdf.geometry_),
       film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
-           std::max(ctx.attribute("height").value_or(bsdf.params_.height), 0.0f), wl) {
+           std::max(ctx.attribute(kCortexThicknessAttribute).value_or(bsdf.params_.height), 0.0f), wl) {
   const std::optional<SpectralDistribution>& own = bsdf.params_.melanin;
   for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = own ? own->eval(wl[i]) : melaninReflectance(wl[i]);
 }
 
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
-  std::optional<float> mu = ctx.attribute("mu"), H = ctx.attribute("H");
+  std::optional<float> mu = ctx.attribute(kBarbuleTiltAttribute), H = ctx.attribute(kBarbuleSpacingAttribute);
   if (!mu && !H) return std::nullopt;
   return geometry_.withTiltAndSpacing(mu.value_or(params_.mu), H.value_or(params_.H));
 }

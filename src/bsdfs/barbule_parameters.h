@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 #include "core/spectrum.h"
+#include "core/surface_attributes.h"
 #include "optics/dispersion.h"
 
 namespace columba {
@@ -23,6 +24,12 @@ struct BarbuleParameters {
   // (optics/melanin.h) when empty.
   std::optional<SpectralDistribution> melanin;
 };
+
+// The parameters a shape may give per point (a feather's per-vertex values), under their names
+// in a scene file.
+inline const SurfaceAttributeKey kBarbuleSpacingAttribute{"H"};
+inline const SurfaceAttributeKey kBarbuleTiltAttribute{"mu"};
+inline const SurfaceAttributeKey kCortexThicknessAttribute{"height"};
 
 // A named set of shape parameters and film thickness, with where the values come from.
 struct BarbulePreset {

@@ -17,8 +17,8 @@ namespace columba {
 struct BSDFContext {
   const SurfaceAttributes* attributes = nullptr;
 
-  std::optional<float> attribute(std::string_view name) const {
-    return attributes ? attributes->find(name) : std::nullopt;
+  std::optional<float> attribute(SurfaceAttributeKey key) const {
+    return attributes ? attributes->find(key) : std::nullopt;
   }
 };
 

@@ -1,41 +1,44 @@
 #pragma once
 // Per-point values of a BSDF's parameters that a shape supplies at each hit, as Mitsuba's shape
 // attributes: a feather gives its per-vertex barbule spacing "H", tilt "mu" and cortex thickness
-// "height", interpolated to the hit. Keyed by the parameter's name in a scene file: a BSDF reads
-// the names it knows and keeps its own value for any the point does not give.
+// "height", interpolated to the hit. Keyed by the parameter's name in a scene file, resolved once
+// to a slot (SurfaceAttributeKey) when a shape or BSDF is built, so that setting and reading a
+// value at each hit is an array access, not a string comparison.
 #include <array>
+#include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <string_view>
 
 namespace columba {
 
+class SurfaceAttributeKey {
+ public:
+  // The slot of `name`: the same for every key of that name in the program (std::logic_error
+  // past SurfaceAttributes::kCapacity distinct names).
+  explicit SurfaceAttributeKey(std::string_view name);
+  int slot() const { return slot_; }
+
+ private:
+  int slot_;
+};
+
 class SurfaceAttributes {
  public:
-  static constexpr int kCapacity = 4;
+  static constexpr int kCapacity = 8;
 
-  // `name` must outlive the record (a string literal).
-  void set(std::string_view name, float value) {
-    for (int i = 0; i < count_; ++i)
-      if (names_[i] == name) {
-        values_[i] = value;
-        return;
-      }
-    if (count_ == kCapacity) throw std::logic_error("more than SurfaceAttributes::kCapacity attributes");
-    names_[count_] = name;
-    values_[count_++] = value;
+  void set(SurfaceAttributeKey key, float value) {
+    values_[key.slot()] = value;
+    given_ |= uint32_t(1) << key.slot();
   }
   // The value at this point, or nullopt where the point does not give it.
-  std::optional<float> find(std::string_view name) const {
-    for (int i = 0; i < count_; ++i)
-      if (names_[i] == name) return values_[i];
-    return std::nullopt;
+  std::optional<float> find(SurfaceAttributeKey key) const {
+    if (!(given_ >> key.slot() & 1u)) return std::nullopt;
+    return values_[key.slot()];
   }
 
  private:
-  std::array<std::string_view, kCapacity> names_{};
   std::array<float, kCapacity> values_{};
-  int count_ = 0;
+  uint32_t given_ = 0;  // bit i: slot i holds a value
 };
 
 }  // namespace columba

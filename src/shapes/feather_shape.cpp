@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include "bsdfs/barbule_parameters.h"
 #include "shapes/embree_user_geometry.h"
 #include "shapes/feather_barbule_values.h"
 
@@ -229,9 +230,9 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   values.mu += ramusTilt(angle, edgeAngle);
   // Named as the barbule BSDF's parameters. A zero tilt or thickness leaves the BSDF's own
   // parameter in force, as in the original.
-  si.attributes.set("H", values.h);
-  if (values.mu != 0.0f) si.attributes.set("mu", values.mu);
-  if (values.height != 0.0f) si.attributes.set("height", values.height);
+  si.attributes.set(kBarbuleSpacingAttribute, values.h);
+  if (values.mu != 0.0f) si.attributes.set(kBarbuleTiltAttribute, values.mu);
+  if (values.height != 0.0f) si.attributes.set(kCortexThicknessAttribute, values.height);
   return si;
 }
 
