@@ -10,7 +10,7 @@ SANITIZE_BUILD ?= build-asan
 FUZZ_SECONDS ?= 300
 FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh exr_envmap
 
-.PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize
+.PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize format
 
 deps:
 	@./scripts/install-deps.sh
@@ -48,6 +48,10 @@ install: build
 	@mkdir -p "$(PREFIX)" 2>/dev/null || true
 	@if [ -w "$(PREFIX)" ]; then cmake --install $(BUILD) --prefix "$(PREFIX)"; \
 	else sudo cmake --install $(BUILD) --prefix "$(PREFIX)"; fi
+
+# `make format`: lays out every C++ file as .clang-format says (the `formatting` test checks it).
+format:
+	@./scripts/check-format.sh . --fix
 
 bench: build
 	@./scripts/bench.sh $(BUILD)

@@ -23,8 +23,12 @@ namespace {
 // Distance to the nearest hit of `ray` in `scene`, infinity for none.
 float nearestHit(RTCScene scene, const Ray& ray) {
   RTCRayHit rh{};
-  rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
-  rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
+  rh.ray.org_x = ray.o.x;
+  rh.ray.org_y = ray.o.y;
+  rh.ray.org_z = ray.o.z;
+  rh.ray.dir_x = ray.d.x;
+  rh.ray.dir_y = ray.d.y;
+  rh.ray.dir_z = ray.d.z;
   rh.ray.tfar = INFINITY;
   rh.ray.mask = 0xFFFFFFFFu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -83,14 +87,20 @@ void addCurves(RTCDevice device, RTCScene scene, RTCGeometryType type) {
   RTCGeometry geom = rtcNewGeometry(device, type);
   auto* vertices = static_cast<float*>(
       rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 2 * strips));
-  auto* indices =
-      static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), strips));
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), strips));
   for (size_t i = 0; i < strips; ++i) {
     BarbStrip s = feather.strip(i);
     Vec3 end = s.p0 + s.axis * s.length;
     float* v = vertices + 8 * i;
-    v[0] = s.p0.x; v[1] = s.p0.y; v[2] = s.p0.z; v[3] = s.halfWidthStart;
-    v[4] = end.x; v[5] = end.y; v[6] = end.z; v[7] = s.halfWidthEnd;
+    v[0] = s.p0.x;
+    v[1] = s.p0.y;
+    v[2] = s.p0.z;
+    v[3] = s.halfWidthStart;
+    v[4] = end.x;
+    v[5] = end.y;
+    v[6] = end.z;
+    v[7] = s.halfWidthEnd;
     indices[i] = unsigned(2 * i);
   }
   rtcCommitGeometry(geom);
@@ -107,9 +117,12 @@ void BM_BarbRays(benchmark::State& state) {
   RTCDevice device = rtcNewDevice(nullptr);
   RTCScene scene = rtcNewScene(device);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);  // as Scene builds
-  if (representation == Representation::UserStrips) g.feather->addToEmbree(device, scene);
-  else addCurves(device, scene, representation == Representation::FlatCurves ? RTC_GEOMETRY_TYPE_FLAT_LINEAR_CURVE
-                                                                             : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  if (representation == Representation::UserStrips)
+    g.feather->addToEmbree(device, scene);
+  else
+    addCurves(device, scene,
+              representation == Representation::FlatCurves ? RTC_GEOMETRY_TYPE_FLAT_LINEAR_CURVE
+                                                           : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
   rtcCommitScene(scene);
   size_t hits = 0;
   for (auto _ : state) {

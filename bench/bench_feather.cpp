@@ -30,7 +30,8 @@ const std::vector<Ray>& cameraRays(int raysPerPixelSide) {
       for (int x = 0; x < sensor.film().width(); ++x)
         for (int sy = 0; sy < raysPerPixelSide; ++sy)
           for (int sx = 0; sx < raysPerPixelSide; ++sx)
-            if (auto ray = sensor.generateRay(Vec2(float(x) + (float(sx) + 0.5f) * step, float(y) + (float(sy) + 0.5f) * step)))
+            if (auto ray = sensor.generateRay(
+                    Vec2(float(x) + (float(sx) + 0.5f) * step, float(y) + (float(sy) + 0.5f) * step)))
               rays.push_back(*ray);
   }
   return rays;

@@ -7,15 +7,15 @@
 #include <typeinfo>
 #include "core/error.h"
 
-#define COLUMBA_FUZZ_TARGET(CALL)                                                                  \
-  extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {                        \
-    try {                                                                                          \
-      CALL;                                                                                        \
-    } catch (const columba::InputError&) {                                                        \
-    } catch (const std::exception& e) {                                                           \
-      std::fprintf(stdout, "unexpected %s: %s\n", typeid(e).name(), e.what());                     \
-      std::fflush(stdout);                                                                         \
-      std::abort();                                                                                \
-    }                                                                                              \
-    return 0;                                                                                      \
+#define COLUMBA_FUZZ_TARGET(CALL)                                              \
+  extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {    \
+    try {                                                                      \
+      CALL;                                                                    \
+    } catch (const columba::InputError&) {                                     \
+    } catch (const std::exception& e) {                                        \
+      std::fprintf(stdout, "unexpected %s: %s\n", typeid(e).name(), e.what()); \
+      std::fflush(stdout);                                                     \
+      std::abort();                                                            \
+    }                                                                          \
+    return 0;                                                                  \
   }

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "builtin/builtin_plugins.h"
 #include "core/error.h"
 #include "core/transform.h"
 #include "emitters/envmap_emitter.h"
 #include "io/image.h"
-#include "builtin/builtin_plugins.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "shapes/feather_ply.h"
@@ -24,8 +24,7 @@ namespace columba::fuzz {
 
 std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix) {
   static const std::filesystem::path dir = [] {
-    std::filesystem::path d =
-        std::filesystem::temp_directory_path() / ("columba-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::path d = std::filesystem::temp_directory_path() / ("columba-fuzz-" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();

@@ -31,7 +31,8 @@ ChiSquareResult chiSquareBSDF(const BSDF& bsdf, const Vec3& wi, ChiSquareGrid gr
         if (!s || s->delta) return std::nullopt;
         return s->wo;
       },
-      [&](const Vec3& wo) { return double(bsdf.pdf(ctx, wi, wo, wl)); }, sampleCount, grid.thetaBins, grid.phiBins, grid.quadrature, seed);
+      [&](const Vec3& wo) { return double(bsdf.pdf(ctx, wi, wo, wl)); }, sampleCount, grid.thetaBins, grid.phiBins,
+      grid.quadrature, seed);
 }
 
 double maxWeightError(const BSDF& bsdf, const Vec3& wi, int sampleCount) {

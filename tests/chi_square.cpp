@@ -76,8 +76,8 @@ ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::ve
 }
 
 ChiSquareResult chiSquareDirectionTest(const std::function<std::optional<Vec3>(PCG32&)>& sample,
-                                       const std::function<double(const Vec3&)>& pdf, int sampleCount,
-                                       int thetaBins, int phiBins, int quadrature, uint64_t seed) {
+                                       const std::function<double(const Vec3&)>& pdf, int sampleCount, int thetaBins,
+                                       int phiBins, int quadrature, uint64_t seed) {
   auto binOf = [&](const Vec3& w) {
     double z = std::clamp(double(w.z), -1.0, 1.0);
     // Directions exactly on a bin boundary (e.g. the horizon) count in the upper bin.

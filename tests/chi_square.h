@@ -34,7 +34,6 @@ ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::ve
 // count is integrated with `quadrature` x `quadrature` midpoints.
 ChiSquareResult chiSquareDirectionTest(const std::function<std::optional<Vec3>(PCG32&)>& sample,
                                        const std::function<double(const Vec3&)>& pdf, int sampleCount,
-                                       int thetaBins = 20, int phiBins = 40, int quadrature = 16,
-                                       uint64_t seed = 1);
+                                       int thetaBins = 20, int phiBins = 40, int quadrature = 16, uint64_t seed = 1);
 
 }  // namespace columba::testing

@@ -66,8 +66,12 @@ class EmbreeScene {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh{};
-    rh.ray.org_x = ray.o.x; rh.ray.org_y = ray.o.y; rh.ray.org_z = ray.o.z;
-    rh.ray.dir_x = ray.d.x; rh.ray.dir_y = ray.d.y; rh.ray.dir_z = ray.d.z;
+    rh.ray.org_x = ray.o.x;
+    rh.ray.org_y = ray.o.y;
+    rh.ray.org_z = ray.o.z;
+    rh.ray.dir_x = ray.d.x;
+    rh.ray.dir_y = ray.d.y;
+    rh.ray.dir_z = ray.d.z;
     rh.ray.tnear = ray.tmin;
     rh.ray.tfar = ray.tmax;
     rh.ray.mask = ~0u;
@@ -83,8 +87,12 @@ class EmbreeScene {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r{};
-    r.org_x = ray.o.x; r.org_y = ray.o.y; r.org_z = ray.o.z;
-    r.dir_x = ray.d.x; r.dir_y = ray.d.y; r.dir_z = ray.d.z;
+    r.org_x = ray.o.x;
+    r.org_y = ray.o.y;
+    r.org_z = ray.o.z;
+    r.dir_x = ray.d.x;
+    r.dir_y = ray.d.y;
+    r.dir_z = ray.d.z;
     r.tnear = ray.tmin;
     r.tfar = ray.tmax;
     r.mask = ~0u;
@@ -101,8 +109,12 @@ class EmbreeScene {
     alignas(16) RTCRayHit4 rh{};
     for (int i = 0; i < 4; ++i) {
       const Ray& ray = rays[size_t(i)];
-      rh.ray.org_x[i] = ray.o.x; rh.ray.org_y[i] = ray.o.y; rh.ray.org_z[i] = ray.o.z;
-      rh.ray.dir_x[i] = ray.d.x; rh.ray.dir_y[i] = ray.d.y; rh.ray.dir_z[i] = ray.d.z;
+      rh.ray.org_x[i] = ray.o.x;
+      rh.ray.org_y[i] = ray.o.y;
+      rh.ray.org_z[i] = ray.o.z;
+      rh.ray.dir_x[i] = ray.d.x;
+      rh.ray.dir_y[i] = ray.d.y;
+      rh.ray.dir_z[i] = ray.d.z;
       rh.ray.tnear[i] = ray.tmin;
       rh.ray.tfar[i] = ray.tmax;
       rh.ray.mask[i] = ~0u;
@@ -111,7 +123,8 @@ class EmbreeScene {
     rtcIntersect4(valid, scene_, &context, &rh);
     std::array<std::pair<float, unsigned>, 4> hits;
     for (int i = 0; i < 4; ++i)
-      hits[size_t(i)] = {rh.ray.tfar[i], rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? RTC_INVALID_GEOMETRY_ID : rh.hit.primID[i]};
+      hits[size_t(i)] = {rh.ray.tfar[i],
+                         rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? RTC_INVALID_GEOMETRY_ID : rh.hit.primID[i]};
     return hits;
   }
 

@@ -79,8 +79,7 @@ Values integratePieces(const RulePair& rules, const F& f, const std::vector<doub
     for (size_t k = 0; k < count; ++k) estimate[k] += std::abs(v[k]);
   }
   double absTol = tolerance * std::max(maxAbs(estimate), std::numeric_limits<double>::min());
-  for (size_t i = 0; i + 1 < cuts.size(); ++i)
-    integrateAdaptively(rules, f, cuts[i], cuts[i + 1], absTol, 0, total);
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) integrateAdaptively(rules, f, cuts[i], cuts[i + 1], absTol, 0, total);
   return total;
 }
 
@@ -113,9 +112,7 @@ LongitudinalMoments longitudinalMoments(double A, double B) {
   m.A = A;
   m.B = B;
   if (!facingRange(A, B, m.lo, m.hi)) return m;
-  auto f = [&](double t) {
-    return Values{A * std::cos(t) + B * std::sin(t), t * (A * std::cos(t) + B * std::sin(t))};
-  };
+  auto f = [&](double t) { return Values{A * std::cos(t) + B * std::sin(t), t * (A * std::cos(t) + B * std::sin(t))}; };
   Values moments = integrateWith(longitudinalRule(), f, m.lo, m.hi, 2);
   m.mass = moments[0];
   m.mean = moments[0] > 0.0 ? moments[1] / moments[0] : 0.5 * (m.lo + m.hi);
@@ -234,8 +231,7 @@ double BarbuleReference::offset(double phi, double gamma) const {
 
 double BarbuleReference::litWidth(double gamma) const {
   double width = 0.0;
-  for (const AngleInterval& piece : litNormals(gamma))
-    width += offset(piece.hi, gamma) - offset(piece.lo, gamma);
+  for (const AngleInterval& piece : litNormals(gamma)) width += offset(piece.hi, gamma) - offset(piece.lo, gamma);
   return width;
 }
 
@@ -306,9 +302,7 @@ BarbuleReference::Reflection BarbuleReference::reflection(const Direction& wiIn,
   double cosHalf = wi.x * m.x + wi.y * m.y + wi.z * m.z;
   // Relative change of the geometric factor per unit absolute change of A_i, A_o, and of phi times
   // |omega_i + omega_o| (the half vector is a normalised sum: its angle errs by a rounding over that).
-  auto logSlope = [](const auto& f, double x, double h) {
-    return std::abs(f(x + h) - f(x - h)) / (2.0 * h * f(x));
-  };
+  auto logSlope = [](const auto& f, double x, double h) { return std::abs(f(x + h) - f(x - h)) / (2.0 * h * f(x)); };
   double geometric = logSlope([&](double A) { return shadowing(A, wi); }, Ai, std::min(1e-6, 0.5 * Ai)) +
                      logSlope([&](double A) { return shadowing(A, wo); }, Ao, std::min(1e-6, 0.5 * Ao)) +
                      logSlope([&](double p) { return radiusOfCurvature(p); }, phi, 1e-6) /
@@ -323,8 +317,7 @@ BarbuleReference::Reflection BarbuleReference::reflection(const Direction& wiIn,
     const double h = 1e-6, dc = std::min(1e-6, 0.5 * cosHalf);
     r.phaseSensitivity[k] = scale * std::abs(film(cosHalf, 1.0 + h) - film(cosHalf, 1.0 - h)) / (2.0 * h);
     r.roundingSensitivity[k] =
-        scale * std::abs(film(cosHalf + dc, 1.0) - film(cosHalf - dc, 1.0)) / (2.0 * dc) +
-        geometric * r.value[k];
+        scale * std::abs(film(cosHalf + dc, 1.0) - film(cosHalf - dc, 1.0)) / (2.0 * dc) + geometric * r.value[k];
   }
   return r;
 }
@@ -359,8 +352,7 @@ BarbuleReference::TRT BarbuleReference::trt(const Direction& wiIn, const Directi
   if (!(wi.z > 0.0) || wo.z == 0.0) return out;
   double gammaI = inPlaneAngle(wi), gammaO = inPlaneAngle(wo), alphaI = gammaI - m_.mu;
   std::vector<AngleInterval> both = commonNormals(gammaI, gammaO);
-  for (const AngleInterval& piece : both)
-    out.commonWidth += offset(piece.hi, gammaI) - offset(piece.lo, gammaI);
+  for (const AngleInterval& piece : both) out.commonWidth += offset(piece.hi, gammaI) - offset(piece.lo, gammaI);
   if (both.empty()) return out;
 
   // Split where the longitudinal range starts being clipped (|B| tan(thetaD) = A): a kink of the
@@ -394,8 +386,7 @@ BarbuleReference::TRT BarbuleReference::trt(const Direction& wiIn, const Directi
       double cosIn = Ai * std::cos(theta) + Bi * std::sin(theta);
       double cosOut = std::abs(Ao * std::cos(theta) + Bo * std::sin(theta));
       for (size_t k = 0; k < count; ++k)
-        u[k] = cosIn * freeStandingTransmittanceProduct(cosIn, cosOut, m_.nOutside, nFilm[k], m_.heightUm,
-                                                        lambdas[k]);
+        u[k] = cosIn * freeStandingTransmittanceProduct(cosIn, cosOut, m_.nOutside, nFilm[k], m_.heightUm, lambdas[k]);
       u[count] = cosIn;
       return u;
     };

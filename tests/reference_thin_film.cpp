@@ -66,8 +66,8 @@ AiryFilm airyFilm(double cosIncidence, double n1, double n2, double n3, double t
   return f;
 }
 
-std::pair<Complex, Complex> partialWaveSum(double cosIncidence, double n1, double n2, double n3,
-                                           double thicknessUm, double lambdaNm, int bounces) {
+std::pair<Complex, Complex> partialWaveSum(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
+                                           double lambdaNm, int bounces) {
   Stack s = stack(cosIncidence, n1, n2, n3, thicknessUm, lambdaNm, 1.0);
   Complex e = std::exp(Complex(0.0, 1.0) * s.phase);
   auto sum = [&](Complex r12, Complex t12, Complex r23, Complex r21, Complex t21) {
@@ -93,8 +93,8 @@ double freeStandingReflectanceEnvelope(double cosIncidence, double nOutside, dou
   return 0.5 * (peak(f.rs) + peak(f.rp));
 }
 
-double freeStandingTransmittanceProduct(double cos1, double cos2, double nOutside, double nFilm,
-                                        double thicknessUm, double lambdaNm, double phaseScale) {
+double freeStandingTransmittanceProduct(double cos1, double cos2, double nOutside, double nFilm, double thicknessUm,
+                                        double lambdaNm, double phaseScale) {
   AiryFilm in = airyFilm(cos1, nOutside, nFilm, nOutside, thicknessUm, lambdaNm, phaseScale);
   AiryFilm out = airyFilm(cos2, nOutside, nFilm, nOutside, thicknessUm, lambdaNm, phaseScale);
   return 0.5 * (in.transmittanceS() * out.transmittanceS() + in.transmittanceP() * out.transmittanceP());

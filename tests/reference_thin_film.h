@@ -55,8 +55,8 @@ AiryFilm airyFilm(double cosIncidence, double n1, double n2, double n3, double t
 // The same film's reflected amplitude as the explicit sum of the partial waves
 // r12 + t12 r23 t21 e^{i phi} sum_k (r21 r23 e^{i phi})^k, `bounces` terms: an independent check
 // of the closed form. Returns {r_s, r_p}.
-std::pair<Complex, Complex> partialWaveSum(double cosIncidence, double n1, double n2, double n3,
-                                           double thicknessUm, double lambdaNm, int bounces);
+std::pair<Complex, Complex> partialWaveSum(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
+                                           double lambdaNm, int bounces);
 
 // A film with the same medium on both sides (a free-standing film): the largest unpolarised
 // reflectance over all thicknesses at this angle, reached where e^{i phi} = -1:
@@ -66,7 +66,7 @@ double freeStandingReflectanceEnvelope(double cosIncidence, double nOutside, dou
 
 // Intensity transmittance of two crossings of a free-standing film, entering at cos1 and leaving
 // at cos2, each polarisation keeping its state: 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)).
-double freeStandingTransmittanceProduct(double cos1, double cos2, double nOutside, double nFilm,
-                                        double thicknessUm, double lambdaNm, double phaseScale = 1.0);
+double freeStandingTransmittanceProduct(double cos1, double cos2, double nOutside, double nFilm, double thicknessUm,
+                                        double lambdaNm, double phaseScale = 1.0);
 
 }  // namespace columba::reference

@@ -7,7 +7,8 @@
 
 namespace columba::testing {
 
-inline Image renderSceneString(const std::string& xml, const RenderSettings& settings = {}, RenderStats* statsOut = nullptr) {
+inline Image renderSceneString(const std::string& xml, const RenderSettings& settings = {},
+                               RenderStats* statsOut = nullptr) {
   ParsedScene parsed = loadSceneString(xml, "<test scene>", ".", {}, builtinPlugins());
   Scene scene(parsed, SourceLocation{"<test scene>", 0});
   RenderStats stats;

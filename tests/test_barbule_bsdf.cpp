@@ -105,8 +105,8 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
           10);
       std::printf("  %-18s wi (%6.3f %6.3f %6.3f): %6d scattered, p = %.3g\n", set.name, wi.x, wi.y, wi.z, scattered,
                   result.pValue);
-      EXPECT_GT(result.pValue, threshold) << set.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": "
-                                          << result.message;
+      EXPECT_GT(result.pValue, threshold)
+          << set.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": " << result.message;
       minP = std::min(minP, result.pValue);
     }
     std::printf("  %-18s min p = %.3g\n", set.name, minP);
@@ -265,10 +265,11 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeans) {
         float total = integral.reflection[k] + integral.trt[k] + t;
         float predicted = expected.reflection[k] + expected.trt[k] + t;
         float sigma = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
-        std::printf("  %-18s wi (%6.3f %6.3f %6.3f) %3.0f nm: R %.5f (means %.5f) TRT %.5f (means %.5f) t %.4f total "
-                    "%.5f, MC %.5f +- %.5f\n",
-                    set.name, wi.x, wi.y, wi.z, kWavelengths[k], integral.reflection[k], expected.reflection[k],
-                    integral.trt[k], expected.trt[k], t, total, mean[k], sigma);
+        std::printf(
+            "  %-18s wi (%6.3f %6.3f %6.3f) %3.0f nm: R %.5f (means %.5f) TRT %.5f (means %.5f) t %.4f total "
+            "%.5f, MC %.5f +- %.5f\n",
+            set.name, wi.x, wi.y, wi.z, kWavelengths[k], integral.reflection[k], expected.reflection[k],
+            integral.trt[k], expected.trt[k], t, total, mean[k], sigma);
         EXPECT_NEAR(integral.reflection[k], expected.reflection[k], 3e-3f * expected.reflection[k] + 2e-5f);
         EXPECT_NEAR(integral.trt[k], expected.trt[k], 2e-2f * expected.trt[k] + 2e-5f);
         if (expected.reflection[k] > 1e-3f) {
@@ -287,8 +288,8 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeans) {
   }
   ASSERT_GT(ratiosR, 40);
   ASSERT_GT(ratiosTRT, 40);
-  std::printf("mean ratio integral / means - 1: R %.5f over %d cases, TRT %.5f over %d\n", sumRatioR / ratiosR,
-              ratiosR, sumRatioTRT / ratiosTRT, ratiosTRT);
+  std::printf("mean ratio integral / means - 1: R %.5f over %d cases, TRT %.5f over %d\n", sumRatioR / ratiosR, ratiosR,
+              sumRatioTRT / ratiosTRT, ratiosTRT);
   EXPECT_NEAR(sumRatioR / ratiosR, kMeanRatioR, kMeanRatioBand);
   EXPECT_NEAR(sumRatioTRT / ratiosTRT, kMeanRatioTRT, kMeanRatioBand);
 }
@@ -345,8 +346,8 @@ TEST(BarbuleBSDF, ReflectionLobeIsReciprocalAndTRTIsNot) {
       // grazing incidence (where f_R is tiny).
       ASSERT_NEAR(ab.reflection[k], ba.reflection[k], 1e-3f * ab.reflection[k] + 1e-5f);
       if (ab.trt[k] > 0.0f || ba.trt[k] > 0.0f)
-        largestTRTAsymmetry = std::max(largestTRTAsymmetry, double(std::abs(ab.trt[k] - ba.trt[k]) /
-                                                                   std::max(ab.trt[k], ba.trt[k])));
+        largestTRTAsymmetry =
+            std::max(largestTRTAsymmetry, double(std::abs(ab.trt[k] - ba.trt[k]) / std::max(ab.trt[k], ba.trt[k])));
     }
     if (ab.reflection[0] > 0.0f) ++reflecting;
   }
@@ -582,12 +583,14 @@ TEST(BarbuleBSDF, FactoriesReadTheReferenceParameters) {
 TEST(BarbuleBSDF, FactoriesRejectInvalidParameters) {
   auto rejects = [](const std::string& name, const std::string& text, float number, bool isString) {
     Properties props = barbuleProperties("barbulebsdf");
-    if (isString) setString(props, name, text);
-    else setFloat(props, name, number);
+    if (isString)
+      setString(props, name, text);
+    else
+      setFloat(props, name, number);
     EXPECT_THROW(makeBarbuleBSDF(props), InputError) << name;
   };
   rejects("film_ior", "unobtainium", 0, true);
-  rejects("film_ior", "", 0.9f, false);  // not denser than air
+  rejects("film_ior", "", 0.9f, false);    // not denser than air
   rejects("ext_ior", "keratin", 0, true);  // the surroundings need a constant index
   rejects("b", "", -0.1f, false);
   rejects("H", "", 0.0f, false);

@@ -17,8 +17,8 @@ struct CrossSectionCase {
 // The reference scenes' barbules, a rounder tilted one, one packed closer than its contact spacing
 // (raised to it), a circle reflective all round, and a thin one with a wide arc reaching the back.
 const CrossSectionCase kCases[] = {
-    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f}, {0.5f, 2.5f, 0.3f, -1.2f, 1.0f},  {0.35f, 1.0f, 0.6f, -0.5f, 2.0f},
-    {1.0f, 3.0f, 0.0f, -kPi, kPi},          {0.2f, 1.6f, -0.8f, 0.5f, 3.5f},
+    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f}, {0.5f, 2.5f, 0.3f, -1.2f, 1.0f}, {0.35f, 1.0f, 0.6f, -0.5f, 2.0f},
+    {1.0f, 3.0f, 0.0f, -kPi, kPi},         {0.2f, 1.6f, -0.8f, 0.5f, 3.5f},
 };
 
 BarbuleCrossSection makeGeometry(const CrossSectionCase& c) {
@@ -29,7 +29,7 @@ BarbuleCrossSection makeGeometry(const CrossSectionCase& c) {
 // turned by mu, centred at (0, k H) for k = -1, 0, 1.
 struct Hit {
   double t;
-  int ellipse;     // -1, 0, 1
+  int ellipse;         // -1, 0, 1
   double normalAngle;  // outward normal angle in the ellipse's own frame
 };
 

@@ -47,11 +47,15 @@ TEST(BarbuleMeasurement, ScatterometerImageIsBlackOutsideTheDiskAndPeaksOpposite
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
       float v = img.pixel(x, y)[0] + img.pixel(x, y)[1] + img.pixel(x, y)[2];
-      if (v > best) { best = v; bestX = x; bestY = y; }
+      if (v > best) {
+        best = v;
+        bestX = x;
+        bestY = y;
+      }
     }
   EXPECT_GT(best, 0.0f);
-  EXPECT_LT(bestX, 32);                 // the specular side, -x
-  EXPECT_NEAR(bestY, 31.5, 6.0);        // near the plane of incidence
+  EXPECT_LT(bestX, 32);           // the specular side, -x
+  EXPECT_NEAR(bestY, 31.5, 6.0);  // near the plane of incidence
 }
 
 namespace {

@@ -5,17 +5,17 @@
 
 #include <memory>
 #include "bsdfs/barbule_bsdf.h"
-#include "optics/melanin.h"
 #include "builtin/builtin_plugins.h"
+#include "optics/melanin.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
 
 namespace {
 std::shared_ptr<BarbuleBSDF> loadBarbule(const std::string& parameters) {
-  ParsedScene parsed = loadSceneString("<scene version=\"3.0.0\">\n<bsdf type=\"barbulebsdf\">\n" + parameters +
-                                           "\n</bsdf></scene>",
-                                       "barbule.xml", ".", {}, builtinPlugins());
+  ParsedScene parsed =
+      loadSceneString("<scene version=\"3.0.0\">\n<bsdf type=\"barbulebsdf\">\n" + parameters + "\n</bsdf></scene>",
+                      "barbule.xml", ".", {}, builtinPlugins());
   EXPECT_EQ(parsed.objects.size(), 1u);
   return std::dynamic_pointer_cast<BarbuleBSDF>(parsed.objects.at(0));
 }
@@ -51,7 +51,8 @@ TEST(BarbuleOptics, FilmIndexFormsAgree) {
   expectSameLobes(*keratin, *cauchy, 0.0f);
   // Keratin's index tabulated every 10 nm: the same film to the interpolation error.
   std::string table;
-  for (int l = 350; l <= 840; l += 10) table += std::to_string(l) + ":" + std::to_string(1.532 + 5890.0 / (l * l)) + " ";
+  for (int l = 350; l <= 840; l += 10)
+    table += std::to_string(l) + ":" + std::to_string(1.532 + 5890.0 / (l * l)) + " ";
   auto tabulated = loadBarbule(R"(<spectrum name="film_ior" value=")" + table + R"("/>)");
   ASSERT_FALSE(tabulated->parameters().filmIOR.isConstant());
   expectSameLobes(*keratin, *tabulated, 2e-3f);
@@ -94,7 +95,8 @@ TEST(BarbuleOptics, InvalidMaterialsNameTheLine) {
     std::string message = loadError(parameters);
     for (const char* part : parts) EXPECT_NE(message.find(part), std::string::npos) << message << " lacks " << part;
   };
-  expectError(R"(<string name="preset" value="dove-blue"/>)", {"barbule.xml:3", "dove-blue", "dove-green, dove-purple"});
+  expectError(R"(<string name="preset" value="dove-blue"/>)",
+              {"barbule.xml:3", "dove-blue", "dove-green, dove-purple"});
   expectError(R"(<float name="film_ior" value="1.5"/><float name="film_cauchy_a" value="1.5"/>)",
               {"barbule.xml:3", "either"});
   expectError(R"(<spectrum name="film_ior" value="400:1.5, 600:0.9"/>)", {"barbule.xml:3", "film_ior", "denser"});

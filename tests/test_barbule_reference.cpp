@@ -191,8 +191,7 @@ Vec3 mirroredAboutALitNormal(PCG32& rng, const ref::BarbuleReference& model, dou
   std::vector<ref::AngleInterval> lit = model.litNormals(std::atan2(double(wi.x), double(wi.z)));
   double total = 0.0;
   for (const ref::AngleInterval& piece : lit) total += piece.hi - piece.lo;
-  double phi =
-      std::atan2(double(wi.x), double(wi.z)) - mu + (rng.nextDouble() - 0.5) * M_PI;  // none lit: any
+  double phi = std::atan2(double(wi.x), double(wi.z)) - mu + (rng.nextDouble() - 0.5) * M_PI;  // none lit: any
   double u = rng.nextDouble() * total;
   for (const ref::AngleInterval& piece : lit) {
     if (u <= piece.hi - piece.lo) {
@@ -239,8 +238,7 @@ const Samples& samples() {
         p.caseIndex = c;
         p.wi = upperHemisphere(rng);
         // Half the pairs anywhere on the sphere, half mirrored about a normal (the R lobe).
-        p.wo =
-            j % 2 == 0 ? uniformSphere(rng) : mirroredAboutALitNormal(rng, model, s.cases[c].model.mu, p.wi);
+        p.wo = j % 2 == 0 ? uniformSphere(rng) : mirroredAboutALitNormal(rng, model, s.cases[c].model.mu, p.wi);
         if (std::abs(p.wo.z) < 1e-3f) p.wo = upperHemisphere(rng);
         p.wl = randomWavelengths(rng);
         p.melanin = melaninAt(s.cases[c], p.wl);
@@ -307,8 +305,8 @@ struct ErrorStats {
 
 std::string describe(const Samples& s, const Pair& p) {
   char text[256];
-  std::snprintf(text, sizeof text, "%s wi (%.4f %.4f %.4f) wo (%.4f %.4f %.4f)",
-                s.cases[p.caseIndex].name.c_str(), p.wi.x, p.wi.y, p.wi.z, p.wo.x, p.wo.y, p.wo.z);
+  std::snprintf(text, sizeof text, "%s wi (%.4f %.4f %.4f) wo (%.4f %.4f %.4f)", s.cases[p.caseIndex].name.c_str(),
+                p.wi.x, p.wi.y, p.wi.z, p.wo.x, p.wo.y, p.wo.z);
   return text;
 }
 
@@ -337,9 +335,8 @@ TRTErrors trtErrors(const BarbuleQuadrature& quadrature, double productionScale 
       double error = std::abs(productionScale * f[k] - expected);
       e.pointwise.add(error / std::max(expected, floor), describe(s, p));
       e.ratio.add(error / trtAllowance(reference, p.melanin[k], k), describe(s, p));
-      e.beyondEnds.add(
-          std::max(0.0, error - kCommonEndError * reference.endDensity[k]) / std::max(expected, floor),
-          describe(s, p));
+      e.beyondEnds.add(std::max(0.0, error - kCommonEndError * reference.endDensity[k]) / std::max(expected, floor),
+                       describe(s, p));
       difference += error * std::abs(p.wo.z);
       total += expected * std::abs(p.wo.z);
     }
@@ -359,8 +356,7 @@ TEST(ThinFilmReference, AirySumEqualsThePartialWaveSeries) {
   for (int i = 0; i < 2000; ++i) {
     double n1 = 1.0 + rng.nextDouble(), n2 = 1.0 + 1.5 * rng.nextDouble(), n3 = 1.0 + rng.nextDouble();
     // Near grazing incidence |r21 r23| -> 1 and the series converges too slowly to sum.
-    double c = 0.02 + 0.98 * rng.nextDouble(), d = 2.0 * rng.nextDouble(),
-           lambda = 360.0 + 470.0 * rng.nextDouble();
+    double c = 0.02 + 0.98 * rng.nextDouble(), d = 2.0 * rng.nextDouble(), lambda = 360.0 + 470.0 * rng.nextDouble();
     ref::AiryFilm f = ref::airyFilm(c, n1, n2, n3, d, lambda);
     std::pair<ref::Complex, ref::Complex> series = ref::partialWaveSum(c, n1, n2, n3, d, lambda, 4000);
     EXPECT_LT(std::abs(f.rs - series.first), 1e-9) << n1 << " " << n2 << " " << n3 << " " << c;
@@ -379,15 +375,13 @@ TEST(BarbuleReference, ReferenceIsSelfConsistent) {
   for (const Case& c : randomCases(12, 99)) {
     ref::BarbuleReference model(c.model);
     for (double gamma = -1.5; gamma <= 1.5; gamma += 0.25)
-      EXPECT_NEAR(model.litWidth(gamma), model.litWidthByIntegral(gamma), 1e-10)
-          << c.name << " gamma " << gamma;
+      EXPECT_NEAR(model.litWidth(gamma), model.litWidthByIntegral(gamma), 1e-10) << c.name << " gamma " << gamma;
     // Just above the contact spacing no point of the neighbour at +H lies inside the central
     // ellipse; just below, some does.
     double Hc = ref::BarbuleReference::contactSpacing(c.model.b, c.model.mu);
     auto overlaps = [&](double H) {
       for (int j = 0; j < 20000; ++j) {
-        double t = 2.0 * M_PI * j / 20000, u = c.model.b * std::cos(t),
-               v = std::sin(t) + H * std::cos(c.model.mu);
+        double t = 2.0 * M_PI * j / 20000, u = c.model.b * std::cos(t), v = std::sin(t) + H * std::cos(c.model.mu);
         u += H * std::sin(c.model.mu);  // the neighbour in the central ellipse's own frame
         if ((u / c.model.b) * (u / c.model.b) + v * v < 1.0) return true;
       }
@@ -408,10 +402,8 @@ TEST(BarbuleReference, ReferenceIsSelfConsistent) {
         wo = {-0.0310, -0.9992, 0.0268};
       }
       std::vector<double> lambdas = {400.0, 500.0, 600.0, 700.0}, melanin(4, 0.05);
-      ref::BarbuleReference::TRT a = model.trt(wi, wo, lambdas, melanin),
-                                 b = finer.trt(wi, wo, lambdas, melanin);
-      for (int k = 0; k < 4; ++k)
-        EXPECT_NEAR(a.value[k], b.value[k], 1e-6 * b.value[k] + 1e-12) << c.name << " " << i;
+      ref::BarbuleReference::TRT a = model.trt(wi, wo, lambdas, melanin), b = finer.trt(wi, wo, lambdas, melanin);
+      for (int k = 0; k < 4; ++k) EXPECT_NEAR(a.value[k], b.value[k], 1e-6 * b.value[k] + 1e-12) << c.name << " " << i;
     }
   }
 }
@@ -446,8 +438,8 @@ FilmErrors filmErrors(double phaseScale) {
     FreeStandingFilm production(film, nOut, d, wl);
     // Cosines down to the production's clamp, 1e-4: log-uniform half the time.
     auto randomCos = [&] {
-      return std::max(1e-4f, rng.nextFloat() < 0.5f ? std::pow(10.0f, uniform(rng, -4.0f, 0.0f))
-                                                    : uniform(rng, 1e-4f, 1.0f));
+      return std::max(1e-4f,
+                      rng.nextFloat() < 0.5f ? std::pow(10.0f, uniform(rng, -4.0f, 0.0f)) : uniform(rng, 1e-4f, 1.0f));
     };
     float c = randomCos();
     FreeStandingFilm::Reflectance r = production.reflectance(c);
@@ -464,9 +456,7 @@ FilmErrors filmErrors(double phaseScale) {
     auto avx2 = hasAvx2() ? production.weightedTransmittanceProductsAvx2(w, l1, l2) : portable;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       double lambda = wl[k], n = film(wl[k]);
-      auto airy = [&](double scale) {
-        return ref::airyFilm(c, nOut, n, nOut, d, lambda, phaseScale * scale);
-      };
+      auto airy = [&](double scale) { return ref::airyFilm(c, nOut, n, nOut, d, lambda, phaseScale * scale); };
       ref::AiryFilm a = airy(1.0), above = airy(1.0 + h), below = airy(1.0 - h);
       double envelope = ref::freeStandingReflectanceEnvelope(c, nOut, n);
       auto ratio = [&](double error, double sensitivity, double amplitude, double scale) {
@@ -485,18 +475,17 @@ FilmErrors filmErrors(double phaseScale) {
       double expected = transmittance(c1[0], c2[0], 1.0);
       double sensitivity =
           std::abs(transmittance(c1[0], c2[0], 1.0 + h) - transmittance(c1[0], c2[0], 1.0 - h)) / (2 * h);
-      e.transmittance = std::max(e.transmittance, ratio(std::abs(product[k] - expected), sensitivity,
-                                                        kFilmTransmittanceAmplitude, expected));
+      e.transmittance = std::max(
+          e.transmittance, ratio(std::abs(product[k] - expected), sensitivity, kFilmTransmittanceAmplitude, expected));
       double sum = 0.0, sumSensitivity = 0.0;
       for (int j = 0; j < 4; ++j) {
         sum += weight[j] * transmittance(c1[j], c2[j], 1.0);
         sumSensitivity +=
-            weight[j] *
-            std::abs(transmittance(c1[j], c2[j], 1.0 + h) - transmittance(c1[j], c2[j], 1.0 - h)) / (2 * h);
+            weight[j] * std::abs(transmittance(c1[j], c2[j], 1.0 + h) - transmittance(c1[j], c2[j], 1.0 - h)) / (2 * h);
       }
       for (float value : {portable[k], avx2[k]})
-        e.weighted = std::max(e.weighted,
-                              ratio(std::abs(value - sum), sumSensitivity, kFilmTransmittanceAmplitude, sum));
+        e.weighted =
+            std::max(e.weighted, ratio(std::abs(value - sum), sumSensitivity, kFilmTransmittanceAmplitude, sum));
     }
   }
   return e;
@@ -509,8 +498,7 @@ TEST(ThinFilmReference, FreeStandingFilmMatchesTheAirySum) {
   std::printf(
       "free-standing film vs reference, error over allowance: reflectance %.2f (error %.2e of the "
       "envelope), transmittance product %.2f, weighted products %.2f (AVX2 %s)\n",
-      e.reflectance, e.reflectanceOfEnvelope, e.transmittance, e.weighted,
-      hasAvx2() ? "yes" : "no");
+      e.reflectance, e.reflectanceOfEnvelope, e.transmittance, e.weighted, hasAvx2() ? "yes" : "no");
   EXPECT_LT(e.reflectance, 1.0);
   EXPECT_LT(e.transmittance, 1.0);
   EXPECT_LT(e.weighted, 1.0);
@@ -519,8 +507,8 @@ TEST(ThinFilmReference, FreeStandingFilmMatchesTheAirySum) {
 TEST(ThinFilmReference, BoundsDetectAOnePercentPhaseError) {
   // A film whose phase were 1 % off would exceed the allowance many times over.
   FilmErrors e = filmErrors(1.01);
-  std::printf("with a 1 %% phase error, error over allowance: reflectance %.2e, transmittance %.2e\n",
-              e.reflectance, e.transmittance);
+  std::printf("with a 1 %% phase error, error over allowance: reflectance %.2e, transmittance %.2e\n", e.reflectance,
+              e.transmittance);
   EXPECT_GT(e.reflectance, 100.0);
   EXPECT_GT(e.transmittance, 100.0);
   EXPECT_GT(e.weighted, 100.0);
@@ -536,8 +524,7 @@ TEST(ThinFilmReference, GeneralStackMatchesTheReference) {
     double c = rng.nextDouble(), d = 3.0 * rng.nextDouble(), lambda = 360.0 + 470.0 * rng.nextDouble();
     ThinFilmAmplitudes p = thinFilmAmplitudes(c, n1, n2, n3, d, lambda);
     ref::AiryFilm r = ref::airyFilm(c, n1, n2, n3, d, lambda);
-    worst = std::max({worst, std::abs(p.rs - r.rs), std::abs(p.rp - r.rp), std::abs(p.ts - r.ts),
-                      std::abs(p.tp - r.tp),
+    worst = std::max({worst, std::abs(p.rs - r.rs), std::abs(p.rp - r.rp), std::abs(p.ts - r.ts), std::abs(p.tp - r.tp),
                       std::abs(thinFilmReflectance(c, n1, n2, n3, d, lambda) - r.reflectance()),
                       std::abs(thinFilmTransmittance(c, n1, n2, n3, d, lambda) - r.transmittance())});
   }
@@ -560,12 +547,10 @@ TEST(BarbuleReference, CoverageAndPassThroughMatch) {
       // The projected period H |cos gamma| of the line through the layer (-w from below).
       double period = model.spacing() * std::abs(w.z) / std::hypot(double(w.x), double(w.z));
       stats.add(std::abs(bsdf.coverage(BSDFContext{}, w) - expected) * period, describe(s, p));
-      stats.add(std::abs(bsdf.passThrough(BSDFContext{}, w, wl)[0] - (1.0 - expected)) * period,
-                describe(s, p));
+      stats.add(std::abs(bsdf.passThrough(BSDFContext{}, w, wl)[0] - (1.0 - expected)) * period, describe(s, p));
     }
   }
-  std::printf("coverage vs reference: max error of the lit width %.2e (%s)\n", stats.max,
-              stats.worst.c_str());
+  std::printf("coverage vs reference: max error of the lit width %.2e (%s)\n", stats.max, stats.worst.c_str());
   EXPECT_LT(stats.max, kLitWidthBound) << stats.worst;
 }
 
@@ -584,12 +569,11 @@ TEST(BarbuleReference, OffsetsLitFromBothDirectionsMatch) {
       if (!(wi.z > 0.0f)) continue;
       OffsetInterval common =
           geometry.commonOffsets(geometry.litArc(inPlane(wi).dir), geometry.litArc(inPlane(wo).dir));
-      stats.add(std::abs(common.length() - model.commonWidth(toReference(wi), toReference(wo))),
-                describe(s, p));
+      stats.add(std::abs(common.length() - model.commonWidth(toReference(wi), toReference(wo))), describe(s, p));
     }
   }
-  std::printf("offsets lit from both directions vs reference: max error of their width %.2e (%s)\n",
-              stats.max, stats.worst.c_str());
+  std::printf("offsets lit from both directions vs reference: max error of their width %.2e (%s)\n", stats.max,
+              stats.worst.c_str());
   EXPECT_LT(stats.max, kCommonEndError) << stats.worst;
 }
 
@@ -664,8 +648,8 @@ TEST(BarbuleReference, TRTWithAFineQuadratureMatches) {
 
 TEST(BarbuleReference, TRTWithTheDefaultQuadratureIsWithinItsStatedError) {
   TRTErrors e = trtErrors(BarbuleQuadrature{});
-  std::printf("TRT (default 4 x 1 nodes) vs reference: max relative error %.2e (%s), L1 %.2e\n",
-              e.pointwise.max, e.pointwise.worst.c_str(), e.l1);
+  std::printf("TRT (default 4 x 1 nodes) vs reference: max relative error %.2e (%s), L1 %.2e\n", e.pointwise.max,
+              e.pointwise.worst.c_str(), e.l1);
   EXPECT_LT(e.pointwise.max, kDefaultTRTBound) << e.pointwise.worst;
   EXPECT_LT(e.l1, kDefaultTRTL1Bound);
 }
@@ -700,12 +684,10 @@ TEST(BarbuleReference, EvalMatchesInBothRoles) {
       double cosine = std::abs(camera ? p.wo.z : p.wi.z);
       Spectrum f = bsdfs[p.caseIndex].eval(BSDFContext{}, p.wi, p.wo, p.wl);
       for (int k = 0; k < kSpectrumSamples; ++k)
-        stats.add(evalRatio(f[k], R, T, p.melanin[k], cosine, k),
-                  describe(s, p) + (camera ? " camera" : " light"));
+        stats.add(evalRatio(f[k], R, T, p.melanin[k], cosine, k), describe(s, p) + (camera ? " camera" : " light"));
     }
   }
-  std::printf("eval vs reference, both roles: max error over allowance %.2f (%s)\n", stats.max,
-              stats.worst.c_str());
+  std::printf("eval vs reference, both roles: max error over allowance %.2f (%s)\n", stats.max, stats.worst.c_str());
   EXPECT_LT(stats.max, 1.0) << stats.worst;
 }
 
@@ -727,8 +709,7 @@ TEST(BarbuleReference, PerPointOverridesMatchTheReferenceOfThoseParameters) {
     const BSDFContext ctx{&point};
     Case c = makeCase(p, -1.0f, "override");
     ref::BarbuleReference model(c.model);
-    Vec3 wi = upperHemisphere(rng),
-         wo = i % 2 ? uniformSphere(rng) : mirroredAboutALitNormal(rng, model, p.mu, wi);
+    Vec3 wi = upperHemisphere(rng), wo = i % 2 ? uniformSphere(rng) : mirroredAboutALitNormal(rng, model, p.mu, wi);
     Wavelengths wl = randomWavelengths(rng);
     std::vector<double> melanin = melaninAt(c, wl);
     ref::BarbuleReference::Reflection R = model.reflection(toReference(wi), toReference(wo), lambdasOf(wl));

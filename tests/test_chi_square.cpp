@@ -14,9 +14,8 @@ TEST(ChiSquare, GammaQMatchesKnownValues) {
 }
 
 TEST(ChiSquare, AcceptsCosineHemisphereAgainstItsPdf) {
-  auto result = chiSquareDirectionTest([](PCG32& rng) -> std::optional<Vec3> {
-        return sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-      },
+  auto result = chiSquareDirectionTest(
+      [](PCG32& rng) -> std::optional<Vec3> { return sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat())); },
       [](const Vec3& w) { return double(cosineHemispherePdf(w.z)); }, 500000);
   std::cout << result.message << "\n";
   EXPECT_GT(result.pValue, 0.01);
@@ -24,7 +23,8 @@ TEST(ChiSquare, AcceptsCosineHemisphereAgainstItsPdf) {
 
 TEST(ChiSquare, RejectsAMismatchedPdf) {
   // Uniform hemisphere samples tested against the cosine density must fail.
-  auto result = chiSquareDirectionTest([](PCG32& rng) -> std::optional<Vec3> {
+  auto result = chiSquareDirectionTest(
+      [](PCG32& rng) -> std::optional<Vec3> {
         Vec3 w = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
         return Vec3(w.x, w.y, std::abs(w.z));
       },
@@ -33,9 +33,8 @@ TEST(ChiSquare, RejectsAMismatchedPdf) {
 }
 
 TEST(ChiSquare, RejectsSamplesWhereThePdfIsZero) {
-  auto result = chiSquareDirectionTest([](PCG32& rng) -> std::optional<Vec3> {
-        return sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
-      },
+  auto result = chiSquareDirectionTest(
+      [](PCG32& rng) -> std::optional<Vec3> { return sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat())); },
       [](const Vec3& w) { return w.z > 0 ? double(cosineHemispherePdf(w.z)) : 0.0; }, 100000);
   EXPECT_LT(result.pValue, 1e-12);
 }

@@ -52,15 +52,20 @@ TEST_F(CliTest, MalformedScenesFailWithFileLineAndValue) {
   std::vector<Case> cases = {
       {"unknown_plugin.xml", "<scene version=\"3.0.0\">\n  <bsdf type=\"velvet\"/>\n</scene>\n", {":2", "velvet"}},
       {"bad_number.xml",
-       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n  <float name=\"fov\" value=\"4o\"/>\n</sensor>\n</scene>\n",
+       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n  <float name=\"fov\" "
+       "value=\"4o\"/>\n</sensor>\n</scene>\n",
        {":3", "4o"}},
       {"missing_file.xml",
-       "<scene version=\"3.0.0\">\n<shape type=\"obj\">\n<string name=\"filename\" value=\"nowhere.obj\"/>\n</shape>\n</scene>\n",
+       "<scene version=\"3.0.0\">\n<shape type=\"obj\">\n<string name=\"filename\" "
+       "value=\"nowhere.obj\"/>\n</shape>\n</scene>\n",
        {":3", "nowhere.obj"}},
       {"missing_default.xml",
-       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n<float name=\"fov\" value=\"$angle\"/>\n</sensor>\n</scene>\n",
+       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n<float name=\"fov\" "
+       "value=\"$angle\"/>\n</sensor>\n</scene>\n",
        {":3", "angle"}},
-      {"unknown_parameter.xml", "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<float name=\"radiancee\" value=\"1\"/>\n</emitter>\n</scene>\n",
+      {"unknown_parameter.xml",
+       "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<float name=\"radiancee\" "
+       "value=\"1\"/>\n</emitter>\n</scene>\n",
        {":3", "radiancee"}},
       {"malformed.xml", "<scene version=\"3.0.0\">\n<shape type=\"sphere\">\n</scene>\n", {"malformed.xml"}},
   };
@@ -80,7 +85,9 @@ TEST_F(CliTest, AFailedRenderLeavesTheOldImageAlone) {
   std::string out = (dir_ / "keep.exr").string();
   ASSERT_EQ(run("render " + good + " -o " + out).status, 0);
   auto before = fs::file_size(out);
-  std::string bad = write("bad.xml", "<scene version=\"3.0.0\">\n<integrator type=\"path\"><integer name=\"max_depth\" value=\"x\"/></integrator></scene>");
+  std::string bad = write("bad.xml",
+                          "<scene version=\"3.0.0\">\n<integrator type=\"path\"><integer name=\"max_depth\" "
+                          "value=\"x\"/></integrator></scene>");
   EXPECT_NE(run("render " + bad + " -o " + out).status, 0);
   EXPECT_EQ(fs::file_size(out), before);
   EXPECT_EQ(columba::readEXR(out).width, 8);
@@ -241,8 +248,8 @@ TEST_F(CliTest, ImagesRecordHowTheyWereRendered) {
     // The metadata is stored as plain text in both formats.
     std::ifstream in(dir_ / file, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), {});
-    for (const std::string& text : {std::string("Columba "), scene, std::string("res=4"), std::string("Samples per pixel"),
-                                    std::string("Seed"), std::string("Render time")})
+    for (const std::string& text : {std::string("Columba "), scene, std::string("res=4"),
+                                    std::string("Samples per pixel"), std::string("Seed"), std::string("Render time")})
       EXPECT_NE(bytes.find(text), std::string::npos) << text;
   }
 }
@@ -278,8 +285,10 @@ TEST_F(CliTest, DefaultSceneIsAGeneratedNeck) {
 }
 
 TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirData) {
-  CommandResult r = run("bsdf --preset dove-green --mode specular,plane,hemisphere --angles 0,30 --res 32 --spectral "
-                        "--bins 4 -o " + dir_.string());
+  CommandResult r =
+      run("bsdf --preset dove-green --mode specular,plane,hemisphere --angles 0,30 --res 32 --spectral "
+          "--bins 4 -o " +
+          dir_.string());
   ASSERT_EQ(r.status, 0) << r.output;
   for (const char* file : {"bsdf_specular.png", "bsdf_specular.csv", "bsdf_plane_theta0.png", "bsdf_plane_theta30.png",
                            "bsdf_plane.csv", "bsdf_hemisphere_theta0.exr", "bsdf_hemisphere_theta30.png", "bsdf.json"})
@@ -319,9 +328,9 @@ TEST_F(CliTest, MontageTakesOneLabelPerImage) {
   ASSERT_EQ(plain.status, 0) << plain.output;
   const int plainHeight = columba::readPNG(sheet).height;
   // Long labels wrap: the sheet grows by their extra lines.
-  CommandResult labelled = run("montage -o " + sheet +
-                               " --label 'a rather long caption that cannot fit in one line of a small tile' --label b " +
-                               a + " " + b);
+  CommandResult labelled =
+      run("montage -o " + sheet +
+          " --label 'a rather long caption that cannot fit in one line of a small tile' --label b " + a + " " + b);
   ASSERT_EQ(labelled.status, 0) << labelled.output;
   EXPECT_GT(columba::readPNG(sheet).height, plainHeight);
   std::string labels = write("labels.txt", "first\nsecond\n");

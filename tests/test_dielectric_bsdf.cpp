@@ -13,7 +13,8 @@ namespace {
 const float kEta = 1.5f;
 
 DielectricBSDF glass(float reflectance = 1.0f, float transmittance = 1.0f) {
-  return DielectricBSDF(kEta, SpectralDistribution::constant(reflectance), SpectralDistribution::constant(transmittance));
+  return DielectricBSDF(kEta, SpectralDistribution::constant(reflectance),
+                        SpectralDistribution::constant(transmittance));
 }
 
 float sinTheta(const Vec3& w) { return std::sqrt(w.x * w.x + w.y * w.y); }

@@ -32,10 +32,18 @@ void expectBandsCoverOnce(const std::vector<int>& bounds, int rows, int parts) {
 
 TEST(PartWindows, BandsCoverTheImageExactlyOnce) {
   const std::vector<std::vector<uint64_t>> profiles = {
-      std::vector<uint64_t>(37, 5),                                      // uniform
-      std::vector<uint64_t>(37, 0),                                      // free
-      [] { std::vector<uint64_t> c(37, 1); c[20] = 100000; return c; }(),  // one row holds nearly all
-      [] { std::vector<uint64_t> c(37); for (size_t i = 0; i < c.size(); ++i) c[i] = i * i; return c; }(),
+      std::vector<uint64_t>(37, 5),  // uniform
+      std::vector<uint64_t>(37, 0),  // free
+      [] {
+        std::vector<uint64_t> c(37, 1);
+        c[20] = 100000;
+        return c;
+      }(),  // one row holds nearly all
+      [] {
+        std::vector<uint64_t> c(37);
+        for (size_t i = 0; i < c.size(); ++i) c[i] = i * i;
+        return c;
+      }(),
   };
   for (const auto& costs : profiles)
     for (int parts = 1; parts <= 37; ++parts) {
@@ -145,10 +153,12 @@ TEST(Pieces, MetadataRoundTrips) {
 TEST(Sweep, RangesWithDecimalStepsReachTheirEnd) {
   SweepAxis a = parseSweep("height=0:1:0.1");
   EXPECT_EQ(a.name, "height");
-  EXPECT_EQ(a.values, (std::vector<std::string>{"0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"}));
+  EXPECT_EQ(a.values,
+            (std::vector<std::string>{"0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"}));
   EXPECT_EQ(parseSweep("angle=-10:60:10").values,
             (std::vector<std::string>{"-10", "0", "10", "20", "30", "40", "50", "60"}));
-  EXPECT_EQ(parseSweep("h=0.5:0.62:0.05").values, (std::vector<std::string>{"0.5", "0.55", "0.6"}));  // 0.62 not reached
+  EXPECT_EQ(parseSweep("h=0.5:0.62:0.05").values,
+            (std::vector<std::string>{"0.5", "0.55", "0.6"}));  // 0.62 not reached
   EXPECT_EQ(parseSweep("x=1:0:-0.25").values, (std::vector<std::string>{"1", "0.75", "0.5", "0.25", "0"}));
   EXPECT_EQ(parseSweep("x=3:3:1").values, (std::vector<std::string>{"3"}));
   EXPECT_EQ(parseSweep("s=1e-3:3e-3:1e-3").values, (std::vector<std::string>{"0.001", "0.002", "0.003"}));
@@ -268,8 +278,8 @@ TEST(Slurm, BatchScriptsRunOnePiecePerTaskAndMergeAfterwards) {
   SlurmJob job;
   job.columba = "/opt/columba/bin/columba";
   job.workDir = "/home/me/project dir";
-  job.renderArguments = {"/s/scene.xml", "-D", "feather=feather.ply", "--sweep", "angle=-10:60:10", "--frames",
-                         "/o/parts/la{angle:03}.exr"};
+  job.renderArguments = {"/s/scene.xml",    "-D",       "feather=feather.ply",      "--sweep",
+                         "angle=-10:60:10", "--frames", "/o/parts/la{angle:03}.exr"};
   job.manifestPath = "/o/manifest.json";
   job.logDir = "/o/logs";
   job.jobName = "columba-la";
@@ -280,13 +290,14 @@ TEST(Slurm, BatchScriptsRunOnePiecePerTaskAndMergeAfterwards) {
   job.parts = 4;
   job.passes = 1;
   const std::string render = renderBatchScript(job);
-  for (const char* line : {"#!/bin/bash\n", "#SBATCH --job-name=columba-la-render\n", "#SBATCH --output=/o/logs/render_%A_%a.log\n",
-                           "#SBATCH --cpus-per-task=8\n", "#SBATCH --partition=gpu\n", "#SBATCH --time=30:00\n",
-                           "frame=$(( task / 4 ))\n", "part=$(( task / 1 % 4 + 1 ))\n", "cd '/home/me/project dir' || exit 1\n",
-                           "/opt/columba/bin/columba render /s/scene.xml -D feather=feather.ply --sweep angle=-10:60:10 "
-                           "--frames '/o/parts/la{angle:03}.exr' --frame \"$frame\" --part \"$part/4\" --threads "
-                           "\"${SLURM_CPUS_PER_TASK:-1}\"\n",
-                           "trap '", "exit $status\n", "= 32 array tasks"})
+  for (const char* line :
+       {"#!/bin/bash\n", "#SBATCH --job-name=columba-la-render\n", "#SBATCH --output=/o/logs/render_%A_%a.log\n",
+        "#SBATCH --cpus-per-task=8\n", "#SBATCH --partition=gpu\n", "#SBATCH --time=30:00\n", "frame=$(( task / 4 ))\n",
+        "part=$(( task / 1 % 4 + 1 ))\n", "cd '/home/me/project dir' || exit 1\n",
+        "/opt/columba/bin/columba render /s/scene.xml -D feather=feather.ply --sweep angle=-10:60:10 "
+        "--frames '/o/parts/la{angle:03}.exr' --frame \"$frame\" --part \"$part/4\" --threads "
+        "\"${SLURM_CPUS_PER_TASK:-1}\"\n",
+        "trap '", "exit $status\n", "= 32 array tasks"})
     EXPECT_NE(render.find(line), std::string::npos) << line << "\n---\n" << render;
   EXPECT_EQ(render.find("--pass"), std::string::npos);
   job.passes = 2;

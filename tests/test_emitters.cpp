@@ -2,10 +2,10 @@
 
 #include <filesystem>
 
+#include "builtin/builtin_plugins.h"
 #include "chi_square.h"
 #include "core/sampling.h"
 #include "emitters/envmap_emitter.h"
-#include "builtin/builtin_plugins.h"
 #include "render_test_support.h"
 #include "scene/scene.h"
 
@@ -21,7 +21,8 @@ Image testEnvironment() {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
       float* p = img.pixel(x, y);
-      float v = 0.05f + (y > 20 && y < 26 ? 0.5f : 0.0f) + ((x - 40) * (x - 40) + (y - 10) * (y - 10) < 20 ? 20.0f : 0.0f);
+      float v =
+          0.05f + (y > 20 && y < 26 ? 0.5f : 0.0f) + ((x - 40) * (x - 40) + (y - 10) * (y - 10) < 20 ? 20.0f : 0.0f);
       p[0] = v;
       p[1] = 0.8f * v;
       p[2] = 0.6f * v;
@@ -74,7 +75,8 @@ TEST(Emitter, UniformEnvmapIsAWhiteFurnace) {
         <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/></film>
         <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
       <shape type="sphere"><bsdf type="diffuse"><float name="reflectance" value="1"/></bsdf></shape>
-      <emitter type="envmap"><string name="filename" value=")" + (dir / "flat.exr").string() + R"("/></emitter></scene>)";
+      <emitter type="envmap"><string name="filename" value=")" +
+                    (dir / "flat.exr").string() + R"("/></emitter></scene>)";
   Vec3 c = meanColour(renderSceneString(xml), 6, 6, 10, 10);
   std::filesystem::remove_all(dir);
   EXPECT_NEAR(c.x, 0.6f, 0.006f);

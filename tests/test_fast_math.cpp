@@ -43,7 +43,8 @@ std::vector<float> sweep(double lo, double hi, int count, int tailUlps = 0) {
 }
 
 // The sweep four lanes at a time (a last partial group repeats its first value).
-template <typename F> void forEachLaneGroup(const std::vector<float>& x, F&& f) {
+template <typename F>
+void forEachLaneGroup(const std::vector<float>& x, F&& f) {
   for (size_t i = 0; i < x.size(); i += kLaneCount) {
     FloatLanes v;
     for (int k = 0; k < kLaneCount; ++k) v[k] = x[std::min(i + size_t(k), x.size() - 1)];
@@ -142,8 +143,8 @@ TEST(FastMath, SinAndCosWithinAQuarterTurn) {
       sine.add(std::abs(sinLanes[k] - std::sin(t)), t);
     }
   });
-  std::printf("quarter turn: max abs error sin(x)/x %.2e at %.9g, cos %.2e at %.9g, sin %.2e at %.9g\n",
-              sinc.value, sinc.at, cosine.value, cosine.at, sine.value, sine.at);
+  std::printf("quarter turn: max abs error sin(x)/x %.2e at %.9g, cos %.2e at %.9g, sin %.2e at %.9g\n", sinc.value,
+              sinc.at, cosine.value, cosine.at, sine.value, sine.at);
   EXPECT_LT(sinc.value, kQuarterTurnMaxAbsError) << sinc.at;
   EXPECT_LT(cosine.value, kQuarterTurnMaxAbsError) << cosine.at;
   EXPECT_LT(sine.value, kQuarterTurnMaxAbsError) << sine.at;
@@ -164,8 +165,8 @@ TEST(FastMath, CosSinOfSmallAngles) {
       sine.add(std::abs(s[k] - std::sin(double(v[k]))), v[k]);
     }
   });
-  std::printf("small angles: max abs error cos %.2e at %.9g, sin %.2e at %.9g\n", cosine.value, cosine.at,
-              sine.value, sine.at);
+  std::printf("small angles: max abs error cos %.2e at %.9g, sin %.2e at %.9g\n", cosine.value, cosine.at, sine.value,
+              sine.at);
   EXPECT_LT(cosine.value, kSmallAngleCosMaxAbsError) << cosine.at;
   EXPECT_LT(sine.value, kSmallAngleSinMaxAbsError) << sine.at;
 }
@@ -224,8 +225,7 @@ TEST(FastMath, CompileTimeSqrtSinAndCos) {
     sine.add(x == 0.0 ? 0.0 : std::abs(constexprSin(x) / std::sin(x) - 1.0), x);
     cosine.add(std::abs(constexprCos(x) / std::cos(x) - 1.0), x);
   }
-  std::printf("compile-time: max relative error sqrt %.2e, sin %.2e, cos %.2e\n", root.value, sine.value,
-              cosine.value);
+  std::printf("compile-time: max relative error sqrt %.2e, sin %.2e, cos %.2e\n", root.value, sine.value, cosine.value);
   EXPECT_LE(root.value, kConstexprMaxRelError) << root.at;
   EXPECT_LE(sine.value, kConstexprMaxRelError) << sine.at;
   EXPECT_LE(cosine.value, kConstexprMaxRelError) << cosine.at;

@@ -1,17 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <unistd.h>
 
 #include "app/feather_command.h"
+#include "builtin/builtin_plugins.h"
 #include "feather/feather_generator.h"
 #include "feather/neck_layout.h"
 #include "feather_test_util.h"
-#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -169,13 +169,15 @@ TEST_F(FeatherGeneratorTest, GeneratedFeatherLoadsFromASceneFile) {
   o.barbsPerSide = 8;
   generateFeatherPly(o, path("feather.ply"));
   auto load = [&](const std::string& shapeParams) {
-    std::string xml = "<scene version='2.0.0'>\n<shape type='feather'>\n"
-                      "  <string name='filename' value='feather.ply'/>\n" + shapeParams +
-                      "  <bsdf type='diffuse'/>\n</shape>\n</scene>\n";
+    std::string xml =
+        "<scene version='2.0.0'>\n<shape type='feather'>\n"
+        "  <string name='filename' value='feather.ply'/>\n" +
+        shapeParams + "  <bsdf type='diffuse'/>\n</shape>\n</scene>\n";
     return loadSceneString(xml, "feather.xml", dir().string(), {}, builtinPlugins());
   };
-  ParsedScene parsed = load("  <float name='barbwidth' value='0.02'/>\n  <float name='span' value='0.3'/>\n"
-                            "  <transform name='to_world'><scale value='0.035'/></transform>\n");
+  ParsedScene parsed = load(
+      "  <float name='barbwidth' value='0.02'/>\n  <float name='span' value='0.3'/>\n"
+      "  <transform name='to_world'><scale value='0.035'/></transform>\n");
   ASSERT_EQ(parsed.objects.size(), 1u);
   auto shape = std::dynamic_pointer_cast<FeatherShape>(parsed.objects[0]);
   ASSERT_TRUE(shape);

@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "shapes/feather_ply.h"
 
@@ -21,7 +21,8 @@ struct Vertex {
 std::vector<Vertex> twoBarbs() {
   std::vector<Vertex> v;
   for (int b = 0; b < 2; ++b)
-    for (int i = 0; i < kBarbVertices; ++i) v.push_back({i * 0.01f, b * 0.1f, 0.0f, float(i + 1), -0.35f, 0.6f, 0, 0, 2});
+    for (int i = 0; i < kBarbVertices; ++i)
+      v.push_back({i * 0.01f, b * 0.1f, 0.0f, float(i + 1), -0.35f, 0.6f, 0, 0, 2});
   return v;
 }
 
@@ -33,7 +34,8 @@ class FeatherPlyTest : public ::testing::Test {
     return (dir / name).string();
   }
   void TearDown() override {
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("columba_ply_test_" + std::to_string(getpid())));
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() /
+                                ("columba_ply_test_" + std::to_string(getpid())));
   }
 
   // ASCII file: header (7 + vertex property lines), then one line per vertex and per face.
@@ -48,7 +50,8 @@ class FeatherPlyTest : public ::testing::Test {
     s << "ply\nformat ascii 1.0\ncomment test\nelement vertex " << declaredVertices << "\n"
       << "property float x\nproperty float y\nproperty float z\nproperty float H\nproperty float mu\n"
       << "property float height\nproperty float " << n1 << "\nproperty float " << n2 << "\nproperty float " << n3
-      << "\nelement face " << v.size() / kBarbVertices << "\nproperty list " << listType << " vertex_indices\nend_header\n";
+      << "\nelement face " << v.size() / kBarbVertices << "\nproperty list " << listType
+      << " vertex_indices\nend_header\n";
     for (const Vertex& x : v)
       s << x.x << " " << x.y << " " << x.z << " " << x.H << " " << x.mu << " " << x.height << " " << x.nx << " " << x.ny
         << " " << x.nz << "\n";
@@ -72,8 +75,16 @@ class FeatherPlyTest : public ::testing::Test {
       << "element edge 1\nproperty int a\nend_header\n";
     auto put = [&](const auto& value) { s.write(reinterpret_cast<const char*>(&value), sizeof(value)); };
     for (const Vertex& x : v) {
-      put(x.x); put(x.y); put(x.z); put(uint8_t(200)); put(x.H); put(double(x.mu)); put(x.height);
-      put(x.nx); put(x.ny); put(x.nz);
+      put(x.x);
+      put(x.y);
+      put(x.z);
+      put(uint8_t(200));
+      put(x.H);
+      put(double(x.mu));
+      put(x.height);
+      put(x.nx);
+      put(x.ny);
+      put(x.nz);
     }
     for (size_t f = 0; f < v.size() / kBarbVertices; ++f) {
       put(uint8_t(kBarbVertices));
@@ -184,9 +195,10 @@ TEST_F(FeatherPlyTest, ReportsMissingPropertiesAtTheElementLine) {
   EXPECT_NE(err.find(f + ":4"), std::string::npos) << err;
   EXPECT_NE(err.find("normal"), std::string::npos) << err;
 
-  std::string text = "ply\nformat ascii 1.0\nelement vertex 0\nproperty float y\nproperty float z\n"
-                     "property float nx\nproperty float ny\nproperty float nz\nelement face 0\n"
-                     "property list uchar int vertex_indices\nend_header\n";
+  std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 0\nproperty float y\nproperty float z\n"
+      "property float nx\nproperty float ny\nproperty float nz\nelement face 0\n"
+      "property list uchar int vertex_indices\nend_header\n";
   std::string g = path("nox.ply");
   std::ofstream(g) << text;
   err = errorOf(g);
@@ -258,9 +270,10 @@ TEST_F(FeatherPlyTest, ReportsBarbuleValuesOutOfRangeWithTheirLineOrIndex) {
 
 TEST_F(FeatherPlyTest, UsesBarbuleValuesOnlyAllTogether) {
   // The original implementation reads H, mu and height only when all three are there.
-  std::string text = "ply\nformat ascii 1.0\nelement vertex 64\nproperty float x\nproperty float y\n"
-                     "property float z\nproperty float H\nproperty float out1\nproperty float out2\n"
-                     "property float out3\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 64\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float H\nproperty float out1\nproperty float out2\n"
+      "property float out3\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   for (int i = 0; i < kBarbVertices; ++i) text += std::to_string(0.01 * i) + " 0 0 0.7 0 0 1\n";
   text += "64";
   for (int i = 0; i < kBarbVertices; ++i) text += " " + std::to_string(i);
@@ -290,8 +303,8 @@ TEST_F(FeatherPlyTest, ReadsTheRecordedBarbWidth) {
   FeatherPlyData d = readFeatherPly(f);
   ASSERT_TRUE(d.barbWidth.has_value());
   EXPECT_FLOAT_EQ(*d.barbWidth, 0.0125f);
-  for (const char* bad : {"comment barbwidth", "comment barbwidth -1", "comment barbwidth 0.01cm",
-                          "comment barbwidth 0.01 0.02"}) {
+  for (const char* bad :
+       {"comment barbwidth", "comment barbwidth -1", "comment barbwidth 0.01cm", "comment barbwidth 0.01 0.02"}) {
     withComment(bad);
     std::string err = errorOf(f);
     EXPECT_NE(err.find(f + ":3"), std::string::npos) << bad << ": " << err;

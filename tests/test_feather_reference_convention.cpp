@@ -3,14 +3,14 @@
 // generator writing what it means in that convention.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <unistd.h>
+#include <filesystem>
 
 #include "bsdf_test_support.h"
 #include "bsdfs/barbule_bsdf.h"
+#include "builtin/builtin_plugins.h"
 #include "feather/feather_generator.h"
 #include "feather_test_util.h"
-#include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
 
 using namespace columba;
@@ -41,7 +41,7 @@ float edgeAngle(const BarbStrip& s, float axial) {
 
 // The hit of a ray coming down the strip normal onto the point at `angle`, `axial` of `seg`.
 std::optional<std::pair<HitRecord, SurfaceInteraction>> hitAt(const EmbreeScene& scene, const FeatherShape& shape,
-                                                               int seg, float axial, float angle) {
+                                                              int seg, float axial, float angle) {
   BarbStrip s = shape.strip(size_t(seg));
   Vec3 target = s.point(axial, angle);
   return scene.intersect(Ray{target + s.normal(angle) * 0.02f, -s.normal(angle)});
@@ -211,8 +211,8 @@ TEST(FeatherReferenceConvention, GeneratedFeatherRoundTripsThroughTheFile) {
   EXPECT_GT(checked, 2);
 
   // A scene without barbwidth takes the file's: the strip radius follows it.
-  const std::string xml = "<scene version=\"3.0.0\"><shape type=\"feather\"><string name=\"filename\" value=\"" +
-                          path + "\"/></shape></scene>";
+  const std::string xml = "<scene version=\"3.0.0\"><shape type=\"feather\"><string name=\"filename\" value=\"" + path +
+                          "\"/></shape></scene>";
   ParsedScene parsed = loadSceneString(xml, "test.xml", dir.string(), {}, builtinPlugins());
   auto loaded = std::dynamic_pointer_cast<FeatherShape>(parsed.objects.at(0));
   ASSERT_TRUE(loaded);

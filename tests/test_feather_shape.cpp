@@ -9,8 +9,8 @@ namespace {
 
 FeatherShapeParams tiltedPlacement() {
   FeatherShapeParams params;
-  params.toWorld = Transform::translate(Vec3(0.08f, -0.02f, 0.01f)) * Transform::rotate(normalize(Vec3(1, 2, 0.5f)), 35.0f) *
-                   Transform::scale(Vec3(0.1f, 0.1f, 0.1f));
+  params.toWorld = Transform::translate(Vec3(0.08f, -0.02f, 0.01f)) *
+                   Transform::rotate(normalize(Vec3(1, 2, 0.5f)), 35.0f) * Transform::scale(Vec3(0.1f, 0.1f, 0.1f));
   return params;
 }
 
@@ -131,7 +131,8 @@ TEST(FeatherShape, RayPacketsAgreeWithSingleRays) {
     auto packed = scene.intersect4(rays);
     for (size_t i = 0; i < rays.size(); ++i) {
       auto single = scene.intersect(rays[i]);
-      ASSERT_EQ(packed[i].second != RTC_INVALID_GEOMETRY_ID, single.has_value()) << "packet " << packet << ", ray " << i;
+      ASSERT_EQ(packed[i].second != RTC_INVALID_GEOMETRY_ID, single.has_value())
+          << "packet " << packet << ", ray " << i;
       if (!single) continue;
       ++hits;
       EXPECT_EQ(packed[i].first, single->first.t);
@@ -182,7 +183,8 @@ TEST(FeatherShape, SpawnedRaysDoNotReHitTheirStrip) {
   PCG32 rng(5);
   for (int i = 0; i < 2000; ++i) {
     BarbStrip s = shape.strip(rng.nextUInt() % shape.primitiveCount());
-    Vec3 target = s.point(rng.nextFloat(), 0.9f * (2.0f * rng.nextFloat() - 1.0f) * std::asin(s.halfWidthEnd / s.radius));
+    Vec3 target =
+        s.point(rng.nextFloat(), 0.9f * (2.0f * rng.nextFloat() - 1.0f) * std::asin(s.halfWidthEnd / s.radius));
     Vec3 toSource = randomUnitVector(rng);
     if (dot(toSource, s.normal(0.0f)) < 0.2f) continue;
     auto hit = scene.intersect(rayToward(target, toSource, 0.03f));

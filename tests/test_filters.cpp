@@ -4,10 +4,10 @@
 #include <memory>
 #include <vector>
 #include "chi_square.h"
+#include "core/properties.h"
 #include "core/rng.h"
 #include "film/box_filter.h"
 #include "film/gaussian_filter.h"
-#include "core/properties.h"
 
 using namespace columba;
 
@@ -25,7 +25,8 @@ Properties gaussianProperties(float stddev) {
 }
 
 std::vector<std::shared_ptr<ReconstructionFilter>> allFilters() {
-  return {std::make_shared<BoxFilter>(), std::make_shared<GaussianFilter>(0.5f), std::make_shared<GaussianFilter>(1.2f)};
+  return {std::make_shared<BoxFilter>(), std::make_shared<GaussianFilter>(0.5f),
+          std::make_shared<GaussianFilter>(1.2f)};
 }
 
 // Midpoint-rule integral of eval over [x0, x1] x [y0, y1].
@@ -95,8 +96,8 @@ TEST(FilterSample, DistributionMatchesEval) {
     }
     for (int by = 0; by < bins; ++by)
       for (int bx = 0; bx < bins; ++bx)
-        expected[by * bins + bx] =
-            sampleCount * integrate(*filter, -r + bx * width, -r + (bx + 1) * width, -r + by * width, -r + (by + 1) * width, 12);
+        expected[by * bins + bx] = sampleCount * integrate(*filter, -r + bx * width, -r + (bx + 1) * width,
+                                                           -r + by * width, -r + (by + 1) * width, 12);
     auto result = columba::testing::chiSquareTest(observed, expected);
     EXPECT_GT(result.pValue, 0.01) << "radius " << r << ": " << result.message;
   }

@@ -147,16 +147,19 @@ TEST_P(ImageRecovery, RecoversTheBarbuleFromANoisyRenderOfUnknownExposure) {
   const bool hConstrained = hWidth < 0.3;
   EXPECT_NEAR(r.loss.scale, exposure, (hConstrained ? 0.15 : 0.25) * exposure);
   const double truthLoss = ScaledLoss(s.target.rgb, {}, LossKind::MSE, ScaleMode::Free)(
-                               renderSceneWith(s, {truth.height, truth.b, truth.mu, truth.H}).rgb).loss;
+                               renderSceneWith(s, {truth.height, truth.b, truth.mu, truth.H}).rgb)
+                               .loss;
   // The intervals hold the fitted values and are narrow for these constrained parameters.
   for (size_t i = 0; i < r.values.size(); ++i) {
     EXPECT_LE(r.profiles[i].lower, r.values[i]);
     EXPECT_GE(r.profiles[i].upper, r.values[i]);
   }
   EXPECT_LT(r.profiles[0].upper - r.profiles[0].lower, 0.05);
-  std::printf("truth %.3f %.3f %.3f %.3f -> fitted %.4f %.4f %.4f %.4f scale %.3f/%.3f, loss %.3g (truth %.3g), %d "
-              "evaluations\n", truth.height, truth.b, truth.mu, truth.H, r.values[0], r.values[1], r.values[2],
-              r.values[3], r.loss.scale, exposure, r.loss.loss, truthLoss, r.evaluations);
+  std::printf(
+      "truth %.3f %.3f %.3f %.3f -> fitted %.4f %.4f %.4f %.4f scale %.3f/%.3f, loss %.3g (truth %.3g), %d "
+      "evaluations\n",
+      truth.height, truth.b, truth.mu, truth.H, r.values[0], r.values[1], r.values[2], r.values[3], r.loss.scale,
+      exposure, r.loss.loss, truthLoss, r.evaluations);
   for (size_t i = 0; i < r.values.size(); ++i)
     std::printf("  %-6s [%.4f, %.4f]\n", r.parameters[i].name.c_str(), r.profiles[i].lower, r.profiles[i].upper);
 }
@@ -217,7 +220,8 @@ TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
 
 TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
   std::vector<SpectraSample> samples;
-  for (float lambda = 400.0f; lambda <= 700.0f; lambda += 10.0f) samples.push_back({20.0f, 0.0f, 20.0f, 180.0f, lambda, 0.0f});
+  for (float lambda = 400.0f; lambda <= 700.0f; lambda += 10.0f)
+    samples.push_back({20.0f, 0.0f, 20.0f, 180.0f, lambda, 0.0f});
   std::vector<float> clean = modelSpectra(barbuleParametersWith(BarbuleParameters{}, {{"height", 0.6}}), samples);
   for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = 2.0f * clean[i];
   SpectraFitSettings s;

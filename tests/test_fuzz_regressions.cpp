@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "fuzz_targets.h"
-#include "core/transform.h"
-#include "shapes/triangle_mesh.h"
-#include "emitters/envmap_emitter.h"
 #include <cmath>
+#include "core/error.h"
+#include "core/transform.h"
+#include "emitters/envmap_emitter.h"
+#include "fuzz_targets.h"
+#include "shapes/triangle_mesh.h"
 
 namespace fs = std::filesystem;
 
@@ -30,9 +30,8 @@ using Reader = std::function<void(const uint8_t*, size_t)>;
 
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> r{
-      {"scene", [](const uint8_t* d, size_t n) {
-         columba::fuzz::sceneFromBytes(d, n, std::string(COLUMBA_SOURCE_DIR) + "/examples");
-       }},
+      {"scene", [](const uint8_t* d,
+                   size_t n) { columba::fuzz::sceneFromBytes(d, n, std::string(COLUMBA_SOURCE_DIR) + "/examples"); }},
       {"ply_mesh", columba::fuzz::plyMeshFromBytes},
       {"feather_ply", columba::fuzz::featherPlyFromBytes},
       {"obj_mesh", columba::fuzz::objMeshFromBytes},
@@ -106,8 +105,9 @@ TEST(FuzzRegressions, ExrAttributeLargerThanTheFileIsAnErrorBeforeOpenEXRAllocat
     columba::fuzz::exrEnvmapFromBytes(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
     FAIL() << "no error";
   } catch (const columba::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("attribute 'comments' declares 2147483632 bytes but the file has 4 bytes left"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("attribute 'comments' declares 2147483632 bytes but the file has 4 bytes left"),
+        std::string::npos)
         << e.what();
   }
 }

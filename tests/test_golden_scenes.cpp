@@ -82,7 +82,8 @@ class GoldenScenes : public TempDirTest {
     std::vector<ShippedScene> list;
     for (const char* name : {"bsdf_visualization_normal", "bsdf_visualization_oblique", "bsdf_visualization_sampled"})
       list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), small});
-    list.push_back({"feather_linear_light", source / "scenes" / "feather_linear_light.xml",
+    list.push_back({"feather_linear_light",
+                    source / "scenes" / "feather_linear_light.xml",
                     {{"feather", path("feather.ply")}, {"res", "32"}, {"spp", "8"}}});
     for (const char* name : {"neck_direction1", "neck_direction2", "neck_omnidirectional"})
       list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), neckView});
@@ -107,7 +108,8 @@ nlohmann::json goldenEntry(const std::vector<Statistics>& runs) {
   for (const Statistics& r : runs)
     for (size_t i = 0; i < n; ++i) mean[i] += r.values[i] / runs.size();
   for (const Statistics& r : runs)
-    for (size_t i = 0; i < n; ++i) deviation[i] += (r.values[i] - mean[i]) * (r.values[i] - mean[i]) / (runs.size() - 1);
+    for (size_t i = 0; i < n; ++i)
+      deviation[i] += (r.values[i] - mean[i]) * (r.values[i] - mean[i]) / (runs.size() - 1);
   for (double& d : deviation) d = std::sqrt(d);
   return {{"mean", mean}, {"deviation", deviation}};
 }

@@ -1,10 +1,10 @@
 // Scene files built to exhaust or confuse the loader get located errors, quickly.
 #include <gtest/gtest.h>
 
-#include "builtin/builtin_plugins.h"
-#include "temp_dir_test.h"
 #include <sys/stat.h>
 #include <unistd.h>
+#include "builtin/builtin_plugins.h"
+#include "temp_dir_test.h"
 
 #include <chrono>
 #include <filesystem>
@@ -61,8 +61,10 @@ TEST(HostileScenes, SixtyFourLevelsAreStillRead) {
 TEST(HostileScenes, DollarSubstitutionIsLinear) {
   std::string dollars;
   for (int i = 0; i < 4096; ++i) dollars += "$ ";  // 8 KB
-  std::string xml = "<scene version=\"3.0.0\">\n<default name=\"a\" value=\"1\"/>\n"
-                    "<integrator type=\"path\"><string name=\"x\" value=\"" + dollars + "\"/></integrator>\n</scene>\n";
+  std::string xml =
+      "<scene version=\"3.0.0\">\n<default name=\"a\" value=\"1\"/>\n"
+      "<integrator type=\"path\"><string name=\"x\" value=\"" +
+      dollars + "\"/></integrator>\n</scene>\n";
   auto start = std::chrono::steady_clock::now();
   std::string message = loadError(xml);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -80,8 +82,9 @@ TEST(HostileScenes, UndefinedVariableMessagesAreShort) {
 }
 
 TEST(HostileScenes, LongestKnownNameWinsAndDefinesOverrideDefaults) {
-  std::string xml = "<scene version=\"3.0.0\">\n<default name=\"d\" value=\"1\"/>\n<default name=\"dd\" value=\"2\"/>\n"
-                    "<integrator type=\"path\"><integer name=\"max_depth\" value=\"$dd$d\"/></integrator>\n</scene>\n";
+  std::string xml =
+      "<scene version=\"3.0.0\">\n<default name=\"d\" value=\"1\"/>\n<default name=\"dd\" value=\"2\"/>\n"
+      "<integrator type=\"path\"><integer name=\"max_depth\" value=\"$dd$d\"/></integrator>\n</scene>\n";
   EXPECT_EQ(loadError(xml), "");
   // $dd$d reads as 2 then 1 (= 21), or with -D d=3 as 23; -D dd=4 gives 41: both are valid depths.
   EXPECT_EQ(loadError(xml, {{"d", "3"}}), "");
@@ -89,31 +92,36 @@ TEST(HostileScenes, LongestKnownNameWinsAndDefinesOverrideDefaults) {
 }
 
 TEST(HostileScenes, UnusedDefinesAreReported) {
-  std::string xml = "<scene version=\"3.0.0\">\n<default name=\"depth\" value=\"3\"/>\n<default name=\"spp\" value=\"4\"/>\n"
-                    "<integrator type=\"path\"><integer name=\"max_depth\" value=\"$depth\"/></integrator>\n</scene>\n";
+  std::string xml =
+      "<scene version=\"3.0.0\">\n<default name=\"depth\" value=\"3\"/>\n<default name=\"spp\" value=\"4\"/>\n"
+      "<integrator type=\"path\"><integer name=\"max_depth\" value=\"$depth\"/></integrator>\n</scene>\n";
   ParsedScene scene = load(xml, {{"depth", "5"}, {"sp", "4"}, {"spp", "8"}});
   // `spp` overrides a <default> that no value uses: it has no effect either.
   EXPECT_EQ(scene.unusedDefines, (std::vector<std::string>{"sp", "spp"}));
 }
 
 TEST(HostileScenes, VariableNamesAreChecked) {
-  EXPECT_NE(loadError("<scene version=\"3.0.0\">\n<default name=\"a-b\" value=\"3\"/>\n</scene>\n").find("hostile.xml:2"),
-            std::string::npos);
+  EXPECT_NE(
+      loadError("<scene version=\"3.0.0\">\n<default name=\"a-b\" value=\"3\"/>\n</scene>\n").find("hostile.xml:2"),
+      std::string::npos);
   EXPECT_THROW(load("<scene version=\"3.0.0\"/>", {{"a b", "1"}}), std::runtime_error);
 }
 
 TEST(HostileScenes, NumbersBeyondFloatRangeAreRejected) {
-  for (std::string element : {"<point name=\"position\" value=\"1e39, 0, 0\"/>", "<point name=\"position\" x=\"-1e39\"/>"}) {
-    std::string message = loadError("<scene version=\"3.0.0\">\n<emitter type=\"point\">\n" + element +
-                                    "\n</emitter>\n</scene>\n");
+  for (std::string element :
+       {"<point name=\"position\" value=\"1e39, 0, 0\"/>", "<point name=\"position\" x=\"-1e39\"/>"}) {
+    std::string message =
+        loadError("<scene version=\"3.0.0\">\n<emitter type=\"point\">\n" + element + "\n</emitter>\n</scene>\n");
     EXPECT_NE(message.find("hostile.xml:3"), std::string::npos) << message;
     EXPECT_NE(message.find("out of the range of a float"), std::string::npos) << message;
   }
-  std::string message = loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n"
-                                  "<spectrum name=\"radiance\" value=\"400:1, 500:4e38\"/>\n</emitter>\n</scene>\n");
+  std::string message = loadError(
+      "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n"
+      "<spectrum name=\"radiance\" value=\"400:1, 500:4e38\"/>\n</emitter>\n</scene>\n");
   EXPECT_NE(message.find("'4e38'"), std::string::npos) << message;
-  message = loadError("<scene version=\"3.0.0\">\n<shape type=\"sphere\">\n<transform name=\"to_world\">\n"
-                      "<scale value=\"1e300\"/></transform>\n</shape>\n</scene>\n");
+  message = loadError(
+      "<scene version=\"3.0.0\">\n<shape type=\"sphere\">\n<transform name=\"to_world\">\n"
+      "<scale value=\"1e300\"/></transform>\n</shape>\n</scene>\n");
   EXPECT_NE(message.find("hostile.xml:4"), std::string::npos) << message;
 }
 
@@ -121,8 +129,10 @@ TEST_F(HostileSceneFiles, SpectrumFilesMustBeRegularFiles) {
   std::string fifo = (dir_ / "pipe.spd").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   for (std::string file : {std::string("/dev/zero"), fifo, (dir_ / "nowhere.spd").string(), dir_.string()}) {
-    std::string message = loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
-                                    "filename=\"" + file + "\"/>\n</emitter>\n</scene>\n");
+    std::string message = loadError(
+        "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
+        "filename=\"" +
+        file + "\"/>\n</emitter>\n</scene>\n");
     EXPECT_NE(message.find("hostile.xml:3"), std::string::npos) << message;
     EXPECT_NE(message.find("not a regular file"), std::string::npos) << message;
     EXPECT_NE(message.find(file), std::string::npos) << message;
@@ -165,8 +175,10 @@ TEST(HostileScenes, NegativeEmissionIsRejected) {
 
 TEST_F(HostileSceneFiles, NegativeEmissionFromAFileIsRejected) {
   std::string file = write("light.spd", "400 1\n500 -2\n");
-  std::string message = loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
-                                  "filename=\"" + file + "\"/>\n</emitter>\n</scene>\n");
+  std::string message = loadError(
+      "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
+      "filename=\"" +
+      file + "\"/>\n</emitter>\n</scene>\n");
   EXPECT_NE(message.find("hostile.xml:3"), std::string::npos) << message;
   EXPECT_NE(message.find("lowest value is -2"), std::string::npos) << message;
 }

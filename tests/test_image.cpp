@@ -2,8 +2,8 @@
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <png.h>
@@ -260,7 +260,9 @@ std::map<std::string, std::string> pngTexts(const std::string& path) {
     png_read_info(png, info);
     png_textp chunks = nullptr;
     int count = png_get_text(png, info, &chunks, nullptr);
-    for (int i = 0; i < count; ++i) texts[chunks[i].key] = std::string(chunks[i].text, chunks[i].text_length ? chunks[i].text_length : chunks[i].itxt_length);
+    for (int i = 0; i < count; ++i)
+      texts[chunks[i].key] =
+          std::string(chunks[i].text, chunks[i].text_length ? chunks[i].text_length : chunks[i].itxt_length);
   }
   png_destroy_read_struct(&png, &info, nullptr);
   std::fclose(in);

@@ -10,11 +10,15 @@ namespace {
 // so the visible patch is tiny and the lighting over it is uniform to 1e-4.
 std::string cameraLookingDown(float height, int res, int spp, const std::string& sampler = "independent") {
   return R"(<sensor type="perspective"><float name="fov" value="1"/>
-      <transform name="to_world"><lookat origin="0, 0, )" + std::to_string(height) +
+      <transform name="to_world"><lookat origin="0, 0, )" +
+         std::to_string(height) +
          R"(" target="0, 0, 0" up="0, 1, 0"/></transform>
-      <film type="hdrfilm"><integer name="width" value=")" + std::to_string(res) + R"("/>
-        <integer name="height" value=")" + std::to_string(res) + R"("/><rfilter type="box"/></film>
-      <sampler type=")" + sampler + R"("><integer name="sample_count" value=")" + std::to_string(spp) + R"("/></sampler>
+      <film type="hdrfilm"><integer name="width" value=")" +
+         std::to_string(res) + R"("/>
+        <integer name="height" value=")" +
+         std::to_string(res) + R"("/><rfilter type="box"/></film>
+      <sampler type=")" +
+         sampler + R"("><integer name="sample_count" value=")" + std::to_string(spp) + R"("/></sampler>
     </sensor>)";
 }
 
@@ -64,8 +68,9 @@ TEST(Integrator, DiffusePlaneUnderADirectionalLightMatchesTheClosedForm) {
   std::string xml = R"(<scene version="3.0.0"><integrator type="path"/>)" + cameraLookingDown(5.0f, 8, 64) + R"(
       <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
         <bsdf type="diffuse"><float name="reflectance" value="0.5"/></bsdf></shape>
-      <emitter type="directional"><vector name="direction" x=")" + std::to_string(std::sin(degToRad(60.0f))) +
-                    R"(" y="0" z=")" + std::to_string(-cosTheta) + R"("/><spectrum name="irradiance" value="3"/></emitter>
+      <emitter type="directional"><vector name="direction" x=")" +
+                    std::to_string(std::sin(degToRad(60.0f))) + R"(" y="0" z=")" + std::to_string(-cosTheta) +
+                    R"("/><spectrum name="irradiance" value="3"/></emitter>
       </scene>)";
   expectGrey(meanColour(renderSceneString(xml), 0, 0, 8, 8), rho / kPi * irradiance * cosTheta, 0.01f);
 }
@@ -74,8 +79,10 @@ TEST(Integrator, AreaLightSeenThroughMISMatchesEitherStrategyAlone) {
   // The direct integrator with only emitter sampling, only BSDF sampling and both must agree.
   auto render = [](int emitterSamples, int bsdfSamples) {
     std::string xml = R"(<scene version="3.0.0"><integrator type="direct">
-        <integer name="emitter_samples" value=")" + std::to_string(emitterSamples) + R"("/>
-        <integer name="bsdf_samples" value=")" + std::to_string(bsdfSamples) + R"("/></integrator>)" +
+        <integer name="emitter_samples" value=")" +
+                      std::to_string(emitterSamples) + R"("/>
+        <integer name="bsdf_samples" value=")" +
+                      std::to_string(bsdfSamples) + R"("/></integrator>)" +
                       cameraLookingDown(5.0f, 8, 1024, "ldsampler") + R"(
       <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
         <bsdf type="diffuse"><float name="reflectance" value="0.5"/></bsdf></shape>

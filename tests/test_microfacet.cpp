@@ -17,7 +17,8 @@ const MicrofacetType kTypes[] = {MicrofacetType::Beckmann, MicrofacetType::GGX};
 const char* name(MicrofacetType t) { return t == MicrofacetType::GGX ? "ggx" : "beckmann"; }
 
 // Midpoint rule over the upper hemisphere in (theta, phi), fine enough for alpha >= 0.1.
-template <typename F> double integrateHemisphere(F f) {
+template <typename F>
+double integrateHemisphere(F f) {
   constexpr int kTheta = 2000, kPhi = 128;
   const double dTheta = 0.5 * M_PI / kTheta, dPhi = 2.0 * M_PI / kPhi;
   double sum = 0.0;
@@ -66,7 +67,7 @@ TEST(Microfacet, MaskingIsAFractionAndZeroForBackfacingNormals) {
   }
   EXPECT_GT(d.G1(directionAt(10.0f), m), d.G1(directionAt(80.0f, 180.0f), m));
   EXPECT_EQ(d.G1(directionAt(88.0f, 180.0f), m), 0.0f);  // sees the facet from behind
-  EXPECT_EQ(d.G1(Vec3(0.995f, 0.0f, -0.1f), m), 0.0f);  // from below, facing the facet's front
+  EXPECT_EQ(d.G1(Vec3(0.995f, 0.0f, -0.1f), m), 0.0f);   // from below, facing the facet's front
 }
 
 TEST(Microfacet, VisibleNormalSamplingMatchesPdf) {
@@ -88,7 +89,8 @@ TEST(Microfacet, VisibleNormalSamplingMatchesPdf) {
             },
             [&](const Vec3& m) { return double(d.visiblePdf(wi, m)); }, 100000, grid.thetaBins, grid.phiBins,
             grid.quadrature, seed++);
-        std::cout << name(type) << " alpha " << r.x << "," << r.y << " theta " << theta << ": " << result.message << "\n";
+        std::cout << name(type) << " alpha " << r.x << "," << r.y << " theta " << theta << ": " << result.message
+                  << "\n";
         EXPECT_GT(result.pValue, threshold) << name(type) << " alpha " << r.x << "," << r.y << " theta " << theta;
         minP = std::min(minP, result.pValue);
       }

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "temp_dir_test.h"
 #include <unistd.h>
+#include "temp_dir_test.h"
 
 #include <filesystem>
 #include <fstream>
@@ -32,7 +32,8 @@ const char* const kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 }  // namespace
 
 TEST_F(ObjMeshTest, ReadsPositionsNormalsAndTextureCoordinates) {
-  MeshData mesh = readObjMesh(write(std::string(kTriangle) + "vn 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n"));
+  MeshData mesh =
+      readObjMesh(write(std::string(kTriangle) + "vn 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n"));
   ASSERT_EQ(mesh.indices.size(), 3u);
   EXPECT_EQ(mesh.positions.size(), 3u);
   EXPECT_EQ(mesh.normals.size(), 3u);
@@ -80,6 +81,4 @@ TEST_F(ObjMeshTest, NonFiniteOrMalformedNumbersAreRejected) {
   EXPECT_NE(readError(std::string(kTriangle) + "vn 0 nan 1\nf 1//1 2//1 3//1\n").find("mesh.obj:4"), std::string::npos);
 }
 
-TEST_F(ObjMeshTest, AFileWithoutFacesIsAnError) {
-  EXPECT_NE(readError(kTriangle).find("no faces"), std::string::npos);
-}
+TEST_F(ObjMeshTest, AFileWithoutFacesIsAnError) { EXPECT_NE(readError(kTriangle).find("no faces"), std::string::npos); }

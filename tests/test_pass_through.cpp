@@ -18,7 +18,8 @@ std::string sheetOverFloor(const std::string& integrator, const std::string& lig
   Vec3 eye = viewDirection() * 5.0f;
   return R"(<scene version="3.0.0"><integrator type=")" + integrator + R"("/>
     <sensor type="perspective"><float name="fov" value="1"/>
-      <transform name="to_world"><lookat origin=")" + std::to_string(eye.x) + ", 0, " + std::to_string(eye.z) +
+      <transform name="to_world"><lookat origin=")" +
+         std::to_string(eye.x) + ", 0, " + std::to_string(eye.z) +
          R"(" target="0, 0, 0" up="0, 0, 1"/></transform>
       <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
       <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
@@ -60,7 +61,8 @@ TEST(PassThrough, ShadowRaysCrossBarbuleGapsWithTheirTransmission) {
       // Single scattering off the floor; the path integrator adds floor-sheet interreflection,
       // which is small here (the sheet reflects a few percent), so it gets a looser bound.
       float expected = 0.5f / kPi * 2.0f * cosTheta * tLight * tView;
-      SCOPED_TRACE(::testing::Message() << integrator << " theta " << thetaDeg << " tLight " << tLight << " tView " << tView);
+      SCOPED_TRACE(::testing::Message() << integrator << " theta " << thetaDeg << " tLight " << tLight << " tView "
+                                        << tView);
       EXPECT_NEAR(floorSeen, expected, (std::string(integrator) == "direct" ? 0.02f : 0.06f) * expected);
     }
   }
@@ -74,7 +76,8 @@ TEST(PassThrough, CameraSeesTheEnvironmentThroughTheGaps) {
   Vec3 eye = viewDirection() * 5.0f;
   std::string xml = R"(<scene version="3.0.0"><integrator type="path"/>
     <sensor type="perspective"><float name="fov" value="1"/>
-      <transform name="to_world"><lookat origin=")" + std::to_string(eye.x) + ", 0, " + std::to_string(eye.z) +
+      <transform name="to_world"><lookat origin=")" +
+                    std::to_string(eye.x) + ", 0, " + std::to_string(eye.z) +
                     R"(" target="0, 0, 0" up="0, 0, 1"/></transform>
       <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/><rfilter type="box"/></film>
       <sampler type="ldsampler"><integer name="sample_count" value="512"/></sampler></sensor>

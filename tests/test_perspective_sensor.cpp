@@ -39,9 +39,9 @@ TEST(PerspectiveSensor, DefaultFieldOfViewIsAFiftyMillimetreLensOnTheDiagonal) {
 
 TEST(PerspectiveSensor, FocalLengthAsMitsubaWritesIt) {
   const double tanHalfDiagonal35 = std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / 2.0 / 35.0;
-  for (const char* given : {"<string name=\"focal_length\" value=\"35mm\"/>",
-                            "<string name=\"focal_length\" value=\"35\"/>",
-                            "<float name=\"focal_length\" value=\"35\"/>"})
+  for (const char* given :
+       {"<string name=\"focal_length\" value=\"35mm\"/>", "<string name=\"focal_length\" value=\"35\"/>",
+        "<float name=\"focal_length\" value=\"35\"/>"})
     EXPECT_NEAR(sensorWith(given)->tanHalfFovX(), tanHalfDiagonal35 * 0.8, 1e-6) << given;
   EXPECT_THROW(sensorWith("<string name=\"focal_length\" value=\"35 mm wide\"/>"), InputError);
   EXPECT_THROW(sensorWith("<float name=\"focal_length\" value=\"-5\"/>"), InputError);

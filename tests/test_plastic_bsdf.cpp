@@ -15,7 +15,8 @@ const float kAngles[] = {0.0f, 30.0f, 60.0f, 85.0f};
 const float kEta = 1.49f;
 
 PlasticBSDF plastic(float diffuse, float specular = 1.0f, bool nonlinear = false) {
-  return PlasticBSDF(kEta, SpectralDistribution::constant(diffuse), SpectralDistribution::constant(specular), nonlinear);
+  return PlasticBSDF(kEta, SpectralDistribution::constant(diffuse), SpectralDistribution::constant(specular),
+                     nonlinear);
 }
 
 }  // namespace
@@ -67,8 +68,8 @@ TEST(Plastic, AlbedoIsReflectedPlusTransmittedDiffuse) {
         float base = nonlinear ? kd * (1.0f - ri) / (1.0f - kd * ri) : kd;
         float expected = fresnel + (1.0f - fresnel) * base;
         float albedo = sampledAlbedo(plastic(kd, 1.0f, nonlinear), directionAt(theta), 100000)[0];
-        std::cout << "plastic kd " << kd << (nonlinear ? " nonlinear" : "") << " theta " << theta << ": albedo " << albedo
-                  << " (expected " << expected << ")\n";
+        std::cout << "plastic kd " << kd << (nonlinear ? " nonlinear" : "") << " theta " << theta << ": albedo "
+                  << albedo << " (expected " << expected << ")\n";
         EXPECT_NEAR(albedo, expected, 0.01f);
         EXPECT_LE(albedo, 1.005f);
       }
@@ -88,7 +89,8 @@ TEST(Plastic, FactoryReadsMitsubaDefaults) {
   auto bsdf = std::dynamic_pointer_cast<BSDF>(makePlasticBSDF(defaults));
   ASSERT_TRUE(bsdf);
   // polypropylene (1.49) in air, diffuse 0.5, specular 1, linear.
-  PlasticBSDF reference(1.49f / 1.000277f, SpectralDistribution::constant(0.5f), SpectralDistribution::constant(1.0f), false);
+  PlasticBSDF reference(1.49f / 1.000277f, SpectralDistribution::constant(0.5f), SpectralDistribution::constant(1.0f),
+                        false);
   EXPECT_NEAR(bsdf->eval({}, wi, wo, wl)[0], reference.eval({}, wi, wo, wl)[0], 1e-6f);
 
   Properties props;

@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "shapes/ply_file.h"
 
@@ -17,7 +17,8 @@ namespace {
 const char* const kHeaderBody =
     "element a 2\nproperty char i8\nproperty uchar u8\nproperty short i16\nproperty ushort u16\n"
     "property int i32\nproperty uint u32\nproperty float f32\nproperty double f64\n"
-    "property list uchar int items\nelement empty 0\nproperty float unused\nelement b 1\nproperty float w\nend_header\n";
+    "property list uchar int items\nelement empty 0\nproperty float unused\nelement b 1\nproperty float "
+    "w\nend_header\n";
 
 class PlyFileTest : public ::testing::Test {
  protected:
@@ -42,11 +43,26 @@ class PlyFileTest : public ::testing::Test {
     std::ostringstream s;
     s << "ply\nformat binary_little_endian 1.0\n" << kHeaderBody;
     auto put = [&](const auto& value) { s.write(reinterpret_cast<const char*>(&value), sizeof(value)); };
-    put(int8_t(-128)); put(uint8_t(255)); put(int16_t(-32768)); put(uint16_t(65535));
-    put(int32_t(-2147483647 - 1)); put(uint32_t(4294967295u)); put(0.5f); put(1e-300);
-    put(uint8_t(3)); put(int32_t(7)); put(int32_t(-8)); put(int32_t(9));
-    put(int8_t(1)); put(uint8_t(2)); put(int16_t(3)); put(uint16_t(4));
-    put(int32_t(5)); put(uint32_t(6)); put(7.0f); put(8.0);
+    put(int8_t(-128));
+    put(uint8_t(255));
+    put(int16_t(-32768));
+    put(uint16_t(65535));
+    put(int32_t(-2147483647 - 1));
+    put(uint32_t(4294967295u));
+    put(0.5f);
+    put(1e-300);
+    put(uint8_t(3));
+    put(int32_t(7));
+    put(int32_t(-8));
+    put(int32_t(9));
+    put(int8_t(1));
+    put(uint8_t(2));
+    put(int16_t(3));
+    put(uint16_t(4));
+    put(int32_t(5));
+    put(uint32_t(6));
+    put(7.0f);
+    put(8.0);
     put(uint8_t(0));
     put(2.25f);
     return s.str();
@@ -139,7 +155,8 @@ TEST_F(PlyFileTest, ReportsDataAfterTheLastRecord) {
 
 TEST_F(PlyFileTest, CountsTheFileCannotHoldAreRejectedBeforeReading) {
   // A few bytes of data under a header that declares a billion records of 12 bytes.
-  const std::string header = "element vertex 1000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  const std::string header =
+      "element vertex 1000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
   for (const char* format : {"ascii", "binary_little_endian"}) {
     SCOPED_TRACE(format);
     std::string f = write("huge.ply", std::string("ply\nformat ") + format + " 1.0\n" + header + std::string(28, '1'));
@@ -154,16 +171,20 @@ TEST_F(PlyFileTest, CountsTheFileCannotHoldAreRejectedBeforeReading) {
     }
   }
   // Exactly enough data passes: three binary floats, and an ASCII record without a line break.
-  EXPECT_NO_THROW(PlyReader(write("one.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
-                                             "property float y\nproperty float z\nend_header\n" + std::string(12, '\0')),
+  EXPECT_NO_THROW(PlyReader(write("one.ply",
+                                  "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+                                  "property float y\nproperty float z\nend_header\n" +
+                                      std::string(12, '\0')),
                             "PLY file"));
-  EXPECT_NO_THROW(PlyReader(write("one.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
-                                             "property float y\nproperty float z\nend_header\n1 2 3"),
+  EXPECT_NO_THROW(PlyReader(write("one.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                  "property float y\nproperty float z\nend_header\n1 2 3"),
                             "PLY file"));
 }
 
 TEST_F(PlyFileTest, BinaryRecordsWithoutPropertiesAreRejected) {
   // They would take no bytes, so no file size bounds how many there are.
-  std::string f = write("empty.ply", "ply\nformat binary_little_endian 1.0\nelement nothing 1000000000000000000\nend_header\n");
+  std::string f =
+      write("empty.ply", "ply\nformat binary_little_endian 1.0\nelement nothing 1000000000000000000\nend_header\n");
   EXPECT_THROW(PlyReader(f, "PLY file"), InputError);
 }

@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "builtin/builtin_plugins.h"
 #include "scene/scene_loader.h"
@@ -19,9 +19,9 @@ namespace {
 struct Vertex {
   float x, y, z, nx, ny, nz, u, v;
 };
-const Vertex kVertices[] = {{0, 0, 0, 0.6f, 0, 0.8f, 0, 0},   {1, 0, 0, 0.6f, 0, 0.8f, 1, 0},
-                            {1, 1, 0, 0.6f, 0, 0.8f, 1, 1},   {0, 1, 0, 0.6f, 0, 0.8f, 0, 1},
-                            {0, 0, 1, 0, 0, 1, 0, 0},         {1, 0, 1, 0, 0, 1, 0, 0},
+const Vertex kVertices[] = {{0, 0, 0, 0.6f, 0, 0.8f, 0, 0}, {1, 0, 0, 0.6f, 0, 0.8f, 1, 0},
+                            {1, 1, 0, 0.6f, 0, 0.8f, 1, 1}, {0, 1, 0, 0.6f, 0, 0.8f, 0, 1},
+                            {0, 0, 1, 0, 0, 1, 0, 0},       {1, 0, 1, 0, 0, 1, 0, 0},
                             {0, 1, 1, 0, 0, 1, 0, 0}};
 const std::vector<std::vector<int>> kFaces = {{0, 1, 2, 3}, {4, 5, 6}};
 constexpr float kArea = 1.5f;
@@ -51,7 +51,8 @@ class PlyMeshTest : public ::testing::Test {
       << "property float nz\nproperty float u\nproperty float v\nelement face " << kFaces.size() << "\n"
       << "property list uchar int vertex_indices\nend_header\n";
     for (const Vertex& v : kVertices)
-      s << v.x << " " << v.y << " " << v.z << " " << v.nx << " " << v.ny << " " << v.nz << " " << v.u << " " << v.v << "\n";
+      s << v.x << " " << v.y << " " << v.z << " " << v.nx << " " << v.ny << " " << v.nz << " " << v.u << " " << v.v
+        << "\n";
     for (const auto& f : kFaces) {
       s << f.size();
       for (int i : f) s << " " << i;
@@ -72,8 +73,15 @@ class PlyMeshTest : public ::testing::Test {
     auto put = [&](const auto& value) { s.write(reinterpret_cast<const char*>(&value), sizeof(value)); };
     for (size_t i = 0; i < std::size(kVertices); ++i) {
       const Vertex& v = kVertices[i];
-      put(double(v.x)); put(i == 1 && badY != 0.0 ? badY : double(v.y)); put(double(v.z)); put(uint8_t(9));
-      put(v.nx); put(v.ny); put(v.nz); put(v.u); put(v.v);
+      put(double(v.x));
+      put(i == 1 && badY != 0.0 ? badY : double(v.y));
+      put(double(v.z));
+      put(uint8_t(9));
+      put(v.nx);
+      put(v.ny);
+      put(v.nz);
+      put(v.u);
+      put(v.v);
     }
     for (const auto& f : kFaces) {
       put(uint16_t(f.size()));
@@ -136,10 +144,11 @@ TEST_F(PlyMeshTest, BinaryWithOtherTypesAndNamesMatchesAscii) {
 }
 
 TEST_F(PlyMeshTest, NormalsAndTextureCoordinatesAreOptional) {
-  std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                     "property float nx\nproperty float texture_u\nproperty float texture_v\nelement face 1\n"
-                     "property list uchar uint vertex_indices\nend_header\n"
-                     "0 0 0 1 0.25 0.5\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n";
+  std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float nx\nproperty float texture_u\nproperty float texture_v\nelement face 1\n"
+      "property list uchar uint vertex_indices\nend_header\n"
+      "0 0 0 1 0.25 0.5\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n";
   MeshData m = readPlyMesh(write("partial.ply", text));
   EXPECT_TRUE(m.normals.empty());  // nx alone is not a normal
   ASSERT_EQ(m.uvs.size(), 3u);
@@ -149,8 +158,9 @@ TEST_F(PlyMeshTest, NormalsAndTextureCoordinatesAreOptional) {
 
 TEST_F(PlyMeshTest, LoadsThroughASceneWithAreaAndNormals) {
   write("mesh.ply", ascii());
-  ParsedScene parsed = loadScene("  <transform name='to_world'><scale value='2'/></transform>\n"
-                                 "  <bsdf type='diffuse'/>\n");
+  ParsedScene parsed = loadScene(
+      "  <transform name='to_world'><scale value='2'/></transform>\n"
+      "  <bsdf type='diffuse'/>\n");
   ASSERT_EQ(parsed.objects.size(), 1u);
   auto mesh = std::dynamic_pointer_cast<TriangleMesh>(parsed.objects[0]);
   ASSERT_TRUE(mesh);
@@ -183,7 +193,8 @@ TEST_F(PlyMeshTest, SceneErrorsNameThePlyFile) {
     loadScene("");
     FAIL() << "an index out of range was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(f + ":" + std::to_string(kFirstVertexLine + 7)), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(f + ":" + std::to_string(kFirstVertexLine + 7)), std::string::npos)
+        << e.what();
   }
 }
 

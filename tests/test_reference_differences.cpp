@@ -72,9 +72,10 @@ TEST(ReferenceDifferences, ReferenceDividesTheRLobeByHOnceMore) {
     double columba = imageLuminance(bsdf, c.toWorld, c.light, 1.0f);
     double reference = imageLuminance(bsdf, c.toWorld, c.light, 1.0f / p.H);
     double ratio = columba / reference;
-    std::printf("%s: image luminance with Columba's R lobe / with R divided by H = %.2f once more: %.3f "
-                "(seen between the renderers: %.2f)\n",
-                c.name, p.H, ratio, c.measured);
+    std::printf(
+        "%s: image luminance with Columba's R lobe / with R divided by H = %.2f once more: %.3f "
+        "(seen between the renderers: %.2f)\n",
+        c.name, p.H, ratio, c.measured);
     // The defect alone accounts for the measured ratio to within 0.05.
     EXPECT_NEAR(ratio, c.measured, 0.05) << c.name;
     EXPECT_GT(ratio, 1.0);

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "feather/feather_generator.h"
 #include "builtin/builtin_plugins.h"
+#include "feather/feather_generator.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -22,10 +22,9 @@ std::string referenceScenesMissing() {
   return "the reference scene files are not available (looked in " + kReferenceScenes.string() + ")";
 }
 
-#define SKIP_WITHOUT_REFERENCE_SCENES()                                 \
-  do {                                                                  \
-    if (std::string reason = referenceScenesMissing(); !reason.empty()) \
-      GTEST_SKIP() << reason;                                           \
+#define SKIP_WITHOUT_REFERENCE_SCENES()                                                         \
+  do {                                                                                          \
+    if (std::string reason = referenceScenesMissing(); !reason.empty()) GTEST_SKIP() << reason; \
   } while (false)
 
 Image renderFile(const fs::path& path, const Defines& defines, int spp) {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "integrators/integrator.h"
 #include "builtin/builtin_plugins.h"
+#include "integrators/integrator.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -36,8 +36,7 @@ class TestIntegrator : public Integrator {
 
 struct TestScene {
   explicit TestScene(int width) {
-    ParsedScene parsed = loadSceneString(kCamera, "<test>", ".", {{"width", std::to_string(width)}},
-                                         builtinPlugins());
+    ParsedScene parsed = loadSceneString(kCamera, "<test>", ".", {{"width", std::to_string(width)}}, builtinPlugins());
     integrator = std::make_shared<TestIntegrator>();
     parsed.objects.push_back(integrator);
     scene = std::make_unique<Scene>(parsed, SourceLocation{"<test>", 0});

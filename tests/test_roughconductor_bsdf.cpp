@@ -22,7 +22,8 @@ RoughConductorBSDF::ComplexIOR copperLike() {
 }
 
 RoughConductorBSDF mirror(MicrofacetType type, float alphaX, float alphaY) {
-  return RoughConductorBSDF(MicrofacetDistribution(type, alphaX, alphaY), std::nullopt, SpectralDistribution::constant(1.0f));
+  return RoughConductorBSDF(MicrofacetDistribution(type, alphaX, alphaY), std::nullopt,
+                            SpectralDistribution::constant(1.0f));
 }
 
 }  // namespace
@@ -43,21 +44,26 @@ TEST(RoughConductor, SamplingMatchesPdf) {
   uint64_t seed = 1;
   for (const Case& c : cases) {
     RoughConductorBSDF bsdf = mirror(c.type, c.alphaX, c.alphaY);
-    auto result = chiSquareBSDF(bsdf, directionAt(c.theta, 40.0f), chiSquareGrid(std::min(c.alphaX, c.alphaY)), 200000, seed++);
+    auto result =
+        chiSquareBSDF(bsdf, directionAt(c.theta, 40.0f), chiSquareGrid(std::min(c.alphaX, c.alphaY)), 200000, seed++);
     std::cout << "roughconductor " << name(c.type) << " alpha " << c.alphaX << "/" << c.alphaY << " theta " << c.theta
               << ": " << result.message << "\n";
-    EXPECT_GT(result.pValue, threshold) << name(c.type) << " alpha " << c.alphaX << "/" << c.alphaY << " theta " << c.theta;
+    EXPECT_GT(result.pValue, threshold) << name(c.type) << " alpha " << c.alphaX << "/" << c.alphaY << " theta "
+                                        << c.theta;
     minP = std::min(minP, result.pValue);
   }
-  std::cout << "roughconductor: min p = " << minP << " over " << cases.size() << " tests (threshold " << threshold << ")\n";
+  std::cout << "roughconductor: min p = " << minP << " over " << cases.size() << " tests (threshold " << threshold
+            << ")\n";
 }
 
 TEST(RoughConductor, WeightIsEvalOverPdf) {
   for (MicrofacetType type : kTypes)
     for (float alpha : kAlphas) {
-      RoughConductorBSDF bsdf(MicrofacetDistribution(type, alpha, alpha * 0.5f), copperLike(), SpectralDistribution::constant(0.9f));
+      RoughConductorBSDF bsdf(MicrofacetDistribution(type, alpha, alpha * 0.5f), copperLike(),
+                              SpectralDistribution::constant(0.9f));
       for (float theta : kAngles)
-        EXPECT_LT(maxWeightError(bsdf, directionAt(theta, 15.0f)), 2e-3) << name(type) << " alpha " << alpha << " theta " << theta;
+        EXPECT_LT(maxWeightError(bsdf, directionAt(theta, 15.0f)), 2e-3)
+            << name(type) << " alpha " << alpha << " theta " << theta;
     }
 }
 
@@ -69,7 +75,8 @@ TEST(RoughConductor, PerfectMirrorConservesEnergy) {
       float previous = 1.0f;
       for (float alpha : {0.01f, 0.1f, 0.3f, 0.7f}) {
         float albedo = sampledAlbedo(mirror(type, alpha, alpha), directionAt(theta), 100000)[0];
-        std::cout << "roughconductor " << name(type) << " alpha " << alpha << " theta " << theta << ": albedo " << albedo << "\n";
+        std::cout << "roughconductor " << name(type) << " alpha " << alpha << " theta " << theta << ": albedo "
+                  << albedo << "\n";
         EXPECT_LE(albedo, 1.0f);
         if (theta <= 60.0f) {
           EXPECT_LE(albedo, previous + 0.005f);
@@ -86,7 +93,8 @@ TEST(RoughConductor, IntegratedEvalMatchesSampledAlbedo) {
   // The integral of eval, estimated without the BSDF's sampler, equals the mean sample weight.
   for (MicrofacetType type : kTypes)
     for (float theta : {0.0f, 60.0f}) {
-      RoughConductorBSDF bsdf(MicrofacetDistribution(type, 0.5f, 0.5f), copperLike(), SpectralDistribution::constant(1.0f));
+      RoughConductorBSDF bsdf(MicrofacetDistribution(type, 0.5f, 0.5f), copperLike(),
+                              SpectralDistribution::constant(1.0f));
       Spectrum integrated = integratedAlbedo(bsdf, directionAt(theta), 400000);
       Spectrum sampled = sampledAlbedo(bsdf, directionAt(theta), 100000);
       for (int i = 0; i < kSpectrumSamples; ++i)
@@ -146,9 +154,10 @@ TEST(RoughConductor, FactoryReadsMitsubaParameters) {
   setBool(props, "sample_visible", true);
   auto metal = std::dynamic_pointer_cast<BSDF>(makeRoughConductorBSDF(props));
   EXPECT_NO_THROW(props.checkAllUsed());
-  RoughConductorBSDF reference(MicrofacetDistribution(MicrofacetType::GGX, 0.2f, 0.3f),
-                               RoughConductorBSDF::ComplexIOR{SpectralDistribution::constant(0.2f), SpectralDistribution::constant(3.0f)},
-                               SpectralDistribution::constant(1.0f));
+  RoughConductorBSDF reference(
+      MicrofacetDistribution(MicrofacetType::GGX, 0.2f, 0.3f),
+      RoughConductorBSDF::ComplexIOR{SpectralDistribution::constant(0.2f), SpectralDistribution::constant(3.0f)},
+      SpectralDistribution::constant(1.0f));
   EXPECT_NEAR(metal->eval({}, wi, wo, wl)[1], reference.eval({}, wi, wo, wl)[1], 1e-5f);
 }
 
@@ -160,9 +169,17 @@ TEST(RoughConductor, FactoryRejectsBadParameters) {
   };
   EXPECT_THROW(build([](Properties& p) { setString(p, "distribution", "phong"); }), InputError);
   EXPECT_THROW(build([](Properties& p) { setString(p, "material", "Au"); }), InputError);
-  EXPECT_THROW(build([](Properties& p) { setString(p, "material", "Au"); setFloat(p, "eta", 0.2f); }), InputError);
+  EXPECT_THROW(build([](Properties& p) {
+                 setString(p, "material", "Au");
+                 setFloat(p, "eta", 0.2f);
+               }),
+               InputError);
   EXPECT_THROW(build([](Properties& p) { setFloat(p, "alpha_u", 0.2f); }), InputError);
-  EXPECT_THROW(build([](Properties& p) { setFloat(p, "alpha", 0.2f); setFloat(p, "alpha_u", 0.2f); setFloat(p, "alpha_v", 0.1f); }),
+  EXPECT_THROW(build([](Properties& p) {
+                 setFloat(p, "alpha", 0.2f);
+                 setFloat(p, "alpha_u", 0.2f);
+                 setFloat(p, "alpha_v", 0.1f);
+               }),
                InputError);
   EXPECT_THROW(build([](Properties& p) { setFloat(p, "alpha", -0.1f); }), InputError);
 }

@@ -34,7 +34,8 @@ TEST(RoughPlastic, SamplingMatchesPdf) {
       RoughPlasticBSDF bsdf = roughPlastic(type, alpha, SpectralDistribution::constant(0.5f));
       for (float theta : kAngles) {
         auto result = chiSquareBSDF(bsdf, directionAt(theta, 40.0f), chiSquareGrid(alpha), 200000, seed++);
-        std::cout << "roughplastic " << name(type) << " alpha " << alpha << " theta " << theta << ": " << result.message << "\n";
+        std::cout << "roughplastic " << name(type) << " alpha " << alpha << " theta " << theta << ": " << result.message
+                  << "\n";
         EXPECT_GT(result.pValue, threshold) << name(type) << " alpha " << alpha << " theta " << theta;
         minP = std::min(minP, result.pValue);
       }
@@ -44,7 +45,8 @@ TEST(RoughPlastic, SamplingMatchesPdf) {
 
 TEST(RoughPlastic, WeightIsEvalOverPdf) {
   for (MicrofacetType type : kTypes) {
-    RoughPlasticBSDF bsdf = roughPlastic(type, 0.2f, SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.1f, 0.8f}), 0.9f);
+    RoughPlasticBSDF bsdf =
+        roughPlastic(type, 0.2f, SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.1f, 0.8f}), 0.9f);
     for (float theta : kAngles)
       EXPECT_LT(maxWeightError(bsdf, directionAt(theta)), 1e-4) << name(type) << " theta " << theta;
   }
@@ -59,7 +61,8 @@ TEST(RoughPlastic, AlbedoIsAtMostOne) {
       for (float alpha : {0.05f, 0.1f, 0.3f, 0.7f}) {
         RoughPlasticBSDF bsdf = roughPlastic(type, alpha, SpectralDistribution::constant(1.0f));
         float albedo = sampledAlbedo(bsdf, directionAt(theta), 40000)[0];
-        std::cout << "roughplastic " << name(type) << " alpha " << alpha << " theta " << theta << ": albedo " << albedo << "\n";
+        std::cout << "roughplastic " << name(type) << " alpha " << alpha << " theta " << theta << ": albedo " << albedo
+                  << "\n";
         EXPECT_LE(albedo, 1.005f) << name(type) << " alpha " << alpha << " theta " << theta;
         EXPECT_LE(albedo, previous + 0.005f) << name(type) << " alpha " << alpha << " theta " << theta;
         previous = albedo;
@@ -71,7 +74,8 @@ TEST(RoughPlastic, NonlinearBaseTintsEveryInternalBounce) {
   // Kd / (1 - Kd Ri) < Kd / (1 - Ri) for a coloured base; the same for a white one.
   for (float kd : {0.5f, 1.0f}) {
     RoughPlasticBSDF linear = roughPlastic(MicrofacetType::GGX, 0.2f, SpectralDistribution::constant(kd), 1.0f, false);
-    RoughPlasticBSDF nonlinear = roughPlastic(MicrofacetType::GGX, 0.2f, SpectralDistribution::constant(kd), 1.0f, true);
+    RoughPlasticBSDF nonlinear =
+        roughPlastic(MicrofacetType::GGX, 0.2f, SpectralDistribution::constant(kd), 1.0f, true);
     const Wavelengths wl = testWavelengths();
     Vec3 wi = directionAt(20.0f), wo = directionAt(70.0f, 90.0f);
     float a = linear.eval({}, wi, wo, wl)[0], b = nonlinear.eval({}, wi, wo, wl)[0];
@@ -87,7 +91,8 @@ TEST(RoughPlastic, CoatReflectanceApproachesFresnelWhenSmooth) {
   for (float theta : {0.0f, 30.0f, 60.0f}) {
     float mu = std::cos(degToRad(theta));
     EXPECT_NEAR(RoughPlasticBSDF::coatReflectance(smooth, mu, kEta), fresnelDielectric(mu, kEta), 2e-3f) << theta;
-    EXPECT_NEAR(RoughPlasticBSDF::coatReflectance(smooth, mu, 1.0f / kEta), fresnelDielectric(mu, 1.0f / kEta), 2e-3f) << theta;
+    EXPECT_NEAR(RoughPlasticBSDF::coatReflectance(smooth, mu, 1.0f / kEta), fresnelDielectric(mu, 1.0f / kEta), 2e-3f)
+        << theta;
   }
 }
 
@@ -102,7 +107,8 @@ TEST(RoughPlastic, SmoothLimitMatchesPlastic) {
 }
 
 TEST(RoughPlastic, IsReciprocal) {
-  RoughPlasticBSDF bsdf = roughPlastic(MicrofacetType::Beckmann, 0.3f, SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.1f, 0.8f}));
+  RoughPlasticBSDF bsdf = roughPlastic(MicrofacetType::Beckmann, 0.3f,
+                                       SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.1f, 0.8f}));
   const Wavelengths wl = testWavelengths();
   PCG32 rng(8, 8);
   for (int n = 0; n < 200; ++n) {

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 #include "chi_square.h"
+#include "core/properties.h"
 #include "samplers/hashed_permutation.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
@@ -14,7 +15,6 @@
 #include "samplers/pixel_sample_state.h"
 #include "samplers/sobol.h"
 #include "samplers/stratified_sampler.h"
-#include "core/properties.h"
 
 using namespace columba;
 
@@ -92,7 +92,8 @@ bool oneInEachCell(const std::vector<int>& cells, int count) {
 }  // namespace
 
 TEST(SamplerFactories, RoundSampleCountsAsMitsubaDoes) {
-  const std::map<std::string, int> rounded = {{"independent", 5}, {"stratified", 9}, {"ldsampler", 8}, {"multijitter", 6}};
+  const std::map<std::string, int> rounded = {
+      {"independent", 5}, {"stratified", 9}, {"ldsampler", 8}, {"multijitter", 6}};
   for (const auto& [type, expected] : rounded) {
     auto sampler = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 5)));
     EXPECT_EQ(sampler->sampleCount(), expected) << type;
@@ -346,8 +347,8 @@ TEST(SamplerIntegration, LowDiscrepancyBeatsIndependent) {
     rmsError[type] = std::sqrt(squaredError / pixels);
   }
   for (const std::string& type : kStratifiedSamplers)
-    EXPECT_LT(rmsError[type], 0.2 * rmsError["independent"]) << type << " " << rmsError[type] << " vs independent "
-                                                            << rmsError["independent"];
+    EXPECT_LT(rmsError[type], 0.2 * rmsError["independent"])
+        << type << " " << rmsError[type] << " vs independent " << rmsError["independent"];
   // Independent sampling itself is unbiased with the expected O(1/sqrt(n)) error.
   EXPECT_LT(rmsError["independent"], 0.05);
 }

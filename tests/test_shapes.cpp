@@ -15,7 +15,8 @@ std::unique_ptr<Scene> sceneWith(const std::string& shapes) {
 
 TEST(Shapes, RectangleShadingFrameFollowsTheUDirection) {
   // As in Mitsuba, local x (s) is dp/du: the rectangle's x axis, here rotated by 30 degrees.
-  auto scene = sceneWith(R"(<shape type="rectangle"><transform name="to_world"><rotate z="1" angle="30"/></transform></shape>)");
+  auto scene =
+      sceneWith(R"(<shape type="rectangle"><transform name="to_world"><rotate z="1" angle="30"/></transform></shape>)");
   auto hit = scene->intersect(Ray{Vec3(0.1f, 0.2f, 1.0f), Vec3(0, 0, -1)});
   ASSERT_TRUE(hit.has_value());
   Vec3 expected(std::cos(degToRad(30.0f)), std::sin(degToRad(30.0f)), 0.0f);

@@ -54,7 +54,8 @@ TEST(Spectrum, VisibleWavelengthPdfIntegratesToOneAndMatchesSampling) {
 
 TEST(Spectrum, RGBUpsamplingRoundTripsUnderD65) {
   // A reflectance's colour is the colour it has under D65 (Jakob & Hanika; Mitsuba).
-  for (Vec3 target : {Vec3(0.132f, 0.12f, 0.12f), Vec3(0.6f, 0.55f, 0.72f), Vec3(0.2f, 0.7f, 0.3f), Vec3(0.9f, 0.1f, 0.1f)}) {
+  for (Vec3 target :
+       {Vec3(0.132f, 0.12f, 0.12f), Vec3(0.6f, 0.55f, 0.72f), Vec3(0.2f, 0.7f, 0.3f), Vec3(0.9f, 0.1f, 0.1f)}) {
     SpectralDistribution s = SpectralDistribution::fromRGB(target, false);
     Vec3 rgb = rgbOf(s, true);
     EXPECT_NEAR(rgb.x, target.x, 0.01f);

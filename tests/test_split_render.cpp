@@ -157,8 +157,8 @@ TEST(SplitRender, PassesMergeToFloatRoundOff) {
           for (const Piece& p : pieces) {
             const PixelRect& w = p.info.window;
             if (y < w.y0 || y >= w.y1) continue;
-            magnitude += double(p.info.sampleEnd - p.info.sampleBegin) / spp *
-                         std::abs(p.image.pixel(x - w.x0, y - w.y0)[c]);
+            magnitude +=
+                double(p.info.sampleEnd - p.info.sampleBegin) / spp * std::abs(p.image.pixel(x - w.x0, y - w.y0)[c]);
           }
           const float m = merged.image.pixel(x, y)[c], f = whole.pixel(x, y)[c];
           EXPECT_LE(std::abs(double(m) - double(f)), std::ldexp(magnitude, -22) + 1e-30)

@@ -135,7 +135,8 @@ TEST_F(SweepCli, PartsAndPassesMergeIntoTheWholeRender) {
 
   for (int k = 1; k <= 2; ++k)
     ASSERT_EQ(run("render " + s + " --spp 8 -o " + at("img.exr") + " --pass " + std::to_string(k) + "/2").status, 0);
-  ASSERT_EQ(run("merge " + at("img.pass1of2.exr") + " " + at("img.pass2of2.exr") + " -o " + at("passes.exr")).status, 0);
+  ASSERT_EQ(run("merge " + at("img.pass1of2.exr") + " " + at("img.pass2of2.exr") + " -o " + at("passes.exr")).status,
+            0);
   r = run("compare " + at("passes.exr") + " " + at("whole.exr") + " --tolerance 1e-6");
   EXPECT_EQ(r.status, 0) << r.output;
   r = run("compare " + at("whole.exr") + " " + at("img.pass1of2.exr"));  // half the samples: not the same
@@ -188,7 +189,8 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
   EXPECT_NE(r.output.find("render=$(sbatch --parsable --array=0-5 " + (dir_ / "out/render.sbatch").string() + ")"),
             std::string::npos)
       << r.output;
-  EXPECT_NE(r.output.find("--dependency=afterok:${render%;*} --kill-on-invalid-dep=yes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--dependency=afterok:${render%;*} --kill-on-invalid-dep=yes"), std::string::npos)
+      << r.output;
   const std::string script = readText(dir_ / "out/render.sbatch");
   EXPECT_NE(script.find("#SBATCH --partition=short"), std::string::npos) << script;
   EXPECT_NE(script.find("#SBATCH --time=5:00"), std::string::npos) << script;
@@ -209,11 +211,13 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
     r = runShell("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_CPUS_PER_TASK=2 bash " +
                  (dir_ / "out/render.sbatch").string());
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("columba task " + std::to_string(task) + ": status 0 after"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("columba task " + std::to_string(task) + ": status 0 after"), std::string::npos)
+        << r.output;
   }
   r = runShell("bash " + (dir_ / "out/merge.sbatch").string());
   EXPECT_NE(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("part 2/3 is missing: '" + (dir_ / "out/parts/la020.part2of3.exr").string()), std::string::npos)
+  EXPECT_NE(r.output.find("part 2/3 is missing: '" + (dir_ / "out/parts/la020.part2of3.exr").string()),
+            std::string::npos)
       << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "out/la000.exr")) << r.output;  // the complete frame is merged all the same
   EXPECT_FALSE(fs::exists(dir_ / "out/la020.exr"));
@@ -238,7 +242,8 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
   for (const ManifestFrame& frame : m.frames) {
     EXPECT_EQ(frame.status, "done");
     EXPECT_EQ(frame.spp, 4);
-    ASSERT_EQ(run("render " + s + " --spp 4 -D angle=" + frame.defines.at("angle") + " -o " + at("local.exr")).status, 0);
+    ASSERT_EQ(run("render " + s + " --spp 4 -D angle=" + frame.defines.at("angle") + " -o " + at("local.exr")).status,
+              0);
     EXPECT_TRUE(samePixels(frame.output, at("local.exr"))) << frame.output;
   }
   r = runShell(slurm + " --submit");
@@ -246,7 +251,8 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
   EXPECT_NE(r.output.find("Nothing to do"), std::string::npos) << r.output;
 
   // Another render in the same directory is refused.
-  r = runShell(env + COLUMBA_BINARY + " slurm " + s + " --spp 4 --seed 9 --sweep angle=0,20 --frames 'la{angle:03}.exr' "
+  r = runShell(env + COLUMBA_BINARY + " slurm " + s +
+               " --spp 4 --seed 9 --sweep angle=0,20 --frames 'la{angle:03}.exr' "
                "--parts 3 --out-dir out");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("is of another render: its seed is 0, now 9"), std::string::npos) << r.output;

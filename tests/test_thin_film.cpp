@@ -61,7 +61,10 @@ TEST(ThinFilm, PeakMovesToShorterWavelengthsAsTheAngleGrows) {
   auto peakNear = [&](double start, double cosI) {
     double best = start, bestValue = -1.0;
     for (double lambda = start - 40.0; lambda <= start + 40.0; lambda += 0.05)
-      if (double v = reflectance(lambda, cosI); v > bestValue) { bestValue = v; best = lambda; }
+      if (double v = reflectance(lambda, cosI); v > bestValue) {
+        bestValue = v;
+        best = lambda;
+      }
     return best;
   };
   double peak = peakNear(520.0, 1.0);
@@ -172,10 +175,10 @@ TEST(Optics, KeratinFollowsCauchysLaw) {
 // to 900.06 nm). Spot values across the range, its minimum and maximum, and both ends.
 TEST(Optics, MelaninTableMatchesThePublishedMeasurements) {
   const std::pair<double, double> published[] = {
-      {249.7909, 0.0300}, {253.6204, 0.0284}, {282.3302, 0.0199}, {331.7368, 0.0412}, {399.6706, 0.0470},
-      {460.6789, 0.0487}, {501.3511, 0.0496}, {542.0233, 0.0509}, {548.8020, 0.0510}, {603.0316, 0.0522},
-      {670.7238, 0.0551}, {704.7121, 0.0562}, {799.6139, 0.0584}, {853.8435, 0.0593}, {894.5158, 0.0595},
-      {900.0620, 0.0593}};
+      {249.7909, 0.0300}, {253.6204, 0.0284}, {282.3302, 0.0199}, {331.7368, 0.0412},
+      {399.6706, 0.0470}, {460.6789, 0.0487}, {501.3511, 0.0496}, {542.0233, 0.0509},
+      {548.8020, 0.0510}, {603.0316, 0.0522}, {670.7238, 0.0551}, {704.7121, 0.0562},
+      {799.6139, 0.0584}, {853.8435, 0.0593}, {894.5158, 0.0595}, {900.0620, 0.0593}};
   for (const auto& [lambda, value] : published) EXPECT_NEAR(melaninReflectance(float(lambda)), value, 1e-6) << lambda;
   // Linear between neighbouring measurements.
   EXPECT_NEAR(melaninReflectance(0.5f * (249.7909f + 253.6204f)), 0.5 * (0.0300 + 0.0284), 1e-5);

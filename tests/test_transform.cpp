@@ -15,8 +15,9 @@ void expectNear(const Vec3& a, const Vec3& b, float tol = 1e-5f) {
 }
 
 Transform general() {
-  return Transform::translate(Vec3(0.3f, -2, 5)) * Transform::rotate(Vec3(0, 0, 1), 37) * Transform::rotate(Vec3(1, 0, 0), -21) *
-         Transform::scale(Vec3(2, 0.5f, 3)) * Transform::lookAt(Vec3(1, 2, 3), Vec3(-1, 0, 0.5f), Vec3(0, 0, 1));
+  return Transform::translate(Vec3(0.3f, -2, 5)) * Transform::rotate(Vec3(0, 0, 1), 37) *
+         Transform::rotate(Vec3(1, 0, 0), -21) * Transform::scale(Vec3(2, 0.5f, 3)) *
+         Transform::lookAt(Vec3(1, 2, 3), Vec3(-1, 0, 0.5f), Vec3(0, 0, 1));
 }
 
 }  // namespace

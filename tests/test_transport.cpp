@@ -46,15 +46,18 @@ Estimate pixelMean(const Image& image) {
 // reads emitters), so the answer is the image's luminance.
 std::string closedDiffuseSphere(float albedo, int maxDepth, int rrDepth) {
   return R"(<scene version="3.0.0">
-    <integrator type="path"><integer name="max_depth" value=")" + std::to_string(maxDepth) + R"("/>
-      <integer name="rr_depth" value=")" + std::to_string(rrDepth) + R"("/></integrator>
+    <integrator type="path"><integer name="max_depth" value=")" +
+         std::to_string(maxDepth) + R"("/>
+      <integer name="rr_depth" value=")" +
+         std::to_string(rrDepth) + R"("/></integrator>
     <sensor type="perspective"><float name="fov" value="90"/>
       <transform name="to_world"><lookat origin="0.1, 0.2, 0" target="1, 0.2, 0" up="0, 1, 0"/></transform>
       <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="24"/>
         <rfilter type="box"/></film>
       <sampler type="independent"><integer name="sample_count" value="64"/></sampler></sensor>
     <shape type="sphere"><float name="radius" value="1"/><boolean name="flip_normals" value="true"/>
-      <bsdf type="diffuse"><float name="reflectance" value=")" + std::to_string(albedo) + R"("/></bsdf>
+      <bsdf type="diffuse"><float name="reflectance" value=")" +
+         std::to_string(albedo) + R"("/></bsdf>
       <emitter type="area"><spectrum name="radiance" value="1"/></emitter></shape>
     </scene>)";
 }
@@ -99,7 +102,8 @@ namespace {
 std::string threeEmitterScene(const std::string& strategy) {
   return R"(<scene version="3.0.0">
     <integrator type="path"><integer name="max_depth" value="4"/>
-      <string name="strategy" value=")" + strategy + R"("/></integrator>
+      <string name="strategy" value=")" +
+         strategy + R"("/></integrator>
     <sensor type="perspective"><float name="fov" value="50"/>
       <transform name="to_world"><lookat origin="0, 1.2, 4" target="0, 0.3, 0" up="0, 1, 0"/></transform>
       <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="12"/>
@@ -145,8 +149,8 @@ TEST(Transport, MISAgreesWithEmitterSamplingAndBSDFSamplingAlone) {
   const int renders = 8;
   Estimate mis = meanOverSeeds("mis", renders), emitter = meanOverSeeds("emitter", renders),
            bsdf = meanOverSeeds("bsdf", renders);
-  std::printf("mean luminance: mis %.5f +- %.5f, emitter sampling %.5f +- %.5f, BSDF sampling %.5f +- %.5f\n",
-              mis.mean, mis.standardError, emitter.mean, emitter.standardError, bsdf.mean, bsdf.standardError);
+  std::printf("mean luminance: mis %.5f +- %.5f, emitter sampling %.5f +- %.5f, BSDF sampling %.5f +- %.5f\n", mis.mean,
+              mis.standardError, emitter.mean, emitter.standardError, bsdf.mean, bsdf.standardError);
   auto apart = [](const Estimate& a, const Estimate& b) {
     return std::abs(a.mean - b.mean) / std::hypot(a.standardError, b.standardError);
   };
@@ -165,8 +169,7 @@ TEST(Transport, StrategyOtherThanTheThreeIsAnError) {
     renderSceneString(xml);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("strategy must be 'mis', 'emitter' or 'bsdf', not 'light'"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("strategy must be 'mis', 'emitter' or 'bsdf', not 'light'"), std::string::npos)
         << e.what();
   }
 }

@@ -50,8 +50,8 @@ TEST(TwoSided, BackBSDFScattersBelowTheSurface) {
 }
 
 TEST(TwoSided, SamplingMatchesPdfFromBelow) {
-  auto metal = std::make_shared<RoughConductorBSDF>(MicrofacetDistribution(MicrofacetType::GGX, 0.3f, 0.3f), std::nullopt,
-                                                    SpectralDistribution::constant(1.0f));
+  auto metal = std::make_shared<RoughConductorBSDF>(MicrofacetDistribution(MicrofacetType::GGX, 0.3f, 0.3f),
+                                                    std::nullopt, SpectralDistribution::constant(1.0f));
   TwoSidedBSDF bsdf(diffuse(0.5f), metal);
   const double threshold = sidakThreshold(0.01, 2);
   uint64_t seed = 1;

@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <unistd.h>
 #include "core/illuminant.h"
 #include "scene/scene_loader.h"
 
@@ -39,15 +39,33 @@ PluginFactory reader(Schema schema, bool takesChildren = true) {
     for (const auto& [name, kind] : schema) {
       if (!props.has(name)) continue;
       switch (kind) {
-        case Param::Float: obj->floats[name] = props.getFloat(name); break;
-        case Param::Int: obj->ints[name] = props.getInt(name); break;
-        case Param::Bool: obj->bools[name] = props.getBool(name, false); break;
-        case Param::String: obj->strings[name] = props.getString(name); break;
-        case Param::Path: obj->strings[name] = props.getPath(name); break;
-        case Param::Vector: obj->vectors[name] = props.getVector(name, Vec3()); break;
-        case Param::Reflectance: obj->spectra[name] = props.getSpectrum(name, 0.5f, SpectrumUse::Reflectance); break;
-        case Param::Radiance: obj->spectra[name] = props.getSpectrum(name, 0.0f, SpectrumUse::Emission); break;
-        case Param::Transform: obj->transforms[name] = props.getTransform(name); break;
+        case Param::Float:
+          obj->floats[name] = props.getFloat(name);
+          break;
+        case Param::Int:
+          obj->ints[name] = props.getInt(name);
+          break;
+        case Param::Bool:
+          obj->bools[name] = props.getBool(name, false);
+          break;
+        case Param::String:
+          obj->strings[name] = props.getString(name);
+          break;
+        case Param::Path:
+          obj->strings[name] = props.getPath(name);
+          break;
+        case Param::Vector:
+          obj->vectors[name] = props.getVector(name, Vec3());
+          break;
+        case Param::Reflectance:
+          obj->spectra[name] = props.getSpectrum(name, 0.5f, SpectrumUse::Reflectance);
+          break;
+        case Param::Radiance:
+          obj->spectra[name] = props.getSpectrum(name, 0.0f, SpectrumUse::Emission);
+          break;
+        case Param::Transform:
+          obj->transforms[name] = props.getTransform(name);
+          break;
       }
     }
     if (takesChildren) obj->children = props.children<TestObject>();
@@ -60,9 +78,15 @@ const PluginRegistry& testRegistry() {
   static const PluginRegistry registry = [] {
     PluginRegistry r;
     r.add("bsdf", "probe",
-          reader({{"count", Param::Int}, {"scale", Param::Float}, {"flag", Param::Bool}, {"label", Param::String},
-                  {"dir", Param::Vector}, {"color", Param::Reflectance}, {"glow", Param::Radiance},
-                  {"to_world", Param::Transform}, {"file", Param::Path}}));
+          reader({{"count", Param::Int},
+                  {"scale", Param::Float},
+                  {"flag", Param::Bool},
+                  {"label", Param::String},
+                  {"dir", Param::Vector},
+                  {"color", Param::Reflectance},
+                  {"glow", Param::Radiance},
+                  {"to_world", Param::Transform},
+                  {"file", Param::Path}}));
     r.add("bsdf", "diffuse", reader({{"reflectance", Param::Reflectance}}));
     r.add("bsdf", "twosided", reader({}));
     r.add("shape", "mesh", reader({{"to_world", Param::Transform}}));
@@ -75,8 +99,11 @@ const PluginRegistry& testRegistry() {
     r.add("sensor", "perspective",
           reader({{"fov", Param::Float}, {"fov_axis", Param::String}, {"to_world", Param::Transform}}));
     r.add("sensor", "bsdfvisualizer", reader({}));
-    r.add("film", "hdrfilm", reader({{"width", Param::Int}, {"height", Param::Int}, {"pixel_format", Param::String},
-                                     {"component_format", Param::String}}));
+    r.add("film", "hdrfilm",
+          reader({{"width", Param::Int},
+                  {"height", Param::Int},
+                  {"pixel_format", Param::String},
+                  {"component_format", Param::String}}));
     r.add("rfilter", "gaussian", reader({}, false));
     r.add("sampler", "ldsampler", reader({{"sample_count", Param::Int}}, false));
     Schema barbule = {{"film_ior", Param::String}, {"ext_ior", Param::String}, {"height", Param::Float},
@@ -84,12 +111,17 @@ const PluginRegistry& testRegistry() {
                       {"mu", Param::Float},        {"H", Param::Float}};
     r.add("bsdf", "barbulebsdf", reader(barbule, false));
     r.add("bsdf", "barbulebsdfev", reader(barbule, false));
-    r.add("bsdf", "roughplastic", reader({{"diffuse_reflectance", Param::Reflectance},
-                                          {"specular_reflectance", Param::Reflectance}, {"alpha", Param::Float}}));
+    r.add("bsdf", "roughplastic",
+          reader({{"diffuse_reflectance", Param::Reflectance},
+                  {"specular_reflectance", Param::Reflectance},
+                  {"alpha", Param::Float}}));
     r.add("shape", "obj", reader({{"filename", Param::Path}, {"to_world", Param::Transform}}));
     // The reference feather PLY files were never published, so the name is read as plain text.
-    r.add("shape", "feather", reader({{"filename", Param::String}, {"barbwidth", Param::Float},
-                                      {"ramuswidth", Param::Float}, {"to_world", Param::Transform}}));
+    r.add("shape", "feather",
+          reader({{"filename", Param::String},
+                  {"barbwidth", Param::Float},
+                  {"ramuswidth", Param::Float},
+                  {"to_world", Param::Transform}}));
     r.add("shape", "rectangle", reader({{"to_world", Param::Transform}}));
     r.add("shape", "disk", reader({{"to_world", Param::Transform}}));
     r.add("emitter", "constant", reader({{"radiance", Param::Radiance}}, false));
@@ -469,10 +501,9 @@ std::string referenceScenesMissing() {
   return "the reference scene files are not available (looked in " + kReferenceScenes + ")";
 }
 
-#define SKIP_WITHOUT_REFERENCE_SCENES()                                      \
-  do {                                                                       \
-    if (std::string reason = referenceScenesMissing(); !reason.empty())      \
-      GTEST_SKIP() << reason;                                                \
+#define SKIP_WITHOUT_REFERENCE_SCENES()                                                         \
+  do {                                                                                          \
+    if (std::string reason = referenceScenesMissing(); !reason.empty()) GTEST_SKIP() << reason; \
   } while (false)
 
 ParsedScene loadReference(const std::string& name, const Defines& defines = {}) {
@@ -554,12 +585,14 @@ TEST(XmlLoader, EveryReferenceSceneLoads) {
     std::string mesh = object(la, 0)->strings.at("filename");
     EXPECT_NE(mesh.find(std::string("meshes/la") + o + "0.obj"), std::string::npos) << mesh;
   }
-  expectContains([] {
-    try {
-      loadReference("la.xml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  }(), {"la.xml:7", "$o0"});
+  expectContains(
+      [] {
+        try {
+          loadReference("la.xml");
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      }(),
+      {"la.xml:7", "$o0"});
 }

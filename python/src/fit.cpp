@@ -14,8 +14,8 @@ namespace py = pybind11;
 
 namespace columba::python {
 
-py::array_t<float> imageArray(Image&& image);      // module.cpp
-Image imageFromArray(const py::array& input);      // module.cpp
+py::array_t<float> imageArray(Image&& image);  // module.cpp
+Image imageFromArray(const py::array& input);  // module.cpp
 
 namespace {
 
@@ -75,8 +75,9 @@ py::dict fitImage(const std::filesystem::path& scene, const py::array& target, c
   return d;
 }
 
-py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary, const std::string& scale,
-                        const std::string& loss, int maxEvaluations, double maxSeconds, double rise) {
+py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary,
+                        const std::string& scale, const std::string& loss, int maxEvaluations, double maxSeconds,
+                        double rise) {
   SpectraFitSettings s;
   s.samples = readSpectraCSV(spectra.string());
   setCommon(s, vary, scale, loss, maxEvaluations, maxSeconds, rise);

@@ -103,7 +103,8 @@ class PyBarbule {
         p.melanin = SpectralDistribution::piecewiseLinear(pair.first, pair.second);
       }
     }
-    if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) parameterError(problem->parameter, problem->message);
+    if (std::optional<BarbuleParameterProblem> problem = findProblem(p))
+      parameterError(problem->parameter, problem->message);
     if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p)) {
       std::string text = "<bsdf> 'barbulebsdf', parameter '" + odd->parameter + "': " + odd->message;
       PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
@@ -166,7 +167,8 @@ void sameCount(const FloatArray& a, const FloatArray& b, const char* na, const c
                           std::to_string(a.shape(0)) + " and " + std::to_string(b.shape(0)) + ")");
 }
 
-py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
+py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn,
+                             const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
   sameCount(wi, wo, "wi", "wo");
   py::ssize_t n = wi.shape(0);
@@ -179,7 +181,8 @@ py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const
   return out;
 }
 
-py::array_t<float> pdfArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
+py::array_t<float> pdfArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn,
+                            const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
   sameCount(wi, wo, "wi", "wo");
   py::ssize_t n = wi.shape(0);
@@ -197,7 +200,8 @@ py::dict sampleArray(const PyBarbule& self, const py::array& wiIn, const py::arr
   FloatArray wi = directions(wiIn, "wi");
   py::ssize_t n = wi.shape(0);
   FloatArray u1 = FloatArray::ensure(u1In), u2 = FloatArray::ensure(u2In);
-  if (!u1 || u1.ndim() != 1 || u1.shape(0) != n) throw py::value_error("u1 must have shape (N,): one number per direction");
+  if (!u1 || u1.ndim() != 1 || u1.shape(0) != n)
+    throw py::value_error("u1 must have shape (N,): one number per direction");
   if (!u2 || u2.ndim() != 2 || u2.shape(0) != n || u2.shape(1) != 2)
     throw py::value_error("u2 must have shape (N, 2): two numbers per direction");
   WavelengthArg wl = wavelengths(wlIn, n);
@@ -418,11 +422,13 @@ void bindModel(py::module_& m) {
           "scatterometer_image",
           [](const PyBarbule& s, float theta, float phi, int resolution, int supersampling) {
             if (resolution < 1 || resolution > 8192) throw py::value_error("resolution must be between 1 and 8192");
-            if (supersampling < 1 || supersampling > 64) throw py::value_error("supersampling must be between 1 and 64");
+            if (supersampling < 1 || supersampling > 64)
+              throw py::value_error("supersampling must be between 1 and 64");
             Image image;
             {
               py::gil_scoped_release release;
-              image = scatterometerImage(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), resolution, supersampling);
+              image = scatterometerImage(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), resolution,
+                                         supersampling);
             }
             return imageArray(std::move(image));
           },
@@ -450,10 +456,14 @@ void bindModel(py::module_& m) {
     }
     return d;
   });
-  m.def("direction", [](float theta, float phi) {
-    Vec3 v = directionFromAngles(degToRad(theta), degToRad(phi));
-    return py::array_t<float>(3, &v.x);
-  }, py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, "Unit direction at polar angle theta_deg from the vane normal and azimuth phi_deg from x (degrees)");
+  m.def(
+      "direction",
+      [](float theta, float phi) {
+        Vec3 v = directionFromAngles(degToRad(theta), degToRad(phi));
+        return py::array_t<float>(3, &v.x);
+      },
+      py::arg("theta_deg"), py::arg("phi_deg") = 0.0f,
+      "Unit direction at polar angle theta_deg from the vane normal and azimuth phi_deg from x (degrees)");
 
   m.def("_thin_film", &thinFilm, py::arg("theta_deg"), py::arg("wavelength"), py::arg("thickness"), py::arg("film_ior"),
         py::arg("n_outside"), py::arg("substrate_ior"));
@@ -467,42 +477,39 @@ void bindModel(py::module_& m) {
         "Intensity reflectance of the melanin layer (measured table)");
   m.def("fresnel", py::vectorize(fresnelDielectric), py::arg("cos_i"), py::arg("eta"),
         "Unpolarised Fresnel reflectance of a dielectric interface (eta = n_t / n_i)");
-  m.def(
-      "_fresnel_amplitudes",
-      [](const FloatArray& cosI, const FloatArray& eta) {
-        py::ssize_t n = cosI.size();
-        if (eta.size() != n) throw py::value_error("the arrays must have the same length");
-        std::vector<py::array_t<float>> out;
-        for (int k = 0; k < 5; ++k) out.emplace_back(n);
-        py::array_t<bool> tir(n);
-        for (py::ssize_t i = 0; i < n; ++i) {
-          FresnelAmplitudes a = fresnelAmplitudes(cosI.data()[i], eta.data()[i]);
-          float v[5] = {a.rs, a.rp, a.ts, a.tp, a.cosT};
-          for (int k = 0; k < 5; ++k) out[size_t(k)].mutable_data()[i] = v[k];
-          tir.mutable_data()[i] = a.totalInternalReflection;
-        }
-        py::dict d;
-        const char* names[] = {"rs", "rp", "ts", "tp", "cos_t"};
-        for (int k = 0; k < 5; ++k) d[names[k]] = out[size_t(k)];
-        d["total_internal_reflection"] = tir;
-        return d;
-      });
+  m.def("_fresnel_amplitudes", [](const FloatArray& cosI, const FloatArray& eta) {
+    py::ssize_t n = cosI.size();
+    if (eta.size() != n) throw py::value_error("the arrays must have the same length");
+    std::vector<py::array_t<float>> out;
+    for (int k = 0; k < 5; ++k) out.emplace_back(n);
+    py::array_t<bool> tir(n);
+    for (py::ssize_t i = 0; i < n; ++i) {
+      FresnelAmplitudes a = fresnelAmplitudes(cosI.data()[i], eta.data()[i]);
+      float v[5] = {a.rs, a.rp, a.ts, a.tp, a.cosT};
+      for (int k = 0; k < 5; ++k) out[size_t(k)].mutable_data()[i] = v[k];
+      tir.mutable_data()[i] = a.totalInternalReflection;
+    }
+    py::dict d;
+    const char* names[] = {"rs", "rp", "ts", "tp", "cos_t"};
+    for (int k = 0; k < 5; ++k) d[names[k]] = out[size_t(k)];
+    d["total_internal_reflection"] = tir;
+    return d;
+  });
 
-  m.def(
-      "_generate_feathers",
-      [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary) {
-        FeatherGenerationOptions o;
-        o.neck = neck, o.feathers = feathers, o.barbsPerSide = barbs, o.seed = seed, o.binary = binary;
-        FeatherGenerationSummary s;
-        {
-          py::gil_scoped_release release;
-          s = generateFeatherPly(o, path);
-        }
-        py::dict d;
-        d["feathers"] = s.feathers, d["barbs"] = s.barbs, d["faces"] = s.faces, d["vertices"] = s.vertices;
-        d["tiling_barb_width"] = s.tilingBarbWidth;
-        return d;
-      });
+  m.def("_generate_feathers",
+        [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary) {
+          FeatherGenerationOptions o;
+          o.neck = neck, o.feathers = feathers, o.barbsPerSide = barbs, o.seed = seed, o.binary = binary;
+          FeatherGenerationSummary s;
+          {
+            py::gil_scoped_release release;
+            s = generateFeatherPly(o, path);
+          }
+          py::dict d;
+          d["feathers"] = s.feathers, d["barbs"] = s.barbs, d["faces"] = s.faces, d["vertices"] = s.vertices;
+          d["tiling_barb_width"] = s.tilingBarbWidth;
+          return d;
+        });
   m.def("read_feather_ply", &featherPly, py::arg("path"),
         "A feather PLY's barbs: positions and normals (B x 64 x 3), H, mu, height (B x 64, file convention) "
         "and the recorded barb width");

@@ -13,10 +13,10 @@
 #include <mutex>
 #include <thread>
 
+#include "builtin/builtin_plugins.h"
 #include "builtin/default_scene.h"
 #include "core/error.h"
 #include "core/version.h"
-#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
@@ -82,8 +82,8 @@ std::shared_ptr<PyScene> loadDefault(const Defines& defines) {
 py::array_t<float> imageArray(Image&& image) {
   auto* owned = new Image(std::move(image));
   py::capsule owner(owned, [](void* p) { delete static_cast<Image*>(p); });
-  return py::array_t<float>({py::ssize_t(owned->height), py::ssize_t(owned->width), py::ssize_t(3)},
-                            owned->rgb.data(), owner);
+  return py::array_t<float>({py::ssize_t(owned->height), py::ssize_t(owned->width), py::ssize_t(3)}, owned->rgb.data(),
+                            owner);
 }
 
 namespace {
@@ -169,8 +169,10 @@ void writeImage(const std::string& path, const py::array& array) {
   ImageFormat format = checkOutputImagePath(path);
   Image image = imageFromArray(array);
   py::gil_scoped_release release;
-  if (format == ImageFormat::EXR) writeEXR(path, image);
-  else writePNG(path, image);
+  if (format == ImageFormat::EXR)
+    writeEXR(path, image);
+  else
+    writePNG(path, image);
 }
 
 Image readImageFile(const std::string& path) {
@@ -228,7 +230,8 @@ PYBIND11_MODULE(_columba, m) {
       py::arg("path"));
   m.def("to_srgb", py::vectorize(toSRGB8), py::arg("linear"),
         "The 8-bit sRGB encoding of linear values (uint8), as PNGs are written");
-  m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"), "The linear value of sRGB-encoded values in [0, 1]");
+  m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"),
+        "The linear value of sRGB-encoded values in [0, 1]");
   bindModel(m);
   bindFit(m);
 }

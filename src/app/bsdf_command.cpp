@@ -6,9 +6,9 @@
 #include <iterator>
 #include <limits>
 
-#include "io/data_files.h"
 #include "bsdfs/barbule_measurement.h"
 #include "core/version.h"
+#include "io/data_files.h"
 #include "plot/canvas.h"
 #include "plot/hemisphere_chart.h"
 #include "plot/line_plot.h"
@@ -42,13 +42,15 @@ Vec3 seriesColour(size_t i) { return kSeriesColours[i % std::size(kSeriesColours
 // Everything the run measured with, for file headers, titles and the JSON record.
 std::string describeParameters(const BSDFOptions& o) {
   const BarbuleParameters& p = o.params;
-  std::string film = o.filmIOR.empty() ? (std::isnan(o.cauchyA) ? "keratin" : fmt::format("Cauchy {} + {}/lambda^2", o.cauchyA, o.cauchyB))
-                                       : o.filmIOR;
-  return fmt::format("b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
-                     "melanin {}{}",
-                     p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
-                     o.melaninFile.empty() ? "embedded table" : o.melaninFile,
-                     o.preset.empty() ? "" : " | preset " + o.preset);
+  std::string film =
+      o.filmIOR.empty()
+          ? (std::isnan(o.cauchyA) ? "keratin" : fmt::format("Cauchy {} + {}/lambda^2", o.cauchyA, o.cauchyB))
+          : o.filmIOR;
+  return fmt::format(
+      "b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
+      "melanin {}{}",
+      p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
+      o.melaninFile.empty() ? "embedded table" : o.melaninFile, o.preset.empty() ? "" : " | preset " + o.preset);
 }
 
 std::string angleList(const std::vector<float>& angles) {
@@ -81,8 +83,9 @@ void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs:
     Image image = scatterometerImage(bsdf, light, o.resolution);
     if (o.spectral) image.spectral = spectralScatterometerBands(bsdf, light, o.resolution, o.bins, 400.0f, 700.0f);
     const ImageMetadata metadata = {
-        {"Measurement", "scatterometer image: f(light, camera) |cos theta_camera| per steradian under a D65 beam of "
-                        "unit luminance (RGB); spectral channels: f |cos theta_camera| per steradian, bin means"},
+        {"Measurement",
+         "scatterometer image: f(light, camera) |cos theta_camera| per steradian under a D65 beam of "
+         "unit luminance (RGB); spectral channels: f |cos theta_camera| per steradian, bin means"},
         {"Light", fmt::format("theta {:g} deg, phi {:g} deg", angle, o.phiDegrees)},
         {"Parameters", describeParameters(o)}};
     fs::path exr = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".exr");
@@ -90,8 +93,8 @@ void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs:
     writeEXR(exr.string(), image, metadata);
     // The PNG is the chart a person reads; the EXR holds the data.
     HemisphereChart chart{fmt::format("Scatterometer, light at {:g} deg", angle),
-                          fmt::format("light phi {:g} deg | f cos(theta_camera) per sr under a D65 beam | {}", o.phiDegrees,
-                                      describeParameters(o))};
+                          fmt::format("light phi {:g} deg | f cos(theta_camera) per sr under a D65 beam | {}",
+                                      o.phiDegrees, describeParameters(o))};
     chart.lightTheta = degToRad(angle);
     chart.lightPhi = degToRad(o.phiDegrees);
     writePNG(png.string(), drawHemisphereChart(image, chart), metadata);
@@ -109,8 +112,8 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
                               const std::string& yLabel, const std::string& quantity) {
   SpectralFigure f;
   f.plot.title = title;
-  f.plot.subtitle = fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees,
-                                describeParameters(o));
+  f.plot.subtitle =
+      fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees, describeParameters(o));
   f.plot.xLabel = "wavelength (nm)";
   f.plot.yLabel = yLabel;
   f.plot.xMin = kLambdaMin;
@@ -190,7 +193,8 @@ void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::pa
       largest = std::max(largest, total[i]);
     }
     peak = std::max(peak, largest);
-    for (const char* lobe : {"R", "TRT", "total"}) table.columns.push_back(fmt::format("{}_theta{:g}", lobe, o.angles[a]));
+    for (const char* lobe : {"R", "TRT", "total"})
+      table.columns.push_back(fmt::format("{}_theta{:g}", lobe, o.angles[a]));
     std::vector<float> totalPeaks = peakWavelengths(lambdas, total), rPeaks = peakWavelengths(lambdas, s.reflection),
                        trtPeaks = peakWavelengths(lambdas, s.trt);
     fmt::print("{:17g}  {:<18} {:<14} {:<16} {:.4f}\n", o.angles[a], fmt::format("{}", fmt::join(totalPeaks, " ")),
@@ -233,7 +237,8 @@ void measurePlane(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path&
     plot.yLabel = "f |cos theta_o| (1/sr): 450/550/650 nm solid, RGB dashed";
     plot.xMin = -90.0f;
     plot.xMax = 90.0f;
-    const Vec3 lineColours[] = {srgbColour(0.2f, 0.3f, 0.9f), srgbColour(0.1f, 0.6f, 0.2f), srgbColour(0.85f, 0.2f, 0.1f)};
+    const Vec3 lineColours[] = {srgbColour(0.2f, 0.3f, 0.9f), srgbColour(0.1f, 0.6f, 0.2f),
+                                srgbColour(0.85f, 0.2f, 0.1f)};
     float peak = 0.0f;
     for (size_t k = 0; k < shown.size(); ++k) {
       PlotSeries s{fmt::format("{:g} nm", shown[k]), {}, lineColours[k]};
@@ -266,13 +271,16 @@ double decimal(float x) { return std::stod(fmt::format("{}", x)); }
 
 nlohmann::json parameterRecord(const BSDFOptions& o) {
   const BarbuleParameters& p = o.params;
-  nlohmann::json j = {{"b", decimal(p.b)},   {"phi_0_rad", decimal(p.phi0)}, {"phi_1_rad", decimal(p.phi1)},
-                      {"mu_rad", decimal(p.mu)}, {"H", decimal(p.H)},        {"height_um", decimal(p.height)},
-                      {"ext_ior", decimal(p.extIOR)}};
+  nlohmann::json j = {
+      {"b", decimal(p.b)}, {"phi_0_rad", decimal(p.phi0)},   {"phi_1_rad", decimal(p.phi1)}, {"mu_rad", decimal(p.mu)},
+      {"H", decimal(p.H)}, {"height_um", decimal(p.height)}, {"ext_ior", decimal(p.extIOR)}};
   if (!o.preset.empty()) j["preset"] = o.preset;
-  if (!o.filmIOR.empty()) j["film_ior"] = o.filmIOR;
-  else if (!std::isnan(o.cauchyA)) j["film_cauchy"] = {{"a", decimal(o.cauchyA)}, {"b_nm2", decimal(o.cauchyB)}};
-  else j["film_ior"] = "keratin";
+  if (!o.filmIOR.empty())
+    j["film_ior"] = o.filmIOR;
+  else if (!std::isnan(o.cauchyA))
+    j["film_cauchy"] = {{"a", decimal(o.cauchyA)}, {"b_nm2", decimal(o.cauchyB)}};
+  else
+    j["film_ior"] = "keratin";
   j["melanin"] = o.melaninFile.empty() ? "embedded table" : o.melaninFile;
   return j;
 }
@@ -291,10 +299,14 @@ void runBSDF(const BSDFOptions& o) {
   if (o.spectral) record["spectral_bins"] = {{"count", o.bins}, {"from_nm", 400}, {"to_nm", 700}};
   std::vector<std::string> written;
   for (const std::string& mode : o.modes) {
-    if (mode == "hemisphere") measureHemispheres(bsdf, o, dir, written);
-    else if (mode == "spectra") measureAlbedo(bsdf, o, dir, record, written);
-    else if (mode == "specular") measureSpecular(bsdf, o, dir, record, written);
-    else if (mode == "plane") measurePlane(bsdf, o, dir, written);
+    if (mode == "hemisphere")
+      measureHemispheres(bsdf, o, dir, written);
+    else if (mode == "spectra")
+      measureAlbedo(bsdf, o, dir, record, written);
+    else if (mode == "specular")
+      measureSpecular(bsdf, o, dir, record, written);
+    else if (mode == "plane")
+      measurePlane(bsdf, o, dir, written);
   }
   record["outputs"] = written;
   writeJSON((dir / "bsdf.json").string(), record);
@@ -344,8 +356,9 @@ void addBSDFCommand(CLI::App& app) {
   auto o = std::make_shared<BSDFOptions>();
   auto given = std::make_shared<BarbuleParameters>();
   CLI::App* cmd = app.add_subcommand(
-      "bsdf", "Measure the barbule BSDF as a virtual goniometer: scatterometer images, specular and albedo spectra, "
-              "in-plane slices (plots with CSV data and a JSON record)");
+      "bsdf",
+      "Measure the barbule BSDF as a virtual goniometer: scatterometer images, specular and albedo spectra, "
+      "in-plane slices (plots with CSV data and a JSON record)");
   cmd->add_option("--preset", o->preset, "Barbule preset: " + barbulePresetNames() + " (options below override it)");
   cmd->add_option("--b", given->b, "Cross-section semi-axis along the vane normal (default 0.25)");
   cmd->add_option("--phi_0", given->phi0, "Start of the reflective arc, rad (default -0.37)");

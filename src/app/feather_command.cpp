@@ -36,10 +36,11 @@ void addFeatherCommand(CLI::App& app) {
     auto start = std::chrono::steady_clock::now();
     FeatherGenerationSummary s = generateFeatherPly(settings->options, settings->output);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    fmt::print("wrote {}: {} feather{}, {} barbs, {} faces, {} vertices in {:.2f} s; barbs lie edge to edge at "
-               "barbwidth {:.4g}\n",
-               settings->output, s.feathers, s.feathers == 1 ? "" : "s", s.barbs, s.faces, s.vertices, seconds,
-               s.tilingBarbWidth);
+    fmt::print(
+        "wrote {}: {} feather{}, {} barbs, {} faces, {} vertices in {:.2f} s; barbs lie edge to edge at "
+        "barbwidth {:.4g}\n",
+        settings->output, s.feathers, s.feathers == 1 ? "" : "s", s.barbs, s.faces, s.vertices, seconds,
+        s.tilingBarbWidth);
   });
 }
 

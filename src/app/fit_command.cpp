@@ -4,10 +4,10 @@
 
 #include <filesystem>
 
-#include "io/data_files.h"
 #include "fit/fit_report.h"
 #include "fit/scene_fit.h"
 #include "fit/spectra_fit.h"
+#include "io/data_files.h"
 
 namespace columba {
 
@@ -40,7 +40,8 @@ Defines parseDefines(const std::vector<std::string>& items) {
 
 std::string describeValues(const std::vector<FitParameter>& parameters, const std::vector<double>& values) {
   std::string text;
-  for (size_t i = 0; i < values.size(); ++i) text += fmt::format("{}{}={:.5g}", text.empty() ? "" : " ", parameters[i].name, values[i]);
+  for (size_t i = 0; i < values.size(); ++i)
+    text += fmt::format("{}{}={:.5g}", text.empty() ? "" : " ", parameters[i].name, values[i]);
   return text;
 }
 
@@ -81,9 +82,10 @@ int runFitCommand(const FitOptions& o) {
   for (const FitParameter& p : parameters)
     if (defines.count(p.name)) throw std::runtime_error(fmt::format("'{}' is both fixed by -D and varied", p.name));
   if (o.maxEvaluations < int(parameters.size()) + 2)
-    throw std::runtime_error(fmt::format("--max-evals {} is too small for {} parameters", o.maxEvaluations,
-                                         parameters.size()));
-  if (!(o.maxSeconds > 0.0)) throw std::runtime_error(fmt::format("--max-seconds must be positive, not {}", o.maxSeconds));
+    throw std::runtime_error(
+        fmt::format("--max-evals {} is too small for {} parameters", o.maxEvaluations, parameters.size()));
+  if (!(o.maxSeconds > 0.0))
+    throw std::runtime_error(fmt::format("--max-seconds must be positive, not {}", o.maxSeconds));
   if (!(o.rise > 0.0)) throw std::runtime_error(fmt::format("--rise must be positive, not {}", o.rise));
   const fs::path dir = o.outputDir;
   fs::create_directories(dir);
@@ -94,10 +96,15 @@ int runFitCommand(const FitOptions& o) {
   fit.optimizer.globalAlgorithm = o.global;
   fit.profileRise = o.rise;
   fit.progress = terminalProgress(parameters);
-  nlohmann::json settings = {{"vary", o.vary},         {"defines", o.defines},
-                             {"loss", o.loss},         {"scale", o.scale},
-                             {"max_evaluations", o.maxEvaluations}, {"max_seconds", o.maxSeconds},
-                             {"optimizer", "NLopt " + o.global + ", then LN_BOBYQA (LN_NELDERMEAD for one parameter) from its 3 best distinct points"}};
+  nlohmann::json settings = {
+      {"vary", o.vary},
+      {"defines", o.defines},
+      {"loss", o.loss},
+      {"scale", o.scale},
+      {"max_evaluations", o.maxEvaluations},
+      {"max_seconds", o.maxSeconds},
+      {"optimizer",
+       "NLopt " + o.global + ", then LN_BOBYQA (LN_NELDERMEAD for one parameter) from its 3 best distinct points"}};
   FitResult result;
   if (!o.spectraPath.empty()) {
     SpectraFitSettings s;
@@ -141,8 +148,13 @@ int runFitCommand(const FitOptions& o) {
                s.target.width, s.target.height);
     SceneFitResult fitted = fitScene(s);
     result = fitted.fit;
-    settings.update({{"scene", o.scenePath}, {"target", o.targetPath}, {"mask", o.maskPath},
-                     {"spp", o.spp}, {"seed", o.seed}, {"width", s.target.width}, {"height", s.target.height}});
+    settings.update({{"scene", o.scenePath},
+                     {"target", o.targetPath},
+                     {"mask", o.maskPath},
+                     {"spp", o.spp},
+                     {"seed", o.seed},
+                     {"width", s.target.width},
+                     {"height", s.target.height}});
     writePNG((dir / "compare.png").string(), compareImage(s.target, fitted.render, result.loss.scale, s.mask));
   }
   writeJSON((dir / "fit.json").string(), fitRecord(result, settings));
@@ -162,7 +174,8 @@ void addFitCommand(CLI::App& app) {
   cmd->add_option("--target", o->targetPath, "Measured image (EXR, linear RGB); the film is set to its size");
   cmd->add_option("--vary", o->vary, "A parameter to fit: NAME=LO:HI[:START] (repeatable; START: the middle)")
       ->allow_extra_args(false);
-  cmd->add_option("-D,--define", o->defines, "Fix a scene variable (or barbule parameter with --spectra): -D name=value")
+  cmd->add_option("-D,--define", o->defines,
+                  "Fix a scene variable (or barbule parameter with --spectra): -D name=value")
       ->allow_extra_args(false);
   cmd->add_option("--mask", o->maskPath, "PNG of the target's size: only pixels brighter than half count");
   cmd->add_option("--spectra", o->spectraPath,
@@ -177,10 +190,10 @@ void addFitCommand(CLI::App& app) {
   cmd->add_option("--loss", o->loss, "mse, log or relative (squared differences, averaged)")->capture_default_str();
   cmd->add_option("--max-evals", o->maxEvaluations, "Evaluation budget of the optimiser")->capture_default_str();
   cmd->add_option("--max-seconds", o->maxSeconds, "Time budget of the optimiser (s)")->capture_default_str();
-  cmd->add_option("--global", o->global, "NLopt algorithm of the global stage (GN_CRS2_LM, GN_DIRECT, GN_DIRECT_L, ...)")
+  cmd->add_option("--global", o->global,
+                  "NLopt algorithm of the global stage (GN_CRS2_LM, GN_DIRECT, GN_DIRECT_L, ...)")
       ->capture_default_str();
-  cmd->add_option("--rise", o->rise,
-                  "Uncertainty intervals: where the loss stays below (1 + rise) x its minimum")
+  cmd->add_option("--rise", o->rise, "Uncertainty intervals: where the loss stays below (1 + rise) x its minimum")
       ->capture_default_str();
   cmd->add_option("-o,--output", o->outputDir, "Output directory (created if missing)")->capture_default_str();
   cmd->callback([o] {

@@ -19,8 +19,9 @@ bool guardAlive = false;
 extern "C" void onStopSignal(int signal) {
   if (stopRequested.exchange(true)) _exit(128 + signal);  // the second signal: no more waiting
   firstSignal = signal;
-  const char message[] = "\nStopping: finishing the current samples and saving the partial image "
-                         "(interrupt again to quit at once)\n";
+  const char message[] =
+      "\nStopping: finishing the current samples and saving the partial image "
+      "(interrupt again to quit at once)\n";
   ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
   (void)ignored;
 }

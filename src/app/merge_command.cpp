@@ -23,17 +23,20 @@ struct MergeOptions {
 // OUT.exr and OUT.png from -o naming either.
 std::pair<std::string, std::string> outputPair(const std::string& output) {
   std::filesystem::path exr = output, png = output;
-  if (checkOutputImagePath(output) == ImageFormat::EXR) png.replace_extension(".png");
-  else exr.replace_extension(".exr");
+  if (checkOutputImagePath(output) == ImageFormat::EXR)
+    png.replace_extension(".png");
+  else
+    exr.replace_extension(".exr");
   checkOutputImagePath(exr.string());
   checkOutputImagePath(png.string());
   return {exr.string(), png.string()};
 }
 
 std::string mergedFrom(const MergedImage& merged) {
-  return merged.passes > 1 ? fmt::format("{} parts x {} passes (pass means weighted by their sample counts, summed "
-                                         "in double: equal to a one-piece render to float32 round-off)",
-                                         merged.parts, merged.passes)
+  return merged.passes > 1 ? fmt::format(
+                                 "{} parts x {} passes (pass means weighted by their sample counts, summed "
+                                 "in double: equal to a one-piece render to float32 round-off)",
+                                 merged.parts, merged.passes)
                            : fmt::format("{} parts (bit-identical to a one-piece render)", merged.parts);
 }
 
@@ -152,10 +155,11 @@ int compareImages(const CompareOptions& options) {
   const size_t pixel = worst / perPixel;
   const std::vector<float>& va = worstSpectral ? a.image.spectral.values : a.image.rgb;
   const std::vector<float>& vb = worstSpectral ? b.image.spectral.values : b.image.rgb;
-  fmt::print("{} of {} values differ; the largest difference is {:.9g} ({:.9g} against {:.9g}) at pixel ({}, {}), {} "
-             "{}\n",
-             differing, total, largest, va[worst], vb[worst], pixel % a.image.width, pixel / a.image.width,
-             worstSpectral ? "band" : "channel", worst % perPixel);
+  fmt::print(
+      "{} of {} values differ; the largest difference is {:.9g} ({:.9g} against {:.9g}) at pixel ({}, {}), {} "
+      "{}\n",
+      differing, total, largest, va[worst], vb[worst], pixel % a.image.width, pixel / a.image.width,
+      worstSpectral ? "band" : "channel", worst % perPixel);
   if (largest <= options.tolerance) {
     fmt::print("within the tolerance of {:g}\n", options.tolerance);
     return 0;

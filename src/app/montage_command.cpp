@@ -50,14 +50,17 @@ void runMontage(const MontageOptions& options) {
   std::string inputs;
   for (const std::string& path : options.inputs) inputs += (inputs.empty() ? "" : "\n") + path;
   const ImageMetadata metadata = {{"Images", inputs}};
-  if (format == ImageFormat::EXR) writeEXR(options.output, sheet, metadata);
-  else writePNG(options.output, sheet, metadata);
+  if (format == ImageFormat::EXR)
+    writeEXR(options.output, sheet, metadata);
+  else
+    writePNG(options.output, sheet, metadata);
 }
 }  // namespace
 
 void addMontageCommand(CLI::App& app) {
   auto options = std::make_shared<MontageOptions>();
-  CLI::App* cmd = app.add_subcommand("montage", "Arrange images (PNG or EXR) into a labelled contact sheet (PNG or EXR)");
+  CLI::App* cmd =
+      app.add_subcommand("montage", "Arrange images (PNG or EXR) into a labelled contact sheet (PNG or EXR)");
   cmd->add_option("images", options->inputs, "Images, in order")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output, "Contact sheet, .png or .exr")->required();
   cmd->add_option("--columns", options->columns, "Tiles per row")->check(CLI::Range(1, 64));

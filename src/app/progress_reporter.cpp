@@ -41,11 +41,12 @@ void ProgressReporter::update(int done, int total) {
     int filled = int(fraction * width);
     std::string bar(size_t(filled), '=');
     bar.resize(width, ' ');
-    std::string eta = fraction > 0 && done < total ? " ETA " + formatDuration(elapsed * (1.0 - fraction) / fraction) : "";
-    std::string all = overall_ ? fmt::format(" | all {:.0f}% {}", 100.0 * overall_->fraction(fraction),
-                                             overall_->eta(fraction))
-                               : "";
-    fmt::print(stderr, "\r{} [{}] {:5.1f}% {}{}{}   ", label_, bar, 100.0 * fraction, formatDuration(elapsed), eta, all);
+    std::string eta =
+        fraction > 0 && done < total ? " ETA " + formatDuration(elapsed * (1.0 - fraction) / fraction) : "";
+    std::string all =
+        overall_ ? fmt::format(" | all {:.0f}% {}", 100.0 * overall_->fraction(fraction), overall_->eta(fraction)) : "";
+    fmt::print(stderr, "\r{} [{}] {:5.1f}% {}{}{}   ", label_, bar, 100.0 * fraction, formatDuration(elapsed), eta,
+               all);
   } else {
     int percent = int(fraction * 100.0);
     if (percent / 10 == lastPercentPrinted_ / 10 && done < total) return;

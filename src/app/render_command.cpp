@@ -10,11 +10,11 @@
 #include <optional>
 #include <set>
 
-#include "builtin/default_scene.h"
-#include "builtin/default_scene_xml.h"
 #include "app/interruption.h"
 #include "app/progress_reporter.h"
 #include "builtin/builtin_plugins.h"
+#include "builtin/default_scene.h"
+#include "builtin/default_scene_xml.h"
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/pieces.h"
@@ -30,17 +30,16 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output;
   std::string threads;
-  std::string frame;           // --frame I: only frame I of the sweep
-  std::string part, pass;      // --part K/N, --pass K/N
-  std::string manifest;        // --manifest FILE
+  std::string frame;       // --frame I: only frame I of the sweep
+  std::string part, pass;  // --part K/N, --pass K/N
+  std::string manifest;    // --manifest FILE
 };
 
 Defines parseDefines(const std::vector<std::string>& items) {
   Defines defines;
   for (const std::string& item : items) {
     size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw std::runtime_error("-D expects name=value, got '" + item + "'");
+    if (eq == std::string::npos || eq == 0) throw std::runtime_error("-D expects name=value, got '" + item + "'");
     defines[item.substr(0, eq)] = item.substr(eq + 1);
   }
   return defines;
@@ -56,8 +55,10 @@ struct OutputPair {
     std::filesystem::path given = path;
     ImageFormat format = checkOutputImagePath(given.string());
     OutputPair pair{given, given};
-    if (format == ImageFormat::EXR) pair.png.replace_extension(".png");
-    else pair.exr.replace_extension(".exr");
+    if (format == ImageFormat::EXR)
+      pair.png.replace_extension(".png");
+    else
+      pair.exr.replace_extension(".exr");
     checkOutputImagePath(pair.exr.string());
     checkOutputImagePath(pair.png.string());
     return pair;
@@ -158,8 +159,7 @@ int runRender(const RenderOptions& options) {
     const int f = selected[i];
     const Defines defines = plan.frameDefines(f);
     const std::string label = frameLabel(plan.frames[size_t(f)]);
-    if (sweeping)
-      fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
+    if (sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
     ParsedScene parsed = options.scene.scenePath.empty()
                              ? loadDefaultScene(defines)
                              : loadSceneFile(options.scene.scenePath, defines, builtinPlugins());
@@ -186,10 +186,10 @@ int runRender(const RenderOptions& options) {
     info.frameWidth = film.width();
     info.frameHeight = film.height();
     if (options.scene.spectral)
-      info.spectral = fmt::format("{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
-                                  "(S0.<centre>nm)",
-                                  bins, (settings.spectralMax - settings.spectralMin) / bins, settings.spectralMin,
-                                  settings.spectralMax);
+      info.spectral = fmt::format(
+          "{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
+          "(S0.<centre>nm)",
+          bins, (settings.spectralMax - settings.spectralMin) / bins, settings.spectralMin, settings.spectralMax);
     std::string pieceText;
     if (part) {
       // Bands of rows of about equal cost, from a pilot every part computes alike.
@@ -227,16 +227,16 @@ int runRender(const RenderOptions& options) {
     if (piece) {
       const std::string file = pieceFileName(output.exr.string(), part, pass);
       written = stats.complete ? file : partialFileName(file);
-      writeEXRWindow(written, image, settings.window.empty() ? PixelRect{0, 0, film.width(), film.height()} : settings.window,
+      writeEXRWindow(written, image,
+                     settings.window.empty() ? PixelRect{0, 0, film.width(), film.height()} : settings.window,
                      film.width(), film.height(), metadata);
     } else {
       const OutputPair pair = stats.complete ? output : output.partial();
       writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);
       written = pair.exr.string() + ", " + pair.png.string();
     }
-    std::string dropped = stats.nonFiniteSamples == 0
-                              ? ""
-                              : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
+    std::string dropped =
+        stats.nonFiniteSamples == 0 ? "" : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
     fmt::print("{} {}{}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}\n",
                stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file,
                sweeping ? " (" + label + ")" : "", stats.seconds, stats.samples / stats.seconds * 1e-6,
@@ -296,11 +296,12 @@ FramePlan planFrames(const SceneOptions& options, const std::string& output) {
   for (const std::string& spec : options.sweeps) {
     plan.axes.push_back(parseSweep(spec));
     if (plan.defines.count(plan.axes.back().name))
-      throw std::runtime_error(fmt::format("-D {0}=... and --sweep {0}=... both set ${0}; give one of them",
-                                           plan.axes.back().name));
+      throw std::runtime_error(
+          fmt::format("-D {0}=... and --sweep {0}=... both set ${0}; give one of them", plan.axes.back().name));
   }
   plan.frames = expandSweeps(plan.axes);
-  plan.files = frameFiles(output.empty() ? defaultOutput(options.scenePath) : output, options.framesPattern, plan.frames);
+  plan.files =
+      frameFiles(output.empty() ? defaultOutput(options.scenePath) : output, options.framesPattern, plan.frames);
   plan.sceneHash = textHash(readSceneText(options.scenePath));
   return plan;
 }
@@ -326,7 +327,8 @@ void addSceneOptions(CLI::App* cmd, SceneOptions& options) {
 
 void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
+  CLI::App* cmd =
+      app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
   addSceneOptions(cmd, options->scene);
   cmd->add_option("-o,--output", options->output,
                   "Output image, .exr or .png: the other of the two is written beside it (default: SCENE.exr)");

@@ -53,7 +53,8 @@ bool finishedImage(const std::string& path, const Manifest& manifest, const Mani
 
 // The first way in which an earlier manifest in the output directory is of another render.
 std::string difference(const Manifest& old, const Manifest& now) {
-  if (old.sceneHash != now.sceneHash) return "its scene file's text differs (hash " + old.sceneHash + ", now " + now.sceneHash + ")";
+  if (old.sceneHash != now.sceneHash)
+    return "its scene file's text differs (hash " + old.sceneHash + ", now " + now.sceneHash + ")";
   if (old.defines != now.defines) return "its -D values differ";
   if (old.sweeps.size() != now.sweeps.size()) return "its sweeps differ";
   for (size_t i = 0; i < old.sweeps.size(); ++i)
@@ -62,7 +63,8 @@ std::string difference(const Manifest& old, const Manifest& now) {
   if (old.spp != now.spp) return fmt::format("its --spp is {}, now {}", old.spp, now.spp);
   if (old.seed != now.seed) return fmt::format("its seed is {}, now {}", old.seed, now.seed);
   if (old.parts != now.parts || old.passes != now.passes)
-    return fmt::format("it is split into {} parts x {} passes, now {} x {}", old.parts, old.passes, now.parts, now.passes);
+    return fmt::format("it is split into {} parts x {} passes, now {} x {}", old.parts, old.passes, now.parts,
+                       now.passes);
   for (size_t f = 0; f < old.frames.size() && f < now.frames.size(); ++f)
     if (old.frames[f].output != now.frames[f].output)
       return "its frame " + std::to_string(f) + " goes to " + old.frames[f].output + ", now " + now.frames[f].output;
@@ -177,8 +179,8 @@ int runSlurm(const SlurmOptions& options) {
     frame.status = finishedImage(frame.output, manifest, frame) ? "done" : "pending";
     for (ManifestPiece& piece : frame.pieces)
       piece.status = finishedImage(piece.file, manifest, frame) ? "done"
-                     : fs::exists(partialFileName(piece.file)) ? "interrupted"
-                                                               : "pending";
+                     : fs::exists(partialFileName(piece.file))  ? "interrupted"
+                                                                : "pending";
   }
   MissingWork work = missingWork(
       manifest, [](const ManifestFrame& f) { return f.status == "done"; },
@@ -200,13 +202,15 @@ int runSlurm(const SlurmOptions& options) {
   for (const std::string& d : options.scene.defines) job.renderArguments.insert(job.renderArguments.end(), {"-D", d});
   if (sppOption) job.renderArguments.insert(job.renderArguments.end(), {"--spp", std::to_string(sppOption)});
   job.renderArguments.insert(job.renderArguments.end(), {"--seed", std::to_string(options.scene.seed)});
-  if (options.scene.spectral) job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
+  if (options.scene.spectral)
+    job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
   for (const SweepAxis& axis : plan.axes) job.renderArguments.insert(job.renderArguments.end(), {"--sweep", axis.spec});
   if (pieceOptions.framesPattern.empty())
     job.renderArguments.insert(job.renderArguments.end(), {"-o", (partsDir / (stem + ".exr")).string()});
   else
     job.renderArguments.insert(job.renderArguments.end(), {"--frames", pieceOptions.framesPattern});
-  const std::string renderScript = (outDir / "render.sbatch").string(), mergeScript = (outDir / "merge.sbatch").string();
+  const std::string renderScript = (outDir / "render.sbatch").string(),
+                    mergeScript = (outDir / "merge.sbatch").string();
   manifest.renderScript = renderScript;
   manifest.mergeScript = mergeScript;
   manifest.logDir = logDir.string();
@@ -280,8 +284,9 @@ int runSlurm(const SlurmOptions& options) {
 void addSlurmCommand(CLI::App& app) {
   auto options = std::make_shared<SlurmOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "slurm", "Write (and with --submit, submit) a Slurm job array rendering a sweep or a frame in pieces, and a "
-               "merge job after it; run again, it submits only what is missing");
+      "slurm",
+      "Write (and with --submit, submit) a Slurm job array rendering a sweep or a frame in pieces, and a "
+      "merge job after it; run again, it submits only what is missing");
   addSceneOptions(cmd, options->scene);
   cmd->add_option("--parts", options->parts, "Bands of rows each frame is split into (one array task each)");
   cmd->add_option("--passes", options->passes, "Ranges of sample indices each part is split into (default 1)");

@@ -226,8 +226,8 @@ Spectrum BarbuleBSDF::trt(const PointModel& point, const Incident& in, const Out
   return scale * point.melanin * sum;
 }
 
-Spectrum BarbuleBSDF::trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut,
-                                          float inY, float outY) const {
+Spectrum BarbuleBSDF::trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut, float inY,
+                                          float outY) const {
   // Longitudinal mean with density proportional to omega_i . m over the range facing omega_i,
   // split where omega_o . m changes sign (a kink of the integrand); Gauss-Legendre on each piece.
   LongitudinalDensity longitudinal(projectedIn, inY);
@@ -275,8 +275,7 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
     Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, h)));
     FreeStandingFilm::Reflectance film = point.film.reflectance(inPlaneProjection(in.w, n));
     Spectrum r = 0.5f * (film.s + film.p);
-    Spectrum trt =
-        point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
+    Spectrum trt = point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
     meanR += lobeWeights_[k] * r.average();
     meanTRT += lobeWeights_[k] * trt.average();
   }
@@ -330,8 +329,7 @@ BSDFEvalPdf BarbuleBSDF::evalPdfAt(const PointModel& point, const Incident& from
                                    const Vec3& wo, const LitArc& woArc) const {
   Outgoing out = outgoing(point, fromWi, wo, woArc);
   // With omega_i on the camera side, value and density share the pair's geometry.
-  Spectrum value =
-      role_ == Role::CameraIncident ? evalForPair(point, fromWi, out) : evalAt(point, fromWi, wo, woArc);
+  Spectrum value = role_ == Role::CameraIncident ? evalForPair(point, fromWi, out) : evalAt(point, fromWi, wo, woArc);
   return {value, samplingPdf(point, fromWi, choice, out)};
 }
 
@@ -360,16 +358,16 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
   if (request.woLight) {
     const Vec3& wo = *request.woLight;
     LitArc woArc = point.geometry.litArc(inPlane(wo).dir);
-    q.toLight = request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc)
-                                 : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
+    q.toLight =
+        request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   }
   if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u);
   if (request.passThrough) q.passThrough = Spectrum(transmission(point.geometry, in));
   return q;
 }
 
-std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const Incident& in,
-                                                const LobeChoice& choice, float uComponent, Vec2 u) const {
+std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
+                                                float uComponent, Vec2 u) const {
   const BarbuleCrossSection& geometry = point.geometry;
   const Vec3& wi = in.w;
   BSDFSample bs;
@@ -431,8 +429,8 @@ namespace {
 RefractiveIndex readIOR(const Properties& props, const std::string& name, const std::string& defaultName,
                         bool tabulated) {
   if (props.has(name) && !props.isString(name)) {
-    SpectralDistribution n =
-        tabulated ? props.getSpectrum(name, 1.0f, SpectrumUse::Unbounded) : SpectralDistribution::constant(props.getFloat(name));
+    SpectralDistribution n = tabulated ? props.getSpectrum(name, 1.0f, SpectrumUse::Unbounded)
+                                       : SpectralDistribution::constant(props.getFloat(name));
     if (!n.isConstant()) return RefractiveIndex::tabulated(std::move(n));
     float value = n.eval(kLambdaMin);
     if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");

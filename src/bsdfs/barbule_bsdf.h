@@ -102,8 +102,8 @@ class BarbuleBSDF : public BSDF {
   // evalPdfAt take the interface's (wi, wo) and apply the role; evalLobes and *ForPair take the
   // model's (omega_i, omega_o).
   Spectrum evalAt(const PointModel& point, const Incident& fromWi, const Vec3& wo, const LitArc& woArc) const;
-  BSDFEvalPdf evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice,
-                        const Vec3& wo, const LitArc& woArc) const;
+  BSDFEvalPdf evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
+                        const LitArc& woArc) const;
   Spectrum evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
   Lobes evalLobesForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
   // The lobes of a pair.
@@ -116,8 +116,7 @@ class BarbuleBSDF : public BSDF {
 
   LobeChoice lobeChoice(const PointModel& point, const Incident& in) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                    const Outgoing& out) const;
+  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;
   // sample, once the point's model, omega_i's quantities and the lobe choice are known.
   std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
                                      float uComponent, Vec2 u) const;

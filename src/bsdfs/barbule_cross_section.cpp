@@ -96,8 +96,10 @@ LitArc BarbuleCrossSection::litArc(Vec2 towardWorld) const {
   // then behind. The front neighbour hides the offsets where its silhouette overlaps ours.
   float c = dot2(neighbour_, arc.across), sigma = dot2(neighbour_, d);
   float shift = sigma + arc.q * arc.invA * c > 0.0f ? c : -c;
-  if (shift > 0.0f) hi = std::min(hi, shift - arc.halfWidth);
-  else lo = std::max(lo, shift + arc.halfWidth);
+  if (shift > 0.0f)
+    hi = std::min(hi, shift - arc.halfWidth);
+  else
+    lo = std::max(lo, shift + arc.halfWidth);
 
   arc.hMin = lo;
   arc.hMax = hi;

@@ -24,9 +24,9 @@ inline float dot2(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 // The part of the central barbule's reflective arc that a 2D direction reaches (lit: facing
 // it and not shadowed by a neighbour), in the ellipse's local frame.
 struct LitArc {
-  Vec2 toward;              // unit direction toward the light (local frame)
-  Vec2 across;              // `toward` turned by +90 degrees: the axis of the offsets h
-  float halfWidth = 0.0f;   // the whole ellipse's silhouette spans offsets [-halfWidth, halfWidth]
+  Vec2 toward;                     // unit direction toward the light (local frame)
+  Vec2 across;                     // `toward` turned by +90 degrees: the axis of the offsets h
+  float halfWidth = 0.0f;          // the whole ellipse's silhouette spans offsets [-halfWidth, halfWidth]
   float hMin = 0.0f, hMax = 0.0f;  // offsets of the lit part; empty when hMax <= hMin
   // Front intersection of the ray at offset h: s = (-q h + sqrt(a - h^2 / b^2)) / a.
   float a = 1.0f, invA = 1.0f, q = 0.0f;
@@ -101,7 +101,7 @@ class BarbuleCrossSection {
 
   float b_, bSqr_, invBSqr_, H_;
   float cosMu_, sinMu_;
-  Vec2 neighbour_;           // local offset of the neighbour at +H
+  Vec2 neighbour_;  // local offset of the neighbour at +H
   bool wholeEllipse_;
   Vec2 arcStartNormal_, arcEndNormal_;  // local normals at phi0 and phi1
   Vec2 arcStartPoint_, arcEndPoint_;

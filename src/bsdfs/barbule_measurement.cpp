@@ -6,7 +6,6 @@
 
 #include "core/illuminant.h"
 
-
 namespace columba {
 
 namespace {
@@ -184,7 +183,8 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
           for (const WavelengthGroup& g : groups) {
             BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, *wo, g.wl);
             for (int k = 0; k < g.count; ++k)
-              xyz += cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo->z) * d65(g.wl[k]) * dLambda);
+              xyz +=
+                  cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo->z) * d65(g.wl[k]) * dLambda);
           }
         }
       Vec3 rgb = xyzToLinearRGB(xyz / (cieYIntegral() * float(supersampling * supersampling)));

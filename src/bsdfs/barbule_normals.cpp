@@ -20,8 +20,10 @@ LongitudinalDensity::LongitudinalDensity(float A, float B)
   }
   // One end faces away: clip at the zero of A cos(theta) + B sin(theta), where tan(theta) = -A / B.
   float zero = std::atan(-A / B);
-  if (atMin < 0.0f) thetaMin_ = zero;
-  else thetaMax_ = zero;
+  if (atMin < 0.0f)
+    thetaMin_ = zero;
+  else
+    thetaMax_ = zero;
   auto primitive = [&](float theta) { return A * std::sin(theta) - B * std::cos(theta); };
   primitiveMin_ = primitive(thetaMin_);
   mass_ = std::max(primitive(thetaMax_) - primitiveMin_, 0.0f);

@@ -46,7 +46,8 @@ inline Vec3 barbuleNormal(Vec2 worldNormal, float cosTheta, float sinTheta) {
 // w . m for the normal m = barbuleNormal(n, 1, 0) of world in-plane normal n and longitudinal angle
 // 0: the in-plane projection cos(theta_w) cos(gamma_w - gamma_n), the A of LongitudinalDensity.
 // N is a Vec2, or Vec2Lanes for four normals at once.
-template <typename N> inline auto inPlaneProjection(const Vec3& w, const N& n) {
+template <typename N>
+inline auto inPlaneProjection(const Vec3& w, const N& n) {
   return w.z * n.x + w.x * n.y;
 }
 

@@ -49,7 +49,7 @@ std::string barbulePresetNames() {
 
 std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
   const std::pair<const char*, float> numbers[] = {{"b", p.b},   {"phi_0", p.phi0}, {"phi_1", p.phi1},
-                                                  {"mu", p.mu}, {"H", p.H},        {"height", p.height}};
+                                                   {"mu", p.mu}, {"H", p.H},        {"height", p.height}};
   for (const auto& [name, value] : numbers)
     if (!std::isfinite(value)) return BarbuleParameterProblem{name, "must be a finite number"};
   if (!(p.b > 0.0f)) return BarbuleParameterProblem{"b", "the cross-section's semi-axis must be positive"};
@@ -60,13 +60,15 @@ std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
     return BarbuleParameterProblem{"phi_1", "the reflective arc phi_1 - phi_0 must lie in (0, pi] or be at least 2 pi"};
   if (!(p.extIOR > 0.0f)) return BarbuleParameterProblem{"ext_ior", "the index of refraction must be positive"};
   if (!(p.filmIOR.minimumVisible() > p.extIOR))
-    return BarbuleParameterProblem{"film_ior", "the film must be optically denser than the surrounding medium at "
-                                               "every wavelength from 360 to 830 nm"};
+    return BarbuleParameterProblem{"film_ior",
+                                   "the film must be optically denser than the surrounding medium at "
+                                   "every wavelength from 360 to 830 nm"};
   if (p.melanin)
     for (float l = kLambdaMin; l <= kLambdaMax; l += 1.0f)
       if (!(p.melanin->eval(l) >= 0.0f && p.melanin->eval(l) <= 1.0f))
-        return BarbuleParameterProblem{"melanin", "the melanin reflectance must lie in [0, 1] at every wavelength "
-                                                  "from 360 to 830 nm"};
+        return BarbuleParameterProblem{"melanin",
+                                       "the melanin reflectance must lie in [0, 1] at every wavelength "
+                                       "from 360 to 830 nm"};
   return std::nullopt;
 }
 

@@ -73,7 +73,9 @@ class BSDF : public Object {
   virtual std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                            float uComponent, Vec2 u) const = 0;
   // Weight of light passing straight through along -wi (shadow rays are attenuated by it).
-  virtual Spectrum passThrough(const BSDFContext&, const Vec3& /*wi*/, const Wavelengths&) const { return Spectrum(0.0f); }
+  virtual Spectrum passThrough(const BSDFContext&, const Vec3& /*wi*/, const Wavelengths&) const {
+    return Spectrum(0.0f);
+  }
   virtual bool hasPassThrough() const { return false; }
   // True when all scattering is delta: emitter sampling is pointless there.
   virtual bool isDeltaOnly() const { return false; }

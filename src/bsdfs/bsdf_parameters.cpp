@@ -13,7 +13,8 @@ float readIOR(const Properties& props, const std::string& name, const std::strin
   } else {
     std::string material = props.getString(name, defaultName);
     auto named = lookupIOR(material);
-    if (!named) throw props.error(name, "unknown material '" + material + "' (give a number or a known name such as 'bk7')");
+    if (!named)
+      throw props.error(name, "unknown material '" + material + "' (give a number or a known name such as 'bk7')");
     value = *named;
   }
   if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");
@@ -25,9 +26,13 @@ MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool 
   std::transform(distribution.begin(), distribution.end(), distribution.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   MicrofacetType type;
-  if (distribution == "beckmann") type = MicrofacetType::Beckmann;
-  else if (distribution == "ggx") type = MicrofacetType::GGX;
-  else throw props.error("distribution", "unknown microfacet distribution '" + distribution + "' (use 'beckmann' or 'ggx')");
+  if (distribution == "beckmann")
+    type = MicrofacetType::Beckmann;
+  else if (distribution == "ggx")
+    type = MicrofacetType::GGX;
+  else
+    throw props.error("distribution",
+                      "unknown microfacet distribution '" + distribution + "' (use 'beckmann' or 'ggx')");
 
   props.getBool("sample_visible", true);
 

@@ -11,9 +11,12 @@ class DielectricBSDF : public BSDF {
  public:
   // eta = interior / exterior index; the normal (local +z) points to the exterior.
   DielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
-      : eta_(eta), specularReflectance_(std::move(specularReflectance)),
+      : eta_(eta),
+        specularReflectance_(std::move(specularReflectance)),
         specularTransmittance_(std::move(specularTransmittance)) {}
-  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return Spectrum(0.0f); }
+  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
+    return Spectrum(0.0f);
+  }
   float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
   // Refraction scales the weight by (n_wi / n_wo)^2: radiance is compressed into the smaller
   // solid angle on the denser side. Paths start at the camera, so this is the radiance form.

@@ -26,7 +26,10 @@ double sampleBeckmannSlope(double cosTheta, double sinTheta, double u) {
   for (int i = 0; i < 64; ++i) {
     double f = cdf(x) - target;
     if (std::abs(f) <= 1e-12 * target || hi - lo < 1e-12) break;
-    if (f > 0.0) hi = x; else lo = x;
+    if (f > 0.0)
+      hi = x;
+    else
+      lo = x;
     double slope = (cosTheta - x * sinTheta) * std::exp(-x * x) * kInvSqrtPi;
     double next = x - f / slope;
     // Bisect where the Newton step leaves the bracket (or the density vanishes).
@@ -45,8 +48,7 @@ float MicrofacetDistribution::D(const Vec3& m) const {
   // Slopes scaled to unit roughness.
   float x = m.x / alphaX_, y = m.y / alphaY_, z2 = m.z * m.z;
   float norm = kPi * alphaX_ * alphaY_;
-  if (type_ == MicrofacetType::Beckmann)
-    return std::exp(-(x * x + y * y) / z2) / (norm * z2 * z2);
+  if (type_ == MicrofacetType::Beckmann) return std::exp(-(x * x + y * y) / z2) / (norm * z2 * z2);
   return 1.0f / (norm * sqr(x * x + y * y + z2));
 }
 
@@ -64,9 +66,7 @@ float MicrofacetDistribution::G1(const Vec3& w, const Vec3& m) const {
   return 1.0f / (1.0f + lambda(w));
 }
 
-float MicrofacetDistribution::G(const Vec3& wi, const Vec3& wo, const Vec3& m) const {
-  return G1(wi, m) * G1(wo, m);
-}
+float MicrofacetDistribution::G(const Vec3& wi, const Vec3& wo, const Vec3& m) const { return G1(wi, m) * G1(wo, m); }
 
 Vec3 MicrofacetDistribution::sampleVisible(const Vec3& wi, Vec2 u) const {
   return type_ == MicrofacetType::GGX ? sampleVisibleGGX(wi, u) : sampleVisibleBeckmann(wi, u);
@@ -100,7 +100,10 @@ Vec3 MicrofacetDistribution::sampleVisibleBeckmann(const Vec3& wi, Vec2 u) const
   Vec3 ws = normalize(Vec3(alphaX_ * wi.x, alphaY_ * wi.y, wi.z));
   double sinTheta = std::sqrt(std::max(0.0, 1.0 - sqr(double(ws.z))));
   double cosPhi = 1.0, sinPhi = 0.0;
-  if (sinTheta > 1e-7) { cosPhi = ws.x / sinTheta; sinPhi = ws.y / sinTheta; }
+  if (sinTheta > 1e-7) {
+    cosPhi = ws.x / sinTheta;
+    sinPhi = ws.y / sinTheta;
+  }
   double sx = sampleBeckmannSlope(ws.z, sinTheta, u.x);
   double sy = sampleBeckmannSlope(1.0, 0.0, u.y);
   double slopeX = alphaX_ * (cosPhi * sx - sinPhi * sy);

@@ -9,8 +9,10 @@ namespace columba {
 
 PlasticBSDF::PlasticBSDF(float eta, SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
                          bool nonlinear)
-    : eta_(eta), diffuseReflectance_(std::move(diffuseReflectance)),
-      specularReflectance_(std::move(specularReflectance)), nonlinear_(nonlinear),
+    : eta_(eta),
+      diffuseReflectance_(std::move(diffuseReflectance)),
+      specularReflectance_(std::move(specularReflectance)),
+      nonlinear_(nonlinear),
       internalReflectance_(fresnelDiffuseReflectance(1.0f / eta)) {
   float d = diffuseReflectance_.meanValue(), s = specularReflectance_.meanValue();
   specularSamplingWeight_ = d + s > 0.0f ? s / (d + s) : 0.5f;
@@ -25,7 +27,8 @@ float PlasticBSDF::specularProbability(float fresnelI) const {
 Spectrum PlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
   Spectrum kd = diffuseReflectance_.sample(wl);
-  Spectrum base = kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
+  Spectrum base =
+      kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   // 1/eta^2: radiance leaving the coat spreads into the larger solid angle outside.
   float transmission = (1.0f - fresnelDielectric(cosTheta(wi), eta_)) * (1.0f - fresnelDielectric(cosTheta(wo), eta_));
   return base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
@@ -60,10 +63,9 @@ std::optional<BSDFSample> PlasticBSDF::sample(const BSDFContext& ctx, const Vec3
 std::shared_ptr<Object> makePlasticBSDF(const Properties& props) {
   float intIOR = readIOR(props, "int_ior", "polypropylene");
   float extIOR = readIOR(props, "ext_ior", "air");
-  return std::make_shared<PlasticBSDF>(intIOR / extIOR,
-                                       props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
-                                       props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
-                                       props.getBool("nonlinear", false));
+  return std::make_shared<PlasticBSDF>(
+      intIOR / extIOR, props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
+      props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance), props.getBool("nonlinear", false));
 }
 
 }  // namespace columba

@@ -12,7 +12,8 @@ RoughConductorBSDF::RoughConductorBSDF(MicrofacetDistribution distribution, std:
 Spectrum RoughConductorBSDF::reflectance(float cosI, const Wavelengths& wl) const {
   Spectrum r = specularReflectance_.sample(wl);
   if (ior_)
-    for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, ior_->eta.eval(wl[i]), ior_->k.eval(wl[i]));
+    for (int i = 0; i < kSpectrumSamples; ++i)
+      r[i] *= fresnelConductor(cosI, ior_->eta.eval(wl[i]), ior_->k.eval(wl[i]));
   return r;
 }
 
@@ -56,8 +57,8 @@ std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props) {
   } else if (material != "none") {
     throw props.error("material", "no tabulated data for conductor '" + material + "': give its eta and k spectra");
   }
-  return std::make_shared<RoughConductorBSDF>(distribution, std::move(ior),
-                                              props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
+  return std::make_shared<RoughConductorBSDF>(
+      distribution, std::move(ior), props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

@@ -24,20 +24,23 @@ float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distributi
 RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta,
                                    SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
                                    bool nonlinear)
-    : distribution_(distribution), eta_(eta), diffuseReflectance_(std::move(diffuseReflectance)),
-      specularReflectance_(std::move(specularReflectance)), nonlinear_(nonlinear) {
+    : distribution_(distribution),
+      eta_(eta),
+      diffuseReflectance_(std::move(diffuseReflectance)),
+      specularReflectance_(std::move(specularReflectance)),
+      nonlinear_(nonlinear) {
   float d = diffuseReflectance_.meanValue(), s = specularReflectance_.meanValue();
   specularSamplingWeight_ = d + s > 0.0f ? s / (d + s) : 0.5f;
 
   // Grazing directions are nudged off the horizon, where the sampler is undefined.
   for (int i = 0; i < kTableSize; ++i)
-    externalTransmittance_[i] = 1.0f - coatReflectance(distribution_, std::max(float(i) / (kTableSize - 1), 1e-4f), eta_);
+    externalTransmittance_[i] =
+        1.0f - coatReflectance(distribution_, std::max(float(i) / (kTableSize - 1), 1e-4f), eta_);
 
   // 2 * integral of R(mu) mu dmu = mean of R(sqrt(s)) over s in [0, 1] (midpoint rule).
   constexpr int kSteps = 32;
   double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i)
-    sum += coatReflectance(distribution_, std::sqrt((i + 0.5f) / kSteps), 1.0f / eta_);
+  for (int i = 0; i < kSteps; ++i) sum += coatReflectance(distribution_, std::sqrt((i + 0.5f) / kSteps), 1.0f / eta_);
   internalReflectance_ = float(sum / kSteps);
 }
 
@@ -57,10 +60,11 @@ float RoughPlasticBSDF::specularProbability(float cosI) const {
 Spectrum RoughPlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
   Vec3 m = normalize(wi + wo);
-  float specular = fresnelDielectric(dot(wi, m), eta_) * distribution_.D(m) * distribution_.G(wi, wo, m) /
-                   (4.0f * cosTheta(wi));
+  float specular =
+      fresnelDielectric(dot(wi, m), eta_) * distribution_.D(m) * distribution_.G(wi, wo, m) / (4.0f * cosTheta(wi));
   Spectrum kd = diffuseReflectance_.sample(wl);
-  Spectrum base = kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
+  Spectrum base =
+      kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   float transmission = externalTransmittance(cosTheta(wi)) * externalTransmittance(cosTheta(wo));
   return specularReflectance_.sample(wl) * specular + base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
 }
@@ -92,10 +96,9 @@ std::shared_ptr<Object> makeRoughPlasticBSDF(const Properties& props) {
   MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/false);
   float intIOR = readIOR(props, "int_ior", "polypropylene");
   float extIOR = readIOR(props, "ext_ior", "air");
-  return std::make_shared<RoughPlasticBSDF>(distribution, intIOR / extIOR,
-                                            props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
-                                            props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
-                                            props.getBool("nonlinear", false));
+  return std::make_shared<RoughPlasticBSDF>(
+      distribution, intIOR / extIOR, props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
+      props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance), props.getBool("nonlinear", false));
 }
 
 }  // namespace columba

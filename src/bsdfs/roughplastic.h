@@ -45,9 +45,9 @@ class RoughPlasticBSDF : public BSDF {
   float eta_;
   SpectralDistribution diffuseReflectance_, specularReflectance_;
   bool nonlinear_;
-  float specularSamplingWeight_;  // mean specular / (mean specular + mean diffuse reflectance)
+  float specularSamplingWeight_;                         // mean specular / (mean specular + mean diffuse reflectance)
   std::array<float, kTableSize> externalTransmittance_;  // at mu = i / (kTableSize - 1)
-  float internalReflectance_;     // cosine-weighted rough reflectance at the coat's underside
+  float internalReflectance_;                            // cosine-weighted rough reflectance at the coat's underside
 };
 
 // Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1; isotropic only),

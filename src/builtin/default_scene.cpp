@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <optional>
 
+#include "builtin/builtin_plugins.h"
 #include "builtin/default_scene_xml.h"
 #include "feather/feather_generator.h"
-#include "builtin/builtin_plugins.h"
 
 namespace columba {
 

@@ -9,7 +9,8 @@ Distribution1D::Distribution1D(std::vector<float> weights) : weights_(std::move(
   if (weights_.empty()) throw std::invalid_argument("empty distribution");
   cdf_.resize(weights_.size() + 1, 0.0);
   for (size_t i = 0; i < weights_.size(); ++i) {
-    if (!(weights_[i] >= 0.0f) || !std::isfinite(weights_[i])) throw std::invalid_argument("invalid distribution weight");
+    if (!(weights_[i] >= 0.0f) || !std::isfinite(weights_[i]))
+      throw std::invalid_argument("invalid distribution weight");
     cdf_[i + 1] = cdf_[i] + weights_[i];
   }
   total_ = float(cdf_.back());

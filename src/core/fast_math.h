@@ -7,11 +7,11 @@
 // Lanes use the GCC/Clang vector extension: arithmetic evaluated at several points at once (a
 // path's wavelengths, a quadrature's nodes) that must not depend on the compiler choosing to
 // vectorise a loop.
+#include <immintrin.h>
 #include <cmath>
 #include <type_traits>
 #include <vector>
 #include "core/math.h"
-#include <immintrin.h>
 
 namespace columba {
 
@@ -67,8 +67,7 @@ inline bool hasAvx2() {
 }
 
 // Eight lanes as two halves of four, and back.
-__attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 joinLanes(FloatLanes low,
-                                                                                FloatLanes high) {
+__attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 joinLanes(FloatLanes low, FloatLanes high) {
   return FloatLanes8{low[0], low[1], low[2], low[3], high[0], high[1], high[2], high[3]};
 }
 __attribute__((target("avx2,fma"), always_inline)) inline FloatLanes lowLanes(FloatLanes8 v) {
@@ -102,7 +101,8 @@ inline FloatLanes asinLanes(FloatLanes x) {
 // errors < 6e-8, about two float ulps with rounding): cheaper than the library's full-range
 // functions. T is float or lanes. The polynomials are evaluated in Estrin's form, whose dependency
 // chains are half as long as Horner's.
-template <typename T> inline void sincAndCosWithinQuarterTurn(T x, T& sinOverX, T& cosX) {
+template <typename T>
+inline void sincAndCosWithinQuarterTurn(T x, T& sinOverX, T& cosX) {
   T z = x * x, z2 = z * z, z4 = z2 * z2;
   // sin(x) / x = sum of (-z)^k / (2k + 1)!, k = 0..5; cos(x) = sum of (-z)^k / (2k)!, k = 0..6.
   T s01 = 1.0f - z * (1.0f / 6), s23 = 1.0f / 120 - z * (1.0f / 5040), s45 = 1.0f / 362880 - z * (1.0f / 39916800);
@@ -110,7 +110,8 @@ template <typename T> inline void sincAndCosWithinQuarterTurn(T x, T& sinOverX, 
   sinOverX = s01 + z2 * s23 + z4 * s45;
   cosX = c01 + z2 * c23 + z4 * (c45 + z2 * (1.0f / 479001600));
 }
-template <typename T> inline void sinCosWithinQuarterTurn(T x, T& sinX, T& cosX) {
+template <typename T>
+inline void sinCosWithinQuarterTurn(T x, T& sinX, T& cosX) {
   T sinOverX;
   sincAndCosWithinQuarterTurn(x, sinOverX, cosX);
   sinX = x * sinOverX;
@@ -120,7 +121,8 @@ template <typename T> inline void sinCosWithinQuarterTurn(T x, T& sinX, T& cosX)
 // angles), by two Taylor terms each: truncation errors below x^4 / 24 < 1.8e-6 and |x|^5 / 120,
 // float rounding once |x| < 0.03. T is float or lanes.
 inline constexpr float kSmallAngleLimit = 0.08f;
-template <typename T> inline void cosSinOfSmallAngle(T x, T& cosX, T& sinX) {
+template <typename T>
+inline void cosSinOfSmallAngle(T x, T& cosX, T& sinX) {
   T xSqr = x * x;
   cosX = 1.0f - 0.5f * xSqr;
   sinX = x * (1.0f - xSqr * (1.0f / 6.0f));
@@ -143,7 +145,8 @@ extern const SinSqrConstants kSinSqrConstants;
 // 1e-7 x absolute. Lanes is four or eight lanes (always inlined into its caller, whose
 // instruction set it then uses).
 inline constexpr float kSinSqrLimit = 256.0f;
-template <typename Lanes> __attribute__((always_inline)) inline Lanes sinSqr(Lanes x) {
+template <typename Lanes>
+__attribute__((always_inline)) inline Lanes sinSqr(Lanes x) {
   Lanes turns, whole, y;
   if constexpr (std::is_same_v<Lanes, FloatLanes>) {
     const SinSqrConstants& k = kSinSqrConstants;

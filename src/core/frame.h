@@ -13,8 +13,7 @@ struct Frame {
     float sign = std::copysign(1.0f, n.z);
     float a = -1.0f / (sign + n.z);
     float b = n.x * n.y * a;
-    return Frame(Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
-                 Vec3(b, sign + n.y * n.y * a, -n.y), n);
+    return Frame(Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3(b, sign + n.y * n.y * a, -n.y), n);
   }
   // Frame with normal `n` whose first axis s (local x) is as close as possible to `sDirection`:
   // shapes pass dp/du, so a BSDF's local x follows the surface's u direction as in Mitsuba.

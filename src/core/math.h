@@ -14,7 +14,10 @@ inline constexpr float kHalfPi = 0.5f * kPi;
 // The largest float below 1: samples must stay in [0, 1).
 inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
-template <typename T> constexpr T sqr(T x) { return x * x; }
+template <typename T>
+constexpr T sqr(T x) {
+  return x * x;
+}
 inline float clampf(float x, float lo, float hi) { return std::min(std::max(x, lo), hi); }
 inline float lerp(float t, float a, float b) { return a + t * (b - a); }
 inline float safeSqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }

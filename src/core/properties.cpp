@@ -13,13 +13,20 @@ namespace {
 
 const char* describe(const Properties::Value& v) {
   switch (v.kind) {
-    case Properties::ValueKind::Float: return "a <float>";
-    case Properties::ValueKind::Integer: return "an <integer>";
-    case Properties::ValueKind::Boolean: return "a <boolean>";
-    case Properties::ValueKind::String: return "a <string>";
-    case Properties::ValueKind::Vector: return "a <point>/<vector>";
-    case Properties::ValueKind::Spectrum: return v.isRGB ? "an <rgb>" : "a <spectrum>";
-    case Properties::ValueKind::Transform: return "a <transform>";
+    case Properties::ValueKind::Float:
+      return "a <float>";
+    case Properties::ValueKind::Integer:
+      return "an <integer>";
+    case Properties::ValueKind::Boolean:
+      return "a <boolean>";
+    case Properties::ValueKind::String:
+      return "a <string>";
+    case Properties::ValueKind::Vector:
+      return "a <point>/<vector>";
+    case Properties::ValueKind::Spectrum:
+      return v.isRGB ? "an <rgb>" : "a <spectrum>";
+    case Properties::ValueKind::Transform:
+      return "a <transform>";
   }
   return "a value";
 }
@@ -37,8 +44,8 @@ const Properties::Value* Properties::find(const std::string& name, std::initiali
   const Value& v = it->second;
   v.used = true;
   if (std::find(kinds.begin(), kinds.end(), v.kind) == kinds.end())
-    throw InputError(v.location, "parameter '" + name + "' of " + element() + " must be " + expected + ", not " +
-                                     describe(v));
+    throw InputError(v.location,
+                     "parameter '" + name + "' of " + element() + " must be " + expected + ", not " + describe(v));
   return &v;
 }
 
@@ -59,8 +66,7 @@ namespace {
 
 float toFloat(const Properties::Value& v, const std::string& name) {
   float f = float(v.number);
-  if (!std::isfinite(f))
-    throw InputError(v.location, "parameter '" + name + "' is out of the range of a float");
+  if (!std::isfinite(f)) throw InputError(v.location, "parameter '" + name + "' is out of the range of a float");
   return f;
 }
 

@@ -47,14 +47,19 @@ class Properties {
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
 
   // Nested plug-ins (and <ref>s) of type T, in document order; each returned one counts as used.
-  template <typename T> std::vector<std::shared_ptr<T>> children() const {
+  template <typename T>
+  std::vector<std::shared_ptr<T>> children() const {
     std::vector<std::shared_ptr<T>> out;
     for (const Child& c : children_)
-      if (auto p = std::dynamic_pointer_cast<T>(c.object)) { c.used = true; out.push_back(p); }
+      if (auto p = std::dynamic_pointer_cast<T>(c.object)) {
+        c.used = true;
+        out.push_back(p);
+      }
     return out;
   }
   // At most one nested plug-in of type T; nullptr if none, InputError if several.
-  template <typename T> std::shared_ptr<T> child() const {
+  template <typename T>
+  std::shared_ptr<T> child() const {
     auto all = children<T>();
     if (all.size() > 1) throw InputError(location, "'" + type + "' takes at most one nested " + tag + " of this kind");
     return all.empty() ? nullptr : all.front();

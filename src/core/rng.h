@@ -38,6 +38,8 @@ inline uint64_t mixBits(uint64_t v) {
   v ^= v >> 33;
   return v;
 }
-inline uint64_t hashCombine(uint64_t a, uint64_t b) { return mixBits(a ^ (mixBits(b) + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2))); }
+inline uint64_t hashCombine(uint64_t a, uint64_t b) {
+  return mixBits(a ^ (mixBits(b) + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2)));
+}
 
 }  // namespace columba

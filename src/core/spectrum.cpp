@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include "core/illuminant.h"
 #include "core/fast_math.h"
+#include "core/illuminant.h"
 
 namespace columba {
 
@@ -97,7 +97,8 @@ const CieTable& cieTable() {
 }
 
 // Linear interpolation in a table of values at whole nanometres from kLambdaMin to kLambdaMax.
-template <typename T> T interpolateNanometres(const std::array<T, CieTable::kCount>& table, float lambda) {
+template <typename T>
+T interpolateNanometres(const std::array<T, CieTable::kCount>& table, float lambda) {
   float x = clampf(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
   int i = std::min(int(x), CieTable::kCount - 2);
   float f = x - float(i);
@@ -263,7 +264,8 @@ float SpectralDistribution::eval(float lambda) const {
 
 float SpectralDistribution::evalShape(float lambda) const {
   switch (kind_) {
-    case Kind::Constant: return value_;
+    case Kind::Constant:
+      return value_;
     case Kind::Piecewise: {
       if (lambda <= lambdas_.front()) return values_.front();
       if (lambda >= lambdas_.back()) return values_.back();

@@ -23,11 +23,17 @@ struct Spectrum {
   // Through the address: Clang binds no reference to a vector element (vector types alias their
   // element type).
   float& operator[](int i) { return reinterpret_cast<float*>(&lanes)[i]; }
-#define COLUMBA_SPECTRUM_OP(op)                                                             \
-  Spectrum operator op(const Spectrum& o) const { return Spectrum(lanes op o.lanes); }      \
-  Spectrum operator op(float s) const { return Spectrum(lanes op s); }                      \
-  Spectrum& operator op##=(const Spectrum& o) { lanes op##= o.lanes; return *this; }       \
-  Spectrum& operator op##=(float s) { lanes op##= s; return *this; }                       \
+#define COLUMBA_SPECTRUM_OP(op)                                                        \
+  Spectrum operator op(const Spectrum& o) const { return Spectrum(lanes op o.lanes); } \
+  Spectrum operator op(float s) const { return Spectrum(lanes op s); }                 \
+  Spectrum& operator op##=(const Spectrum& o) {                                        \
+    lanes op## = o.lanes;                                                              \
+    return *this;                                                                      \
+  }                                                                                    \
+  Spectrum& operator op##=(float s) {                                                  \
+    lanes op## = s;                                                                    \
+    return *this;                                                                      \
+  }                                                                                    \
   friend Spectrum operator op(float s, const Spectrum& a) { return Spectrum(s op a.lanes); }
   COLUMBA_SPECTRUM_OP(+)
   COLUMBA_SPECTRUM_OP(-)
@@ -114,9 +120,9 @@ class SpectralDistribution {
 
   enum class Kind { Constant, Piecewise, Sigmoid } kind_ = Kind::Constant;
   bool timesD65_ = false;
-  float value_ = 0.0f;                 // constant value, or the sigmoid's scale
+  float value_ = 0.0f;  // constant value, or the sigmoid's scale
   std::vector<float> lambdas_, values_;
-  std::array<float, 3> coeffs_{};      // sigmoid polynomial in normalised wavelength
+  std::array<float, 3> coeffs_{};  // sigmoid polynomial in normalised wavelength
 };
 
 }  // namespace columba

@@ -39,11 +39,17 @@ Matrix4 Matrix4::inverse() const {
     std::swap(a.m[c], a.m[pivot]);
     std::swap(inv.m[c], inv.m[pivot]);
     double d = 1.0 / a.m[c][c];
-    for (int j = 0; j < 4; ++j) { a.m[c][j] *= d; inv.m[c][j] *= d; }
+    for (int j = 0; j < 4; ++j) {
+      a.m[c][j] *= d;
+      inv.m[c][j] *= d;
+    }
     for (int r = 0; r < 4; ++r) {
       if (r == c) continue;
       double f = a.m[r][c];
-      for (int j = 0; j < 4; ++j) { a.m[r][j] -= f * a.m[c][j]; inv.m[r][j] -= f * inv.m[c][j]; }
+      for (int j = 0; j < 4; ++j) {
+        a.m[r][j] -= f * a.m[c][j];
+        inv.m[r][j] -= f * inv.m[c][j];
+      }
     }
   }
   return inv;
@@ -51,7 +57,10 @@ Matrix4 Matrix4::inverse() const {
 
 Transform Transform::translate(const Vec3& d) {
   Matrix4 m = Matrix4::identity(), inv = Matrix4::identity();
-  for (int i = 0; i < 3; ++i) { m.m[i][3] = d[i]; inv.m[i][3] = -d[i]; }
+  for (int i = 0; i < 3; ++i) {
+    m.m[i][3] = d[i];
+    inv.m[i][3] = -d[i];
+  }
   return Transform(m, inv);
 }
 
@@ -73,9 +82,15 @@ Transform Transform::rotate(const Vec3& axis, float angleDeg) {
   double a = double(angleDeg) * kPiDouble / 180.0;
   double s = std::sin(a), c = std::cos(a), t = 1.0 - c;
   Matrix4 m = Matrix4::identity();
-  m.m[0][0] = t * x * x + c;     m.m[0][1] = t * x * y - s * z; m.m[0][2] = t * x * z + s * y;
-  m.m[1][0] = t * x * y + s * z; m.m[1][1] = t * y * y + c;     m.m[1][2] = t * y * z - s * x;
-  m.m[2][0] = t * x * z - s * y; m.m[2][1] = t * y * z + s * x; m.m[2][2] = t * z * z + c;
+  m.m[0][0] = t * x * x + c;
+  m.m[0][1] = t * x * y - s * z;
+  m.m[0][2] = t * x * z + s * y;
+  m.m[1][0] = t * x * y + s * z;
+  m.m[1][1] = t * y * y + c;
+  m.m[1][2] = t * y * z - s * x;
+  m.m[2][0] = t * x * z - s * y;
+  m.m[2][1] = t * y * z + s * x;
+  m.m[2][2] = t * z * z + c;
   return Transform(m, m.transpose());
 }
 

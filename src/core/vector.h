@@ -24,8 +24,18 @@ struct Vec3 {
   Vec3 operator*(float s) const { return {x * s, y * s, z * s}; }
   Vec3 operator/(float s) const { return *this * (1.0f / s); }
   Vec3 operator*(const Vec3& o) const { return {x * o.x, y * o.y, z * o.z}; }
-  Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  Vec3& operator*=(float s) { x *= s; y *= s; z *= s; return *this; }
+  Vec3& operator+=(const Vec3& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  Vec3& operator*=(float s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
   float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
   bool operator==(const Vec3& o) const { return x == o.x && y == o.y && z == o.z; }

@@ -11,9 +11,7 @@ using nlohmann::json;
 namespace {
 constexpr const char* kFormat = "columba-manifest-1";
 
-json pieceIndexJSON(const std::optional<PieceIndex>& index) {
-  return index ? json(index->str()) : json(nullptr);
-}
+json pieceIndexJSON(const std::optional<PieceIndex>& index) { return index ? json(index->str()) : json(nullptr); }
 std::optional<PieceIndex> pieceIndexFrom(const json& j, const char* what) {
   if (j.is_null()) return std::nullopt;
   return parsePieceIndex(what, j.get<std::string>(), 1 << 20);
@@ -22,12 +20,13 @@ std::optional<PieceIndex> pieceIndexFrom(const json& j, const char* what) {
 
 json manifestToJSON(const Manifest& m) {
   json sweeps = json::array();
-  for (const SweepAxis& axis : m.sweeps) sweeps.push_back({{"name", axis.name}, {"spec", axis.spec}, {"values", axis.values}});
+  for (const SweepAxis& axis : m.sweeps)
+    sweeps.push_back({{"name", axis.name}, {"spec", axis.spec}, {"values", axis.values}});
   json frames = json::array();
   for (const ManifestFrame& f : m.frames) {
-    json frame = {{"frame", f.frame},         {"defines", f.defines}, {"seed", f.seed},
-                  {"spp", f.spp ? json(f.spp) : json(nullptr)},     {"output", f.output},
-                  {"status", f.status},       {"time", f.seconds}};
+    json frame = {
+        {"frame", f.frame},   {"defines", f.defines}, {"seed", f.seed},   {"spp", f.spp ? json(f.spp) : json(nullptr)},
+        {"output", f.output}, {"status", f.status},   {"time", f.seconds}};
     if (!f.pieces.empty()) {
       json pieces = json::array();
       for (const ManifestPiece& p : f.pieces)

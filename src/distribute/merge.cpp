@@ -40,8 +40,8 @@ std::string oneLine(std::string text) {
 // The file a missing piece probably has: a sibling's name with its part (or pass) index replaced.
 std::string guessName(const std::string& sibling, const char* kind, int index, int count) {
   std::regex pattern(std::string("\\.") + kind + "[0-9]+of" + std::to_string(count) + "\\.");
-  std::string replaced =
-      std::regex_replace(sibling, pattern, fmt::format(".{}{}of{}.", kind, index, count), std::regex_constants::format_first_only);
+  std::string replaced = std::regex_replace(sibling, pattern, fmt::format(".{}{}of{}.", kind, index, count),
+                                            std::regex_constants::format_first_only);
   return replaced == sibling ? "" : " (expected in '" + replaced + "')";
 }
 
@@ -68,9 +68,10 @@ void checkSameRender(const std::vector<Piece>& pieces) {
                                              f.value(p.info)));
   for (const Piece& p : pieces)
     if (p.image.spectral.centres != first.image.spectral.centres)
-      throw std::runtime_error(fmt::format("the pieces do not belong together: {} and {} have different spectral "
-                                           "channels",
-                                           describe(first), describe(p)));
+      throw std::runtime_error(
+          fmt::format("the pieces do not belong together: {} and {} have different spectral "
+                      "channels",
+                      describe(first), describe(p)));
 }
 
 }  // namespace
@@ -90,9 +91,10 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
   if (pieces.empty()) throw std::runtime_error("no pieces to merge");
   for (const Piece& p : pieces)
     if (!p.info.complete)
-      throw std::runtime_error(fmt::format("{} is unfinished: its render was interrupted (Status: interrupted); "
-                                           "render that piece again",
-                                           describe(p)));
+      throw std::runtime_error(
+          fmt::format("{} is unfinished: its render was interrupted (Status: interrupted); "
+                      "render that piece again",
+                      describe(p)));
   checkSameRender(pieces);
   const PieceInfo& first = pieces.front().info;
   const int width = first.frameWidth, height = first.frameHeight, spp = first.spp;
@@ -104,17 +106,18 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
       throw std::runtime_error(fmt::format("{} holds {}, which is not inside the frame of {} x {}", describe(p),
                                            windowText(w, width), width, height));
     if (p.info.part && !(partWindow(p.info.partBounds, p.info.part->index, width) == w))
-      throw std::runtime_error(fmt::format("{} holds {}, but its part's bounds say {}", describe(p),
-                                           windowText(w, width),
-                                           windowText(partWindow(p.info.partBounds, p.info.part->index, width), width)));
+      throw std::runtime_error(
+          fmt::format("{} holds {}, but its part's bounds say {}", describe(p), windowText(w, width),
+                      windowText(partWindow(p.info.partBounds, p.info.part->index, width), width)));
     if (p.image.width != w.width() || p.image.height != w.height())
-      throw std::runtime_error(fmt::format("{} holds {} x {} pixels for {}", describe(p), p.image.width,
-                                           p.image.height, windowText(w, width)));
+      throw std::runtime_error(fmt::format("{} holds {} x {} pixels for {}", describe(p), p.image.width, p.image.height,
+                                           windowText(w, width)));
   }
 
   // Pieces of the same window, in the order of their samples.
   std::map<std::tuple<int, int, int, int>, std::vector<const Piece*>> groups;
-  for (const Piece& p : pieces) groups[{p.info.window.y0, p.info.window.x0, p.info.window.y1, p.info.window.x1}].push_back(&p);
+  for (const Piece& p : pieces)
+    groups[{p.info.window.y0, p.info.window.x0, p.info.window.y1, p.info.window.x1}].push_back(&p);
   std::vector<std::string> problems;
 
   // Windows: no two overlap, and together they cover the frame.
@@ -138,8 +141,8 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
     for (const Piece& p : pieces)
       if (p.info.part) split = &p;
     auto rowCovered = [&](int y) {
-      return std::all_of(covered.begin() + ptrdiff_t(size_t(y) * width), covered.begin() + ptrdiff_t(size_t(y + 1) * width),
-                         [](unsigned char c) { return c != 0; });
+      return std::all_of(covered.begin() + ptrdiff_t(size_t(y) * width),
+                         covered.begin() + ptrdiff_t(size_t(y + 1) * width), [](unsigned char c) { return c != 0; });
     };
     if (split) {
       const std::vector<int>& bounds = split->info.partBounds;

@@ -56,8 +56,8 @@ PieceIndex parsePieceIndex(const std::string& option, const std::string& text, i
 std::vector<int> balancedRowBands(const std::vector<uint64_t>& rowCosts, int parts) {
   const int rows = int(rowCosts.size());
   if (parts < 1 || parts > rows)
-    throw std::runtime_error(fmt::format("cannot split an image of {} rows into {} parts (at most one part a row)",
-                                         rows, parts));
+    throw std::runtime_error(
+        fmt::format("cannot split an image of {} rows into {} parts (at most one part a row)", rows, parts));
   std::vector<double> prefix(size_t(rows) + 1, 0.0);  // cost of rows [0, y)
   for (int y = 0; y < rows; ++y) prefix[size_t(y) + 1] = prefix[size_t(y)] + double(rowCosts[size_t(y)]) + 1.0;
   const double total = prefix.back();
@@ -83,8 +83,8 @@ PixelRect partWindow(const std::vector<int>& bounds, int part, int width) {
 
 std::pair<int, int> passSamples(const PieceIndex& pass, int spp) {
   if (spp < pass.count)
-    throw std::runtime_error(fmt::format("cannot split {} samples per pixel into {} passes (at least one sample a pass)",
-                                         spp, pass.count));
+    throw std::runtime_error(
+        fmt::format("cannot split {} samples per pixel into {} passes (at least one sample a pass)", spp, pass.count));
   auto start = [&](int k) { return int(int64_t(spp) * k / pass.count); };
   return {start(pass.index - 1), start(pass.index)};
 }
@@ -189,8 +189,8 @@ PieceInfo pieceInfoFromFile(const std::string& path, const EXRImageFile& file) {
     std::string samples = get("Pass samples");
     size_t colon = samples.find(':');
     long long b = 0, e = 0;
-    if (colon == std::string::npos || !parseInt(samples.substr(0, colon), b) || !parseInt(samples.substr(colon + 1), e) ||
-        b < 0 || e <= b || e > info.spp)
+    if (colon == std::string::npos || !parseInt(samples.substr(0, colon), b) ||
+        !parseInt(samples.substr(colon + 1), e) || b < 0 || e <= b || e > info.spp)
       throw fail("its 'Pass samples' attribute is '" + samples + "', not BEGIN:END within the samples per pixel");
     info.sampleBegin = int(b);
     info.sampleEnd = int(e);

@@ -43,21 +43,21 @@ std::string textHash(const std::string& bytes);
 
 // What a piece (or a whole image) records about the render it belongs to, in its EXR attributes.
 struct PieceInfo {
-  std::string scene;       // the scene file as given ("Scene")
-  std::string sceneHash;   // textHash of the scene file ("Scene hash")
-  std::string defines;     // the -D values, one name=value a line ("Defines")
-  uint64_t seed = 0;       // "Seed"
-  int spp = 0;             // of the whole render ("Samples per pixel")
+  std::string scene;                    // the scene file as given ("Scene")
+  std::string sceneHash;                // textHash of the scene file ("Scene hash")
+  std::string defines;                  // the -D values, one name=value a line ("Defines")
+  uint64_t seed = 0;                    // "Seed"
+  int spp = 0;                          // of the whole render ("Samples per pixel")
   int frameWidth = 0, frameHeight = 0;  // of the whole image ("Frame size", "512x512")
-  std::string spectral;    // the spectral channels' description, "" for RGB ("Spectral channels")
-  bool complete = true;    // "Status": "complete" or "interrupted"
-  double seconds = 0.0;    // "Render time"
+  std::string spectral;                 // the spectral channels' description, "" for RGB ("Spectral channels")
+  bool complete = true;                 // "Status": "complete" or "interrupted"
+  double seconds = 0.0;                 // "Render time"
   // Set for pieces only:
   std::optional<PieceIndex> part;  // "Part", with its band's rows in "Part rows"
   std::vector<int> partBounds;     // every band's bounds: "0,130,260,390,512" ("Part bounds")
   std::optional<PieceIndex> pass;  // "Pass", with the sample indices [begin, end) in "Pass samples"
   int sampleBegin = 0, sampleEnd = 0;
-  PixelRect window;                // the EXR data window (not an attribute)
+  PixelRect window;  // the EXR data window (not an attribute)
 };
 
 ImageMetadata pieceMetadata(const PieceInfo& info);

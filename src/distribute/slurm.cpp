@@ -43,8 +43,8 @@ std::string arraySpec(std::vector<int> tasks) {
   for (size_t i = 0; i < tasks.size();) {
     size_t j = i;
     while (j + 1 < tasks.size() && tasks[j + 1] == tasks[j] + 1) ++j;
-    spec += (spec.empty() ? "" : ",") + (j == i ? std::to_string(tasks[i])
-                                                : std::to_string(tasks[i]) + "-" + std::to_string(tasks[j]));
+    spec += (spec.empty() ? "" : ",") +
+            (j == i ? std::to_string(tasks[i]) : std::to_string(tasks[i]) + "-" + std::to_string(tasks[j]));
     i = j + 1;
   }
   return spec;
@@ -52,8 +52,8 @@ std::string arraySpec(std::vector<int> tasks) {
 
 namespace {
 std::string sbatchHeader(const SlurmJob& job, const std::string& name, const std::string& log, int cpus) {
-  std::string text = fmt::format("#SBATCH --job-name={}\n#SBATCH --output={}\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task={}\n",
-                                 name, log, cpus);
+  std::string text = fmt::format(
+      "#SBATCH --job-name={}\n#SBATCH --output={}\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task={}\n", name, log, cpus);
   if (!job.partition.empty()) text += "#SBATCH --partition=" + job.partition + "\n";
   if (!job.time.empty()) text += "#SBATCH --time=" + job.time + "\n";
   return text;
@@ -89,8 +89,9 @@ std::string renderBatchScript(const SlurmJob& job) {
           " --threads \"${SLURM_CPUS_PER_TASK:-1}\"\n";
   text += "status=$?\n";
   text += "ms=$(( ($(date +%s%N) - start) / 1000000 ))\n";
-  text += "printf 'columba task %s: status %s after %d.%03d s, finished %s\\n' \"$task\" \"$status\" "
-          "$((ms / 1000)) $((ms % 1000)) \"$(date -Is)\"\n";
+  text +=
+      "printf 'columba task %s: status %s after %d.%03d s, finished %s\\n' \"$task\" \"$status\" "
+      "$((ms / 1000)) $((ms % 1000)) \"$(date -Is)\"\n";
   text += "exit $status\n";
   return text;
 }
@@ -117,8 +118,9 @@ MissingWork missingWork(const Manifest& manifest, const std::function<bool(const
     work.framesToMerge.push_back(frame.frame);
     for (const ManifestPiece& piece : frame.pieces)
       if (!pieceDone(piece))
-        work.tasks.push_back(taskIndex({frame.frame, piece.part ? piece.part->index : 1, piece.pass ? piece.pass->index : 1},
-                                       manifest.parts, manifest.passes));
+        work.tasks.push_back(
+            taskIndex({frame.frame, piece.part ? piece.part->index : 1, piece.pass ? piece.pass->index : 1},
+                      manifest.parts, manifest.passes));
   }
   return work;
 }
@@ -163,8 +165,10 @@ ProgramResult runProgram(const std::vector<std::string>& arguments) {
   char buffer[4096];
   for (;;) {
     ssize_t n = ::read(pipeFds[0], buffer, sizeof buffer);
-    if (n > 0) result.output.append(buffer, size_t(n));
-    else if (n == 0 || errno != EINTR) break;
+    if (n > 0)
+      result.output.append(buffer, size_t(n));
+    else if (n == 0 || errno != EINTR)
+      break;
   }
   ::close(pipeFds[0]);
   int status = 0;
@@ -183,7 +187,8 @@ std::string parseJobId(const std::string& output) {
     std::string line = output.substr(start, end == std::string::npos ? std::string::npos : end - start);
     size_t digits = 0;
     while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits]))) ++digits;
-    if (digits > 0 && (digits == line.size() || line[digits] == ';' || line[digits] == '\r')) id = line.substr(0, digits);
+    if (digits > 0 && (digits == line.size() || line[digits] == ';' || line[digits] == '\r'))
+      id = line.substr(0, digits);
     if (end == std::string::npos) break;
     start = end + 1;
   }

@@ -11,13 +11,13 @@
 namespace columba {
 
 struct SlurmJob {
-  std::string columba;                        // the binary the tasks run (absolute)
-  std::string workDir;                        // the directory the tasks run in (absolute)
-  std::vector<std::string> renderArguments;   // after `columba render`: scene, options, sweeps, pieces' names
-  std::string manifestPath;                   // absolute
-  std::string logDir;                         // absolute; one log per task
+  std::string columba;                       // the binary the tasks run (absolute)
+  std::string workDir;                       // the directory the tasks run in (absolute)
+  std::vector<std::string> renderArguments;  // after `columba render`: scene, options, sweeps, pieces' names
+  std::string manifestPath;                  // absolute
+  std::string logDir;                        // absolute; one log per task
   std::string jobName = "columba";
-  std::string partition, time;                // "" leaves them to the cluster's defaults
+  std::string partition, time;  // "" leaves them to the cluster's defaults
   int cpusPerTask = 1;
   int frames = 1, parts = 1, passes = 1;
 };

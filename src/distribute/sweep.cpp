@@ -87,8 +87,8 @@ SweepAxis parseSweep(const std::string& text) {
         throw std::runtime_error(fmt::format("--sweep {}: '{}' is not a number (START:STOP:STEP)", text, range[i]));
     if (step == 0.0) throw std::runtime_error("--sweep " + text + ": the step must not be 0");
     if ((stop - start) / step < 0.0)
-      throw std::runtime_error(fmt::format("--sweep {}: a step of {} never gets from {} to {}", text, range[2],
-                                           range[0], range[1]));
+      throw std::runtime_error(
+          fmt::format("--sweep {}: a step of {} never gets from {} to {}", text, range[2], range[0], range[1]));
     // Up to STOP inclusive, allowing for the round-off of a decimal step (0.1 is not exact).
     const double steps = std::floor((stop - start) / step + 1e-9);
     if (steps + 1 > double(kMostFrames))
@@ -107,8 +107,7 @@ SweepAxis parseSweep(const std::string& text) {
       if (v.empty()) throw std::runtime_error("--sweep " + text + ": an empty value in the list");
   }
   std::set<std::string> distinct(axis.values.begin(), axis.values.end());
-  if (distinct.size() != axis.values.size())
-    throw std::runtime_error("--sweep " + text + ": a value is given twice");
+  if (distinct.size() != axis.values.size()) throw std::runtime_error("--sweep " + text + ": a value is given twice");
   return axis;
 }
 
@@ -119,8 +118,7 @@ std::vector<SweepFrame> expandSweeps(const std::vector<SweepAxis>& axes) {
     if (!names.insert(axis.name).second) throw std::runtime_error("--sweep " + axis.name + " is given twice");
     if (axis.values.empty()) throw std::runtime_error("--sweep " + axis.name + " has no values");
     total *= axis.values.size();
-    if (total > kMostFrames)
-      throw std::runtime_error(fmt::format("the sweeps make more than {} frames", kMostFrames));
+    if (total > kMostFrames) throw std::runtime_error(fmt::format("the sweeps make more than {} frames", kMostFrames));
   }
   std::vector<SweepFrame> frames(total);
   for (size_t f = 0; f < total; ++f) {
@@ -162,9 +160,10 @@ std::string frameFileFromPattern(const std::string& pattern, const SweepFrame& f
       size_t digitsStart = j;
       while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
       if (j >= pattern.size() || pattern[j] != 'd' || j - digitsStart > 2)
-        throw std::runtime_error(fmt::format("--frames '{}': '%' must start %d, %0Nd or %Nd (the frame index) or "
-                                             "be written %%",
-                                             pattern));
+        throw std::runtime_error(
+            fmt::format("--frames '{}': '%' must start %d, %0Nd or %Nd (the frame index) or "
+                        "be written %%",
+                        pattern));
       int width = j > digitsStart ? std::atoi(pattern.substr(digitsStart, j - digitsStart).c_str()) : 0;
       out += zero ? fmt::format("{:0{}d}", frame.index, width) : fmt::format("{:{}d}", frame.index, width);
       i = j;
@@ -186,12 +185,13 @@ std::string frameFileFromPattern(const std::string& pattern, const SweepFrame& f
         const std::string spec = "{:" + field.substr(colon + 1) + "}";
         double number = 0;
         if (!parseNumber(value, number))
-          throw std::runtime_error(fmt::format("--frames '{}': {{{}}} formats a number, but the value is '{}'", pattern,
-                                               field, value));
+          throw std::runtime_error(
+              fmt::format("--frames '{}': {{{}}} formats a number, but the value is '{}'", pattern, field, value));
         try {
           // Whole numbers as integers ("{angle:03}"), unless the spec is for floating point.
           std::string text;
-          if (number == std::floor(number) && std::abs(number) < 1e15 && value.find_first_of(".eE") == std::string::npos)
+          if (number == std::floor(number) && std::abs(number) < 1e15 &&
+              value.find_first_of(".eE") == std::string::npos)
             try {
               text = fmt::format(fmt::runtime(spec), (long long)number);
             } catch (const fmt::format_error&) {

@@ -1,7 +1,7 @@
 #pragma once
 // `area`: uniform radiance leaving the front side of a shape.
-#include "emitters/emitter.h"
 #include "core/properties.h"
+#include "emitters/emitter.h"
 
 namespace columba {
 

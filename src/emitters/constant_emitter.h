@@ -1,7 +1,7 @@
 #pragma once
 // `constant`: the same radiance from every direction at infinity.
-#include "emitters/emitter.h"
 #include "core/properties.h"
+#include "emitters/emitter.h"
 
 namespace columba {
 

@@ -1,8 +1,8 @@
 #pragma once
 // `directional`: light from infinitely far away along `direction`, of irradiance `irradiance`
 // (W/m^2/nm) on a surface facing it.
-#include "emitters/emitter.h"
 #include "core/properties.h"
+#include "emitters/emitter.h"
 
 namespace columba {
 

@@ -3,10 +3,10 @@
 // importance-sampled by pixel luminance.
 #include <array>
 #include "core/distribution.h"
+#include "core/properties.h"
 #include "core/transform.h"
 #include "emitters/emitter.h"
 #include "io/image.h"
-#include "core/properties.h"
 
 namespace columba {
 

@@ -1,7 +1,7 @@
 #pragma once
 // `point`: an isotropic point light of radiant intensity `intensity` (W/sr/nm).
-#include "emitters/emitter.h"
 #include "core/properties.h"
+#include "emitters/emitter.h"
 
 namespace columba {
 

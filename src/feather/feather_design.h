@@ -12,14 +12,14 @@ namespace columba {
 
 struct FeatherDesign {
   float length = 1.2f;
-  float width = 0.8f;              // widest extent of the vane, both sides together
+  float width = 0.8f;  // widest extent of the vane, both sides together
   int barbsPerSide = 50;
-  float bareBase = 0.08f;          // fraction of the rachis below the first barb (the calamus)
-  float barbAngleBase = 0.96f;     // angle between barb and rachis at the base, radians (55 degrees)
-  float barbAngleTip = 0.52f;      // ... and at the tip (30 degrees)
-  float barbCurl = 0.35f;          // how much a barb turns toward the tip from its base to its end
-  float rachisBend = 0.04f;        // sideways offset of the rachis tip, as a fraction of the length
-  float rachisHalfWidth = 0.0075f; // barbs start this far from the rachis centre line
+  float bareBase = 0.08f;           // fraction of the rachis below the first barb (the calamus)
+  float barbAngleBase = 0.96f;      // angle between barb and rachis at the base, radians (55 degrees)
+  float barbAngleTip = 0.52f;       // ... and at the tip (30 degrees)
+  float barbCurl = 0.35f;           // how much a barb turns toward the tip from its base to its end
+  float rachisBend = 0.04f;         // sideways offset of the rachis tip, as a fraction of the length
+  float rachisHalfWidth = 0.0075f;  // barbs start this far from the rachis centre line
 };
 
 // Half-width of the vane at fraction t of the rachis.

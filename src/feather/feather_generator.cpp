@@ -22,7 +22,10 @@ constexpr float kBarbuleH = 1.25f, kBarbuleMu = -0.35f;
 class VaneMapping {
  public:
   VaneMapping(const NeckSurface* neck, const FeatherPlacement& placement, const FeatherDesign& design)
-      : neck_(neck), placement_(placement), halfWidth_(0.5f * design.width), dome_(0.01f * design.width),
+      : neck_(neck),
+        placement_(placement),
+        halfWidth_(0.5f * design.width),
+        dome_(0.01f * design.width),
         step_(1e-3f * design.length) {}
 
   // Surface coordinates (X, Y) of a local point.

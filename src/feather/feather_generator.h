@@ -24,8 +24,8 @@ namespace columba {
 
 struct FeatherGenerationOptions {
   bool neck = false;
-  int feathers = 60;      // neck only
-  int barbsPerSide = 0;   // 0: as many as lie edge to edge at the feather shape's default barbwidth
+  int feathers = 60;     // neck only
+  int barbsPerSide = 0;  // 0: as many as lie edge to edge at the feather shape's default barbwidth
   uint64_t seed = 1;
   bool binary = false;
 };

@@ -51,8 +51,8 @@ void FeatherPlyWriter::writeBarb(const BarbVertex* vertices) {
   ++written_;
   for (int i = 0; i < kBarbVertices; ++i) {
     const BarbVertex& v = vertices[i];
-    const float values[9] = {v.position.x, v.position.y, v.position.z, v.fileH, v.fileMu,
-                             v.height, v.normal.x, v.normal.y, v.normal.z};
+    const float values[9] = {v.position.x, v.position.y, v.position.z, v.fileH,   v.fileMu,
+                             v.height,     v.normal.x,   v.normal.y,   v.normal.z};
     if (binary_) {
       put(reinterpret_cast<const char*>(values), sizeof(values));
     } else {

@@ -19,7 +19,7 @@ namespace columba {
 
 class NeckSurface {
  public:
-  static constexpr float kRadius = 4.0f;   // of the cylinder
+  static constexpr float kRadius = 4.0f;  // of the cylinder
   static constexpr float kCentreX = 0.5f;
   static constexpr float kHalfWidth = 3.2f;  // arc length from the centre line to either side
   static constexpr float kTop = -1.6f, kBottom = 3.0f;
@@ -29,11 +29,11 @@ class NeckSurface {
 };
 
 struct FeatherPlacement {
-  Vec2 base;           // surface coordinates of the rachis base
-  float heading = 0;   // angle of the rachis from +Y toward +X, radians
-  float scale = 1;     // of the feather design's size
-  float pitch = 0;     // rise per unit length along the rachis
-  uint64_t seed = 0;   // for the feather's own randomness
+  Vec2 base;          // surface coordinates of the rachis base
+  float heading = 0;  // angle of the rachis from +Y toward +X, radians
+  float scale = 1;    // of the feather design's size
+  float pitch = 0;    // rise per unit length along the rachis
+  uint64_t seed = 0;  // for the feather's own randomness
 };
 
 struct NeckLayout {

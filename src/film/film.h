@@ -1,9 +1,9 @@
 #pragma once
 // `hdrfilm`: the image size and the reconstruction filter. Pixels are accumulated by the renderer.
 #include <memory>
-#include "io/image.h"
-#include "film/reconstruction_filter.h"
 #include "core/properties.h"
+#include "film/reconstruction_filter.h"
+#include "io/image.h"
 
 namespace columba {
 
@@ -18,9 +18,7 @@ class Film : public Object {
   // saying how much memory it needs.
   Image makeImage() const;
   // The same film at another size (fitting a scene to a measured image of that size).
-  std::shared_ptr<Film> resized(int width, int height) const {
-    return std::make_shared<Film>(width, height, filter_);
-  }
+  std::shared_ptr<Film> resized(int width, int height) const { return std::make_shared<Film>(width, height, filter_); }
 
  private:
   int width_, height_;

@@ -39,13 +39,13 @@ FitParameter parseFitParameter(const std::string& text) {
   p.lower = parseNumber(fields[0], text);
   p.upper = parseNumber(fields[1], text);
   if (!(p.lower < p.upper))
-    throw std::runtime_error(fmt::format("--vary '{}': the lower bound {} must be below the upper bound {}", text,
-                                         p.lower, p.upper));
+    throw std::runtime_error(
+        fmt::format("--vary '{}': the lower bound {} must be below the upper bound {}", text, p.lower, p.upper));
   if (fields.size() == 3) {
     p.start = parseNumber(fields[2], text);
     if (*p.start < p.lower || *p.start > p.upper)
-      throw std::runtime_error(fmt::format("--vary '{}': the start {} lies outside [{}, {}]", text, *p.start, p.lower,
-                                           p.upper));
+      throw std::runtime_error(
+          fmt::format("--vary '{}': the start {} lies outside [{}, {}]", text, *p.start, p.lower, p.upper));
   }
   return p;
 }

@@ -68,8 +68,9 @@ nlohmann::json fitRecord(const FitResult& result, const nlohmann::json& settings
 
 CsvTable historyTable(const FitResult& result) {
   CsvTable table;
-  table.comments = {"every evaluation of the loss in order; stage 0 start, 1 global (DIRECT), 2 local "
-                    "(BOBYQA or Nelder-Mead), 3 loss profile; seconds since the fit began"};
+  table.comments = {
+      "every evaluation of the loss in order; stage 0 start, 1 global (DIRECT), 2 local "
+      "(BOBYQA or Nelder-Mead), 3 loss profile; seconds since the fit began"};
   table.columns = {"evaluation", "stage"};
   for (const FitParameter& p : result.parameters) table.columns.push_back(p.name);
   for (const char* c : {"loss", "scale", "best_loss", "seconds"}) table.columns.push_back(c);
@@ -92,8 +93,7 @@ Image profilesImage(const FitResult& result) {
     const FitParameter& p = result.parameters[i];
     const LossProfile& profile = result.profiles[i];
     LinePlot plot;
-    plot.title = fmt::format("{} = {:.4g} in [{:.4g}, {:.4g}]", p.name, result.values[i], profile.lower,
-                             profile.upper);
+    plot.title = fmt::format("{} = {:.4g} in [{:.4g}, {:.4g}]", p.name, result.values[i], profile.lower, profile.upper);
     plot.subtitle = fmt::format("loss < (1 + {:g}) x minimum inside the interval (dashed)", result.profileRise);
     plot.xLabel = p.name;
     plot.yLabel = "loss";
@@ -108,12 +108,13 @@ Image profilesImage(const FitResult& result) {
     plot.yMin = float(result.loss.loss * 0.95);
     plot.yMax = float(std::max(highest, threshold) * 1.02);
     if (!(plot.yMax > plot.yMin)) plot.yMax = plot.yMin + 1.0f;
-    PlotSeries level{"threshold", {Vec2(plot.xMin, float(threshold)), Vec2(plot.xMax, float(threshold))},
-                     seriesColours()[1], true};
+    PlotSeries level{
+        "threshold", {Vec2(plot.xMin, float(threshold)), Vec2(plot.xMax, float(threshold))}, seriesColours()[1], true};
     PlotSeries interval{"interval",
                         {Vec2(float(profile.lower), plot.yMin), Vec2(float(profile.lower), plot.yMax),
                          Vec2(float(profile.upper), plot.yMax), Vec2(float(profile.upper), plot.yMin)},
-                        seriesColours()[2], true};
+                        seriesColours()[2],
+                        true};
     plot.series = {loss, level, interval};
     entries.push_back({renderLinePlot(plot, 1000, 640), p.name});
   }
@@ -174,9 +175,8 @@ Image compareImage(const Image& target, const Image& render, double scale, const
     const float t = 2.0f * (float(k) + 0.5f) / float(panel) - 1.0f;
     canvas.fillRect(barX + float(k), barY, barX + float(k + 1), barY + 16.0f, diverging(t));
   }
-  const std::vector<std::pair<float, std::string>> labels = {{0.0f, fmt::format("{:.3g}", -largestDifference)},
-                                                             {0.5f, "0"},
-                                                             {1.0f, fmt::format("{:.3g}", largestDifference)}};
+  const std::vector<std::pair<float, std::string>> labels = {
+      {0.0f, fmt::format("{:.3g}", -largestDifference)}, {0.5f, "0"}, {1.0f, fmt::format("{:.3g}", largestDifference)}};
   // Left-aligned at the bar's start, centred in its middle, right-aligned at its end.
   for (const auto& [at, label] : labels)
     canvas.text(barX + at * (float(panel) - Canvas::textWidth(label)), barY + 22.0f, label, kBlack);

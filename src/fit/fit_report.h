@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "io/data_files.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
 #include "fit/spectra_fit.h"
+#include "io/data_files.h"
 #include "io/image.h"
 
 namespace columba {

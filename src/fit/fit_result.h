@@ -16,7 +16,7 @@ struct FitResult {
   double profileRise = 0.1;    // the intervals: where the loss stays below (1 + rise) x its minimum
   std::vector<LossProfile> profiles;
   int profileEvaluations = 0;
-  double totalSeconds = 0.0;   // with the profiles
+  double totalSeconds = 0.0;  // with the profiles
   std::vector<Evaluation> history;
 };
 

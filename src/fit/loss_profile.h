@@ -10,8 +10,8 @@
 namespace columba {
 
 struct LossProfile {
-  std::vector<double> values, losses;  // the slice's evaluations, sorted by value
-  double lower = 0.0, upper = 0.0;     // the interval
+  std::vector<double> values, losses;               // the slice's evaluations, sorted by value
+  double lower = 0.0, upper = 0.0;                  // the interval
   bool lowerAtBound = false, upperAtBound = false;  // the loss never rose enough on that side
 };
 

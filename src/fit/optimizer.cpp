@@ -12,9 +12,7 @@ namespace columba {
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // The stages work in the unit cube, so that one step size and tolerance suit every parameter.
 struct UnitCube {
@@ -29,7 +27,8 @@ struct UnitCube {
   }
   std::vector<double> toUnit(const std::vector<double>& v) const {
     std::vector<double> u(v.size());
-    for (size_t i = 0; i < v.size(); ++i) u[i] = (v[i] - parameters[i].lower) / (parameters[i].upper - parameters[i].lower);
+    for (size_t i = 0; i < v.size(); ++i)
+      u[i] = (v[i] - parameters[i].lower) / (parameters[i].upper - parameters[i].lower);
     return u;
   }
 };
@@ -142,7 +141,8 @@ void minimise(const std::vector<FitParameter>& parameters, const OptimizerSettin
   const int globalEvaluations = int(std::floor(settings.globalShare * (settings.maxEvaluations - 1)));
   const nlopt_algorithm global = nlopt_algorithm_from_string(settings.globalAlgorithm.c_str());
   if (int(global) < 0 || settings.globalAlgorithm.rfind("GN_", 0) != 0)
-    throw std::runtime_error("'" + settings.globalAlgorithm + "' is not a global derivative-free NLopt algorithm (GN_...)");
+    throw std::runtime_error("'" + settings.globalAlgorithm +
+                             "' is not a global derivative-free NLopt algorithm (GN_...)");
   runStage(global, "global", cube, cube.toUnit(start), globalEvaluations,
            settings.globalShare * settings.maxSeconds - log.seconds(), log);
   // NLopt's BOBYQA needs two dimensions or more; one parameter gets Nelder-Mead.

@@ -24,8 +24,8 @@ struct OptimizerSettings {
 };
 
 struct Evaluation {
-  int index = 0;       // 1-based, in the order evaluated
-  std::string stage;   // "start", "global", "local" or "profile"
+  int index = 0;      // 1-based, in the order evaluated
+  std::string stage;  // "start", "global", "local" or "profile"
   std::vector<double> values;
   LossValue loss;
   double seconds = 0;  // since the fit began

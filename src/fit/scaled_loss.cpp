@@ -30,7 +30,8 @@ ScaledLoss::ScaledLoss(std::vector<float> target, std::vector<float> weights, Lo
     : target_(std::move(target)), weights_(std::move(weights)), kind_(kind), mode_(mode) {
   if (weights_.empty()) weights_.assign(target_.size(), 1.0f);
   if (weights_.size() != target_.size())
-    throw std::runtime_error(fmt::format("the loss has {} weights for {} target values", weights_.size(), target_.size()));
+    throw std::runtime_error(
+        fmt::format("the loss has {} weights for {} target values", weights_.size(), target_.size()));
   double magnitude = 0.0;
   for (size_t i = 0; i < target_.size(); ++i) {
     if (!std::isfinite(target_[i])) weights_[i] = 0.0f;  // unusable measurements carry no weight
@@ -63,9 +64,15 @@ LossValue ScaledLoss::operator()(const std::vector<float>& model) const {
     const double m = std::isfinite(model[i]) ? result.scale * model[i] : 0.0;
     double d = 0.0;
     switch (kind_) {
-      case LossKind::MSE: d = m - t; break;
-      case LossKind::Log: d = std::log(std::max(m, 0.0) + offset_) - std::log(std::max(t, 0.0) + offset_); break;
-      case LossKind::Relative: d = (m - t) / (std::abs(t) + offset_); break;
+      case LossKind::MSE:
+        d = m - t;
+        break;
+      case LossKind::Log:
+        d = std::log(std::max(m, 0.0) + offset_) - std::log(std::max(t, 0.0) + offset_);
+        break;
+      case LossKind::Relative:
+        d = (m - t) / (std::abs(t) + offset_);
+        break;
     }
     sum += weights_[i] * d * d;
   }

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "builtin/builtin_plugins.h"
 #include "core/quiet_warnings.h"
 #include "film/film.h"
-#include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -59,10 +59,10 @@ Image renderSceneWith(const SceneFitSettings& settings, const std::vector<double
   Scene scene(parsed, SourceLocation{settings.scenePath, 0});
   const Film& film = scene.sensor().film();
   if (film.width() != settings.target.width || film.height() != settings.target.height)
-    throw std::runtime_error(fmt::format("{}: the film is {}x{} and could not be set to the target's {}x{} "
-                                         "(give the sensor an <film type=\"hdrfilm\">)",
-                                         settings.scenePath, film.width(), film.height(), settings.target.width,
-                                         settings.target.height));
+    throw std::runtime_error(
+        fmt::format("{}: the film is {}x{} and could not be set to the target's {}x{} "
+                    "(give the sensor an <film type=\"hdrfilm\">)",
+                    settings.scenePath, film.width(), film.height(), settings.target.width, settings.target.height));
   RenderSettings render;
   render.samplesPerPixel = settings.samplesPerPixel;
   render.seed = settings.seed;

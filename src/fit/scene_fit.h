@@ -19,7 +19,7 @@ struct SceneFitSettings {
   std::vector<FitParameter> parameters;
   int samplesPerPixel = 0;  // 0: the scene's sampler
   uint64_t seed = 0;
-  int threads = 0;          // 0: all hardware threads
+  int threads = 0;  // 0: all hardware threads
   LossKind loss = LossKind::MSE;
   ScaleMode scale = ScaleMode::Free;
   FitSettings fit;

@@ -37,8 +37,8 @@ bool sameDirections(const SpectraSample& a, const SpectraSample& b) {
 std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError({path, 0}, "cannot open the spectra file");
-  static const std::array<const char*, 6> names = {"theta_i", "phi_i", "theta_o", "phi_o", "wavelength_nm",
-                                                   "reflectance"};
+  static const std::array<const char*, 6> names = {"theta_i", "phi_i",         "theta_o",
+                                                   "phi_o",   "wavelength_nm", "reflectance"};
   std::array<size_t, 6> column{};
   bool haveHeader = false;
   std::vector<SpectraSample> samples;
@@ -51,7 +51,8 @@ std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
         auto it = std::find(fields.begin(), fields.end(), names[k]);
         if (it == fields.end())
           throw InputError({path, lineNo}, fmt::format("the header has no column '{}' (it needs theta_i, phi_i, "
-                                                       "theta_o, phi_o, wavelength_nm, reflectance)", names[k]));
+                                                       "theta_o, phi_o, wavelength_nm, reflectance)",
+                                                       names[k]));
         column[k] = size_t(it - fields.begin());
       }
       haveHeader = true;
@@ -67,7 +68,8 @@ std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
     if (v[4] < 360.0f || v[4] > 830.0f)
       throw InputError({path, lineNo}, fmt::format("wavelength_nm {} lies outside 360..830 nm", v[4]));
     if (v[0] < 0.0f || v[0] >= 90.0f || v[2] < 0.0f || v[2] >= 90.0f)
-      throw InputError({path, lineNo}, fmt::format("theta_i {} and theta_o {} must lie in [0, 90) degrees", v[0], v[2]));
+      throw InputError({path, lineNo},
+                       fmt::format("theta_i {} and theta_o {} must lie in [0, 90) degrees", v[0], v[2]));
     samples.push_back({v[0], v[1], v[2], v[3], v[4], v[5]});
   }
   if (samples.empty()) throw InputError({path, 0}, "the spectra file has no data rows");
@@ -98,7 +100,7 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
 BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std::map<std::string, double>& values) {
   BarbuleParameters p = base;
   const std::map<std::string, float*> fields = {{"b", &p.b},   {"phi_0", &p.phi0}, {"phi_1", &p.phi1},
-                                                {"mu", &p.mu}, {"H", &p.H},         {"height", &p.height}};
+                                                {"mu", &p.mu}, {"H", &p.H},        {"height", &p.height}};
   for (const auto& [name, value] : values) {
     auto it = fields.find(name);
     if (it == fields.end())

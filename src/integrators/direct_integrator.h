@@ -2,8 +2,8 @@
 // `direct`: direct illumination only, from `emitter_samples` emitter samples and `bsdf_samples`
 // BSDF samples per hit, combined by MIS when both are used. Camera rays continue through
 // pass-through surfaces with their transmitted weight.
-#include "integrators/integrator.h"
 #include "core/properties.h"
+#include "integrators/integrator.h"
 
 namespace columba {
 

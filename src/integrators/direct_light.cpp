@@ -2,7 +2,8 @@
 
 namespace columba {
 
-std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u) {
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl,
+                                       Vec2 u) {
   LightSample light;
   light.emitter = scene.sampleEmitter(u.x, &light.pmf);
   if (!light.emitter) return std::nullopt;
@@ -18,8 +19,8 @@ std::optional<DirectLightSample> connectToLight(const Scene& scene, const Surfac
                                                 uint64_t& rays) {
   if (f.value.isZero()) return std::nullopt;
   const EmitterSample& es = light.sample;
-  Ray shadow = std::isfinite(es.distance) ? hit.spawnRayTo(hit.p + es.direction * es.distance)
-                                          : hit.spawnRay(es.direction);
+  Ray shadow =
+      std::isfinite(es.distance) ? hit.spawnRayTo(hit.p + es.direction * es.distance) : hit.spawnRay(es.direction);
   Spectrum tr = scene.transmittance(shadow, wl, rays);
   if (tr.isZero()) return std::nullopt;
   DirectLightSample s;

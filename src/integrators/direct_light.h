@@ -6,9 +6,9 @@
 namespace columba {
 
 struct DirectLightSample {
-  Spectrum value;        // f * Le * transmittance / lightPdf, before any MIS weight
-  float lightPdf = 0.0f; // solid-angle density including the emitter choice
-  float bsdfPdf = 0.0f;  // density of BSDF sampling producing the same direction
+  Spectrum value;         // f * Le * transmittance / lightPdf, before any MIS weight
+  float lightPdf = 0.0f;  // solid-angle density including the emitter choice
+  float bsdfPdf = 0.0f;   // density of BSDF sampling producing the same direction
   bool deltaLight = false;
 };
 
@@ -22,7 +22,8 @@ struct LightSample {
   float pmf = 0.0f;  // probability of choosing `emitter`
   Vec3 woLocal;      // the direction toward it in the hit's shading frame
 };
-std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u);
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl,
+                                       Vec2 u);
 std::optional<DirectLightSample> connectToLight(const Scene& scene, const SurfaceInteraction& hit,
                                                 const LightSample& light, const BSDFEvalPdf& f, const Wavelengths& wl,
                                                 uint64_t& rays);

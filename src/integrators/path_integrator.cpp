@@ -17,9 +17,12 @@ constexpr int kMaxPassThroughSteps = 1024;
 float PathIntegrator::hitWeight(bool afterDeltaBounce, float bsdfPdf, float lightPdf) const {
   if (afterDeltaBounce) return 1.0f;  // no emitter sample could have found it
   switch (strategy_) {
-    case Strategy::MIS: return powerHeuristic(bsdfPdf, lightPdf);
-    case Strategy::EmitterOnly: return 0.0f;
-    case Strategy::BSDFOnly: return 1.0f;
+    case Strategy::MIS:
+      return powerHeuristic(bsdfPdf, lightPdf);
+    case Strategy::EmitterOnly:
+      return 0.0f;
+    case Strategy::BSDFOnly:
+      return 1.0f;
   }
   return 0.0f;
 }
@@ -43,8 +46,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     Vec3 dir = normalize(ray.d);
     if (!(depth == 0 && hideEmitters_)) {
       EmitterHit seen = emitterSeenAlong(scene, prevP, dir, hit, wl);
-      if (!seen.radiance.isZero())
-        L += beta * seen.radiance * hitWeight(deltaBounce, prevBsdfPdf, seen.lightPdf);
+      if (!seen.radiance.isZero()) L += beta * seen.radiance * hitWeight(deltaBounce, prevBsdfPdf, seen.lightPdf);
     }
     if (!hit) break;
     if (maxDepth_ >= 0 && depth + 1 >= maxDepth_) break;

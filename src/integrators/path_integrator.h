@@ -6,8 +6,8 @@
 // estimators alone, to check the combination against each: "emitter" finds emitters only by
 // sampling them (and through delta BSDFs), "bsdf" only by hitting them (delta emitters, which
 // no ray hits, then add nothing).
-#include "integrators/integrator.h"
 #include "core/properties.h"
+#include "integrators/integrator.h"
 
 namespace columba {
 

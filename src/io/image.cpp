@@ -7,8 +7,8 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <png.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -16,8 +16,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <csetjmp>
 #include <cmath>
+#include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -56,16 +56,13 @@ void writeEXRFile(const std::string& file, const Image& image, const ImageMetada
                   const PixelRect* window = nullptr, int frameWidth = 0, int frameHeight = 0) {
   const Imath::Box2i data = window ? Imath::Box2i({window->x0, window->y0}, {window->x1 - 1, window->y1 - 1})
                                    : Imath::Box2i({0, 0}, {image.width - 1, image.height - 1});
-  const Imath::Box2i display =
-      window ? Imath::Box2i({0, 0}, {frameWidth - 1, frameHeight - 1}) : data;
+  const Imath::Box2i display = window ? Imath::Box2i({0, 0}, {frameWidth - 1, frameHeight - 1}) : data;
   Imf::Header header(display, data);
   for (const auto& [name, text] : metadata) header.insert(name, Imf::StringAttribute(text));
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   Imf::FrameBuffer frame;
   const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
-  auto slice = [&](const float* first, size_t x, size_t y) {
-    return Imf::Slice::Make(Imf::FLOAT, first, data, x, y);
-  };
+  auto slice = [&](const float* first, size_t x, size_t y) { return Imf::Slice::Make(Imf::FLOAT, first, data, x, y); };
   frame.insert("R", slice(image.rgb.data(), xStride, yStride));
   frame.insert("G", slice(image.rgb.data() + 1, xStride, yStride));
   frame.insert("B", slice(image.rgb.data() + 2, xStride, yStride));
@@ -209,8 +206,10 @@ void replaceTogether(const std::vector<PendingFile>& files) {
     if (std::rename(temporaries[i].c_str(), files[i].path.c_str()) == 0) continue;
     const std::string reason = std::strerror(errno);
     for (size_t j = 0; j < i; ++j) {
-      if (!backups[j].empty()) std::rename(backups[j].c_str(), files[j].path.c_str());
-      else std::remove(files[j].path.c_str());
+      if (!backups[j].empty())
+        std::rename(backups[j].c_str(), files[j].path.c_str());
+      else
+        std::remove(files[j].path.c_str());
     }
     removeAll(temporaries);
     removeAll(backups);
@@ -226,7 +225,8 @@ void replaceTogether(const std::vector<PendingFile>& files) {
 namespace {
 // The bin centre of a channel named as spectralChannelName does, if it is one.
 std::optional<float> spectralChannelCentre(const std::string& name) {
-  if (name.size() < 6 || name.compare(0, 3, "S0.") != 0 || name.compare(name.size() - 2, 2, "nm") != 0) return std::nullopt;
+  if (name.size() < 6 || name.compare(0, 3, "S0.") != 0 || name.compare(name.size() - 2, 2, "nm") != 0)
+    return std::nullopt;
   std::string number = name.substr(3, name.size() - 5);
   std::replace(number.begin(), number.end(), ',', '.');
   char* end = nullptr;
@@ -253,10 +253,10 @@ void writeEXRWindow(const std::string& path, const Image& image, const PixelRect
   checkImage(path, image);
   if (window.width() != image.width || window.height() != image.height || window.x0 < 0 || window.y0 < 0 ||
       window.x1 > frameWidth || window.y1 > frameHeight)
-    throw std::runtime_error(fmt::format("cannot write '{}': an image of {} x {} pixels does not fill the window "
-                                         "[{}, {}) x [{}, {}) of a frame of {} x {}",
-                                         path, image.width, image.height, window.x0, window.x1, window.y0, window.y1,
-                                         frameWidth, frameHeight));
+    throw std::runtime_error(fmt::format(
+        "cannot write '{}': an image of {} x {} pixels does not fill the window "
+        "[{}, {}) x [{}, {}) of a frame of {} x {}",
+        path, image.width, image.height, window.x0, window.x1, window.y0, window.y1, frameWidth, frameHeight));
   const ImageMetadata all = withSoftware(metadata);
   replaceTogether({{path, "EXR", [&](const std::string& file) {
                       writeEXRFile(file, image, all, &window, frameWidth, frameHeight);
@@ -291,9 +291,10 @@ ImageFormat checkOutputImagePath(const std::string& path) {
   std::string extension = given;
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".exr" && extension != ".png")
-    throw std::runtime_error("cannot write '" + path + "': " +
-                             (given.empty() ? "the name has no extension" : "'" + given + "' is not a format Columba writes") +
-                             " (use .exr or .png)");
+    throw std::runtime_error(
+        "cannot write '" + path +
+        "': " + (given.empty() ? "the name has no extension" : "'" + given + "' is not a format Columba writes") +
+        " (use .exr or .png)");
   if (!fs::is_directory(directoryOf(path), ec))
     throw std::runtime_error("cannot write '" + path + "': the directory '" + directoryOf(path) + "' does not exist");
   return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
@@ -334,8 +335,8 @@ static void checkEXRAttributeSizes(const std::string& path) {
     headerEmpty = false;
     unsigned char size[4];
     if (!std::getline(in, type, '\0') || !in.read(reinterpret_cast<char*>(size), 4)) return;
-    const int32_t declared = int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 |
-                                     uint32_t(size[3]) << 24);
+    const int32_t declared =
+        int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 | uint32_t(size[3]) << 24);
     const std::streamoff left = fileSize - in.tellg();
     if (declared < 0 || declared > left)
       throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' declares " +
@@ -369,8 +370,7 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     result.frameHeight = display.max.y - display.min.y + 1;
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
-    if (!rgb && !channels.findChannel("Y"))
-      throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
+    if (!rgb && !channels.findChannel("Y")) throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
     checkEXRPixelCount(path, width, height);
     if (!pixels) return result;

@@ -11,7 +11,7 @@ namespace columba {
 
 struct RefractiveIndex {
   float a = 1.0f;
-  float b = 0.0f;  // nm^2
+  float b = 0.0f;                                     // nm^2
   std::shared_ptr<const SpectralDistribution> table;  // when set, n(lambda) is read from it
 
   float operator()(float lambdaNm) const { return table ? table->eval(lambdaNm) : a + b / (lambdaNm * lambdaNm); }

@@ -30,7 +30,10 @@ inline FresnelAmplitudes fresnelAmplitudes(float cosI, float eta) {
 
 // Unpolarised reflectance. `cosI` < 0 means arriving from the other side (eta inverted).
 inline float fresnelDielectric(float cosI, float eta) {
-  if (cosI < 0.0f) { eta = 1.0f / eta; cosI = -cosI; }
+  if (cosI < 0.0f) {
+    eta = 1.0f / eta;
+    cosI = -cosI;
+  }
   FresnelAmplitudes a = fresnelAmplitudes(cosI, eta);
   return 0.5f * (a.rs * a.rs + a.rp * a.rp);
 }

@@ -51,8 +51,7 @@ ThinFilmAmplitudes thinFilmAmplitudes(double cosIncidence, double n1, double n2,
   return a;
 }
 
-double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
-                           double lambdaNm) {
+double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3, double thicknessUm, double lambdaNm) {
   ThinFilmAmplitudes a = thinFilmAmplitudes(cosIncidence, n1, n2, n3, thicknessUm, lambdaNm);
   return 0.5 * (std::norm(a.rs) + std::norm(a.rp));
 }
@@ -76,8 +75,7 @@ FreeStandingFilm::FreeStandingFilm(const RefractiveIndex& film, float nOutside, 
   medium_.halfPhaseScale = (2.0f * kPi * thicknessUm * 1000.0f * nOutside) / lambda;
 }
 
-Spectrum FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1,
-                                                         FloatLanes cos2) const {
+Spectrum FreeStandingFilm::weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const {
   return hasAvx2() ? weightedTransmittanceProductsAvx2(weight, cos1, cos2)
                    : weightedTransmittanceProductsPortable(weight, cos1, cos2);
 }

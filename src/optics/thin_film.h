@@ -30,10 +30,8 @@ ThinFilmAmplitudes thinFilmAmplitudes(double cosIncidence, double n1, double n2,
                                       double lambdaNm);
 
 // Unpolarised intensity reflectance and transmittance of the same stack.
-double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
-                           double lambdaNm);
-double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n3, double thicknessUm,
-                             double lambdaNm);
+double thinFilmReflectance(double cosIncidence, double n1, double n2, double n3, double thicknessUm, double lambdaNm);
+double thinFilmTransmittance(double cosIncidence, double n1, double n2, double n3, double thicknessUm, double lambdaNm);
 
 // A film (index nFilm(lambda), optically denser than its surroundings) with the same medium on
 // both sides, evaluated at a path's wavelengths: the barbule cortex in air. With a lossless film
@@ -64,8 +62,7 @@ class FreeStandingFilm {
   // Its two implementations (public so that tests compare them): four lanes on any x86-64, and
   // eight lanes, which needs a processor with AVX2 and FMA (hasAvx2()).
   Spectrum weightedTransmittanceProductsPortable(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
-  __attribute__((target("avx2,fma"))) Spectrum weightedTransmittanceProductsAvx2(FloatLanes weight,
-                                                                                 FloatLanes cos1,
+  __attribute__((target("avx2,fma"))) Spectrum weightedTransmittanceProductsAvx2(FloatLanes weight, FloatLanes cos1,
                                                                                  FloatLanes cos2) const;
 
  private:
@@ -86,7 +83,8 @@ class FreeStandingFilm {
             medium_.halfPhaseScale[k]};
   }
   // A^2 and B^2 S of the two polarisations, per lane.
-  template <typename Lanes> struct TermsOf {
+  template <typename Lanes>
+  struct TermsOf {
     Lanes aSqr, sBSqrS, pBSqrS;
   };
   using Terms = TermsOf<FloatLanes>;
@@ -96,11 +94,13 @@ class FreeStandingFilm {
   // whose instruction set it then uses).
   template <typename M, typename Lanes>
   __attribute__((always_inline)) static TermsOf<Lanes> terms(const M& m, Lanes cSqr, Lanes qSqr, Lanes q);
-  template <typename M> static Terms terms(const M& m, FloatLanes cSqr) {
+  template <typename M>
+  static Terms terms(const M& m, FloatLanes cSqr) {
     FloatLanes qSqr = m.etaSqrMinusOne + cSqr;  // the film is denser, so light always enters it
     return terms(m, cSqr, qSqr, sqrtLanes(qSqr));
   }
-  template <typename Lanes> __attribute__((always_inline)) static Lanes clampedCosSqr(Lanes c) {
+  template <typename Lanes>
+  __attribute__((always_inline)) static Lanes clampedCosSqr(Lanes c) {
     c = c < 1e-4f ? 1e-4f + Lanes{} : c;
     c = c > 1.0f ? 1.0f + Lanes{} : c;
     return c * c;

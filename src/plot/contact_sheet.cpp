@@ -31,7 +31,8 @@ Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int column
   if (entries.empty() || columns < 1 || tileWidth < 8) throw std::invalid_argument("empty contact sheet");
   const int margin = 12;
   int tileHeight = 0;
-  for (const auto& e : entries) tileHeight = std::max(tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
+  for (const auto& e : entries)
+    tileHeight = std::max(tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
   const int rows = (int(entries.size()) + columns - 1) / columns;
   const int width = margin + columns * (tileWidth + margin);
   // Titles and labels wrap to their width; a label keeps at most kLabelLines lines.
@@ -50,7 +51,8 @@ Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int column
   const int height = titleHeight + margin + rows * (tileHeight + labelHeight + margin);
   const Vec3 background = srgbColour(0.12f, 0.12f, 0.12f), ink = srgbColour(0.92f, 0.92f, 0.92f);
   Canvas canvas(width, height, background);
-  for (size_t l = 0; l < titleLines.size(); ++l) canvas.text(margin, 12 + float(l * titleLineHeight), titleLines[l], ink, 3);
+  for (size_t l = 0; l < titleLines.size(); ++l)
+    canvas.text(margin, 12 + float(l * titleLineHeight), titleLines[l], ink, 3);
   for (size_t i = 0; i < entries.size(); ++i) {
     const Image& src = entries[i].image;
     int h = std::max(1, int(double(tileWidth) * src.height / src.width));

@@ -15,7 +15,10 @@ std::vector<float> niceTicks(float lo, float hi, int target) {
   float magnitude = std::pow(10.0f, std::floor(std::log10(raw)));
   float step = magnitude;
   for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
-    if (m * magnitude >= raw) { step = m * magnitude; break; }
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
   for (float t = std::ceil(lo / step - 1e-4f) * step; t <= hi + 1e-4f * step; t += step)
     ticks.push_back(std::abs(t) < 1e-6f * step ? 0.0f : t);
   return ticks;

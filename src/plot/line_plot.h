@@ -2,8 +2,8 @@
 // Line charts with labelled axes, ticks and a legend, rendered to an image.
 #include <string>
 #include <vector>
-#include "io/image.h"
 #include "core/vector.h"
+#include "io/image.h"
 
 namespace columba {
 

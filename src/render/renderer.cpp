@@ -1,8 +1,8 @@
 #include "render/renderer.h"
 
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -92,7 +92,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
           if (stopRequested()) return;
           double sum[3] = {0, 0, 0};
           std::fill(binSums.begin(), binSums.end(), 0.0);
-          const bool seen = sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
+          const bool seen =
+              sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
           for (int s = sampleBegin; seen && s < sampleEnd; ++s) {
             if (stopRequested()) return;  // the unfinished pixel stays black
             sampler->startPixelSample(x, y, s, settings.seed);
@@ -119,7 +120,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         }
       rays += tileRays;
       nonFinite += tileNonFinite;
-      samples += uint64_t(count) * uint64_t(std::min(kTileSize, width - x0)) * uint64_t(std::min(kTileSize, height - y0));
+      samples +=
+          uint64_t(count) * uint64_t(std::min(kTileSize, width - x0)) * uint64_t(std::min(kTileSize, height - y0));
       int done = ++tilesDone;
       if (settings.onTileDone) settings.onTileDone(done, tileCount);
     }

@@ -13,8 +13,9 @@ namespace columba {
 struct RenderSettings {
   int samplesPerPixel = 0;  // 0: the scene sampler's sample_count
   uint64_t seed = 0;
-  int threads = 0;          // 0: all hardware threads
-  const std::atomic<bool>* cancel = nullptr;  // set to stop early (checked before every sample); finished tiles are kept
+  int threads = 0;  // 0: all hardware threads
+  const std::atomic<bool>* cancel =
+      nullptr;  // set to stop early (checked before every sample); finished tiles are kept
   // Radiance per wavelength bin besides RGB (Image::spectral): `spectralBins` equal bins over
   // [spectralMin, spectralMax] nm, each pixel's mean of the bin's mean radiance. 0: RGB only.
   int spectralBins = 0;
@@ -35,7 +36,7 @@ struct RenderStats {
   uint64_t samples = 0;
   uint64_t rays = 0;
   uint64_t nonFiniteSamples = 0;  // radiance estimates with a NaN or infinity, left out of their pixels
-  bool complete = true;  // false when cancelled
+  bool complete = true;           // false when cancelled
 };
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats);

@@ -1,8 +1,8 @@
 #pragma once
 // Uniform random samples, independent across dimensions, samples and pixels.
 #include <memory>
-#include "samplers/sampler.h"
 #include "samplers/pixel_sample_state.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

@@ -24,19 +24,19 @@ inline float coordinate1(uint32_t point, uint32_t seed) {
 
 // The tables, a pass per step so that each loop vectorises; built for AVX2 too, chosen at run time.
 __attribute__((target_clones("avx2", "default"))) void fillShuffled(uint32_t sampleCount, uint64_t dimensionHash,
-                                                                     uint32_t* points) {
+                                                                    uint32_t* points) {
   for (uint32_t i = 0; i < sampleCount; ++i) points[i] = shuffled(i, sampleCount, dimensionHash);
 }
 
 __attribute__((target_clones("avx2", "default"))) void fillScrambled(uint32_t count, const uint32_t* reversed,
-                                                                      uint32_t seed, float* out) {
+                                                                     uint32_t seed, float* out) {
   for (uint32_t i = 0; i < count; ++i) out[i] = fractionToFloat(owenScrambleReversed(reversed[i], seed));
 }
 
 // sobolDimension1Reversed of points below `count`, a power of two, as the xor of the generator
 // columns of their set bits, a bit at a time across all points.
 __attribute__((target_clones("avx2", "default"))) void fillSobolDimension1(uint32_t count, const uint32_t* points,
-                                                                            uint32_t* out) {
+                                                                           uint32_t* out) {
   for (uint32_t i = 0; i < count; ++i) out[i] = 0;
   uint32_t column = 1;  // (1 + x)^k over GF(2)
   for (uint32_t k = 0; (1u << k) < count; ++k, column ^= column << 1)

@@ -12,8 +12,8 @@
 #include <array>
 #include <memory>
 #include <vector>
-#include "samplers/sampler.h"
 #include "samplers/pixel_sample_state.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

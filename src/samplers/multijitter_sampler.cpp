@@ -28,8 +28,7 @@ Vec2 MultijitterSampler::get2D() {
   uint32_t subColumn = permutationElement(row, n, uint32_t(hash >> 32));
   uint32_t subRow = permutationElement(column, m, uint32_t(hash2));
   double dx = offset(), dy = offset();
-  return {clampToUnitInterval((column + (subColumn + dx) / n) / m),
-          clampToUnitInterval((row + (subRow + dy) / m) / n)};
+  return {clampToUnitInterval((column + (subColumn + dx) / n) / m), clampToUnitInterval((row + (subRow + dy) / m) / n)};
 }
 
 std::shared_ptr<Object> makeMultijitterSampler(const Properties& props) {

@@ -4,8 +4,8 @@
 // along either axis. Every dimension has its own pattern seed, so dimensions are not
 // correlated with each other. 1D dimensions are jittered strata in a random order.
 #include <memory>
-#include "samplers/sampler.h"
 #include "samplers/pixel_sample_state.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

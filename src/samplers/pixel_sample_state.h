@@ -11,9 +11,9 @@ namespace columba {
 inline float clampToUnitInterval(double v) { return std::min(float(v), kOneMinusEpsilon); }
 
 struct PixelSampleState {
-  uint32_t index = 0;        // sample index within its round
+  uint32_t index = 0;  // sample index within its round
   uint32_t dimension = 0;
-  PCG32 rng;                 // independent randomness of this one pixel sample, after seedRandomness()
+  PCG32 rng;  // independent randomness of this one pixel sample, after seedRandomness()
 
   // Samplers with a per-pixel pattern of `patternSize` samples use index 0..patternSize-1 of it;
   // sample indices past the pattern start a fresh pattern.

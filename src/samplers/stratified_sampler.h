@@ -4,8 +4,8 @@
 // dimension assigns strata to sample indices by its own random permutation, so that
 // dimensions are not correlated with each other.
 #include <memory>
-#include "samplers/sampler.h"
 #include "samplers/pixel_sample_state.h"
+#include "samplers/sampler.h"
 
 namespace columba {
 

@@ -20,6 +20,7 @@ class PluginRegistry {
     auto it = factories_.find({tag, type});
     return it == factories_.end() ? nullptr : &it->second;
   }
+
  private:
   std::map<std::pair<std::string, std::string>, PluginFactory> factories_;
 };

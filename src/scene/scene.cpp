@@ -16,7 +16,8 @@ constexpr int kMaxPassThroughLayers = 256;
 
 void throwOnEmbreeError(RTCDevice device) {
   RTCError code = rtcGetDeviceError(device);
-  if (code != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene (error " + std::to_string(int(code)) + ")");
+  if (code != RTC_ERROR_NONE)
+    throw std::runtime_error("Embree failed to build the scene (error " + std::to_string(int(code)) + ")");
 }
 }  // namespace
 
@@ -34,7 +35,8 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
       if (integrator_) throw InputError(source, "the scene has more than one integrator");
       integrator_ = integrator;
     } else if (!std::dynamic_pointer_cast<BSDF>(object)) {
-      throw InputError(source, "the scene has a top-level object that is not a shape, emitter, sensor, integrator or bsdf");
+      throw InputError(source,
+                       "the scene has a top-level object that is not a shape, emitter, sensor, integrator or bsdf");
     }
   }
   for (const auto& e : emitters_)
@@ -65,7 +67,8 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
   RTCRayHit rh;
   // Origin and tnear, direction and time as whole 16-byte stores: Embree loads them as vectors,
   // and a vector load from several narrower stores stalls until they have all retired.
-  const FloatLanes originAndNear{ray.o.x, ray.o.y, ray.o.z, ray.tmin}, directionAndTime{ray.d.x, ray.d.y, ray.d.z, 0.0f};
+  const FloatLanes originAndNear{ray.o.x, ray.o.y, ray.o.z, ray.tmin},
+      directionAndTime{ray.d.x, ray.d.y, ray.d.z, 0.0f};
   std::memcpy(&rh.ray.org_x, &originAndNear, sizeof(FloatLanes));
   std::memcpy(&rh.ray.dir_x, &directionAndTime, sizeof(FloatLanes));
   rh.ray.tfar = ray.tmax;

@@ -11,7 +11,7 @@ namespace columba {
 
 namespace {
 
-const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film",  "rfilter",
+const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film", "rfilter",
                                            "sampler", "integrator", "texture", "medium", "phase"};
 
 // Plug-ins are built recursively; real scenes nest a handful deep, and a bound keeps a hostile
@@ -101,8 +101,8 @@ void SceneBuilder::readFile(const std::string& path, ParsedScene& scene) {
 
 NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
   if (depth >= kMaxPluginNesting)
-    throw InputError(e.location(), "<" + e.tag() + "> is nested more than " + std::to_string(kMaxPluginNesting) +
-                                       " plug-ins deep");
+    throw InputError(e.location(),
+                     "<" + e.tag() + "> is nested more than " + std::to_string(kMaxPluginNesting) + " plug-ins deep");
   e.allowAttributes({"type", "id", "name"});
   Properties props;
   props.tag = e.tag();

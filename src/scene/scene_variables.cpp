@@ -25,8 +25,7 @@ std::string excerpt(const std::string& text) {
 SceneVariables::SceneVariables(std::map<std::string, std::string> defines) : defines_(std::move(defines)) {
   for (const auto& entry : defines_)
     if (!isVariableName(entry.first))
-      throw std::runtime_error("-D " + excerpt(entry.first) +
-                               "=...: a variable name has only letters, digits and '_'");
+      throw std::runtime_error("-D " + excerpt(entry.first) + "=...: a variable name has only letters, digits and '_'");
 }
 
 void SceneVariables::addDefault(const std::string& name, const std::string& value, const SourceLocation& loc) {
@@ -40,7 +39,7 @@ void SceneVariables::addDefault(const std::string& name, const std::string& valu
 }
 
 const std::pair<const std::string, std::string>* SceneVariables::longestNameAt(const std::string& text, size_t pos,
-                                                                             size_t run) const {
+                                                                               size_t run) const {
   // Each known name is compared once, so a '$' costs at most the total length of the names.
   const std::pair<const std::string, std::string>* best = nullptr;
   for (const auto* variables : {&defines_, &defaults_})

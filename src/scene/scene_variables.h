@@ -30,8 +30,7 @@ class SceneVariables {
 
  private:
   // The longest known name that `text` has at `pos`, within the `run` name characters there.
-  const std::pair<const std::string, std::string>* longestNameAt(const std::string& text, size_t pos,
-                                                                 size_t run) const;
+  const std::pair<const std::string, std::string>* longestNameAt(const std::string& text, size_t pos, size_t run) const;
   std::map<std::string, std::string> defines_;
   std::map<std::string, std::string> defaults_;
   std::map<std::string, SourceLocation> defaultLocations_;

@@ -70,8 +70,8 @@ Transform operation(const XmlElement& op) {
     op.allowAttributes({"value"});
     return matrixOperand(op);
   }
-  throw InputError(op.location(), "unknown transform operation <" + tag +
-                                      "> (expected translate, scale, rotate, lookat or matrix)");
+  throw InputError(op.location(),
+                   "unknown transform operation <" + tag + "> (expected translate, scale, rotate, lookat or matrix)");
 }
 
 }  // namespace

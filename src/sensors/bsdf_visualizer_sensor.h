@@ -20,7 +20,7 @@ class BSDFVisualizerSensor : public Sensor {
   bool seesAnyOf(Vec2 lo, Vec2 hi) const override;
 
  private:
-  float distance_;  // how far from the origin rays start (below the scene's lights)
+  float distance_;         // how far from the origin rays start (below the scene's lights)
   float xScale_, yScale_;  // film pixels to the image disk's [-1, 1]
 };
 

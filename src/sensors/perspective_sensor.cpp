@@ -14,9 +14,13 @@ PerspectiveSensor::PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr
   std::string axis = fovAxis;
   if (axis == "smaller") axis = aspect > 1.0f ? "y" : "x";
   if (axis == "larger") axis = aspect > 1.0f ? "x" : "y";
-  if (axis == "x") { tanHalfX_ = t; tanHalfY_ = t / aspect; }
-  else if (axis == "y") { tanHalfY_ = t; tanHalfX_ = t * aspect; }
-  else {  // diagonal
+  if (axis == "x") {
+    tanHalfX_ = t;
+    tanHalfY_ = t / aspect;
+  } else if (axis == "y") {
+    tanHalfY_ = t;
+    tanHalfX_ = t * aspect;
+  } else {  // diagonal
     float d = std::sqrt(aspect * aspect + 1.0f);
     tanHalfX_ = t * aspect / d;
     tanHalfY_ = t / d;

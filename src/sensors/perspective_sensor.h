@@ -4,8 +4,8 @@
 // `fov` (degrees, along `fov_axis`, x by default) or, as in Mitsuba, that of a lens of
 // `focal_length` (50mm by default) on 36 x 24 mm film, measured on the diagonal and fitted to the
 // image's aspect.
-#include "core/transform.h"
 #include "core/properties.h"
+#include "core/transform.h"
 #include "sensors/sensor.h"
 
 namespace columba {

@@ -12,7 +12,8 @@ std::shared_ptr<Film> sensorFilm(const Properties& props) {
 
 std::shared_ptr<Sampler> sensorSampler(const Properties& props) {
   auto sampler = props.child<Sampler>();
-  return sampler ? sampler : makeDefaultPlugin<Sampler>(makeIndependentSampler, "sampler", "independent", props.location);
+  return sampler ? sampler
+                 : makeDefaultPlugin<Sampler>(makeIndependentSampler, "sampler", "independent", props.location);
 }
 
 }  // namespace columba

@@ -16,8 +16,12 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
     wlo = minv(wlo, w);
     whi = maxv(whi, w);
   }
-  args->bounds_o->lower_x = wlo.x; args->bounds_o->lower_y = wlo.y; args->bounds_o->lower_z = wlo.z;
-  args->bounds_o->upper_x = whi.x; args->bounds_o->upper_y = whi.y; args->bounds_o->upper_z = whi.z;
+  args->bounds_o->lower_x = wlo.x;
+  args->bounds_o->lower_y = wlo.y;
+  args->bounds_o->lower_z = wlo.z;
+  args->bounds_o->upper_x = whi.x;
+  args->bounds_o->upper_y = whi.y;
+  args->bounds_o->upper_z = whi.z;
 }
 
 template <bool occlusion>
@@ -30,8 +34,11 @@ void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, R
   } else {
     Vec3 ng = shape->worldNormal(o + d * t);
     ray.tfar = t;
-    hit->Ng_x = ng.x; hit->Ng_y = ng.y; hit->Ng_z = ng.z;
-    hit->u = 0; hit->v = 0;
+    hit->Ng_x = ng.x;
+    hit->Ng_y = ng.y;
+    hit->Ng_z = ng.z;
+    hit->u = 0;
+    hit->v = 0;
     hit->primID = primID;
     hit->geomID = geomID;
     hit->instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -48,7 +55,8 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   if (args->N != 1 || !args->valid[0]) return;
   auto* ray = reinterpret_cast<RTCRay*>(args->ray);
-  hitCallback<true>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID, *ray, nullptr);
+  hitCallback<true>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID, *ray,
+                    nullptr);
 }
 }  // namespace
 

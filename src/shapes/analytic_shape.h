@@ -20,7 +20,9 @@ class AnalyticShape : public Shape {
   virtual bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const = 0;
   virtual Vec3 localNormal(const Vec3& localPoint) const = 0;
   // Unit geometric normal at a world point on the shape.
-  virtual Vec3 worldNormal(const Vec3& worldPoint) const { return toWorldNormal(localNormal(toLocalPoint(worldPoint))); }
+  virtual Vec3 worldNormal(const Vec3& worldPoint) const {
+    return toWorldNormal(localNormal(toLocalPoint(worldPoint)));
+  }
   // Bounds of the shape in local coordinates.
   virtual void localBounds(Vec3& lo, Vec3& hi) const = 0;
 

@@ -26,13 +26,15 @@ inline Vec3 mitreNormal(const Vec3& incoming, const Vec3& outgoing) { return nor
 
 // The strip normal of the next segment: the reflection of `n` in the joint's mitre plane. It is
 // perpendicular to the next segment and makes the two cylinders mirror images in that plane.
-inline Vec3 transportAcrossJoint(const Vec3& n, const Vec3& mitre) { return normalize(n - 2.0f * dot(n, mitre) * mitre); }
+inline Vec3 transportAcrossJoint(const Vec3& n, const Vec3& mitre) {
+  return normalize(n - 2.0f * dot(n, mitre) * mitre);
+}
 
 inline float maxAbsComponent(const Vec3& v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); }
 
 struct StripHit {
   float t = 0.0f;
-  float axial = 0.0f;  // distance along the segment from its start vertex, divided by its length
+  float axial = 0.0f;     // distance along the segment from its start vertex, divided by its length
   float sinAngle = 0.0f;  // sin(phi), phi the signed angle from n toward b (|phi| < pi/2); the
                           // normal and the angle follow from it (FeatherShape::interaction)
 };
@@ -47,10 +49,10 @@ struct StripProfile {
 };
 
 struct BarbStrip {
-  Vec3 p0;             // start vertex (on the top line)
-  Vec3 axis;           // unit direction toward the next vertex
+  Vec3 p0;    // start vertex (on the top line)
+  Vec3 axis;  // unit direction toward the next vertex
   float length = 0.0f;
-  Vec3 n, b;           // strip normal at phi = 0 (outer side) and cross(axis, n)
+  Vec3 n, b;                  // strip normal at phi = 0 (outer side) and cross(axis, n)
   Vec3 startMitre, endMitre;  // unit normals of the end planes through p0 and p0 + length * axis
   float radius = 0.0f;
   float halfWidthStart = 0.0f, halfWidthEnd = 0.0f;  // R sin(phi_max) at both ends

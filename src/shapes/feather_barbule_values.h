@@ -16,7 +16,7 @@ namespace columba {
 inline constexpr float kFileSpacingUnit = 2.5f;  // model H per file H
 
 inline constexpr float kDefaultFileSpacing = 0.5f;
-inline constexpr float kDefaultFileTilt = 0.35f;       // radians
+inline constexpr float kDefaultFileTilt = 0.35f;         // radians
 inline constexpr float kDefaultCortexThickness = 0.65f;  // um
 
 constexpr float modelSpacingFromFile(float fileH) { return kFileSpacingUnit * fileH; }

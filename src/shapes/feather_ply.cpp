@@ -32,9 +32,13 @@ std::vector<int> vertexRoles(const PlyReader& ply, const PlyElement& e) {
   if (!out && !n)
     throw ply.headerError(e, "element vertex has no vane normal (properties out1 out2 out3, or nx ny nz)");
   if (out) {
-    assign("out1", kNX); assign("out2", kNY); assign("out3", kNZ);
+    assign("out1", kNX);
+    assign("out2", kNY);
+    assign("out3", kNZ);
   } else {
-    assign("nx", kNX); assign("ny", kNY); assign("nz", kNZ);
+    assign("nx", kNX);
+    assign("ny", kNY);
+    assign("nz", kNZ);
   }
   const bool h = has("H"), mu = has("mu"), height = has("height");
   if (h && mu && height) {
@@ -42,9 +46,10 @@ std::vector<int> vertexRoles(const PlyReader& ply, const PlyElement& e) {
     assign("mu", kMu);
     assign("height", kHeight);
   } else if (h || mu || height) {
-    warn({ply.path(), e.line}, "element vertex has only some of the barbule values H, mu and height; like the "
-                               "original implementation, Columba uses them only all together, so the feather's "
-                               "defaults apply");
+    warn({ply.path(), e.line},
+         "element vertex has only some of the barbule values H, mu and height; like the "
+         "original implementation, Columba uses them only all together, so the feather's "
+         "defaults apply");
   }
   return roles;
 }

@@ -33,7 +33,8 @@ float linearScale(const Transform& t) {
   return float(std::cbrt(std::abs(det)));
 }
 
-template <typename T> void gather(std::vector<T>& values, const std::vector<uint32_t>& indices) {
+template <typename T>
+void gather(std::vector<T>& values, const std::vector<uint32_t>& indices) {
   if (values.empty()) return;
   std::vector<T> out(indices.size());
   tbb::parallel_for(size_t(0), indices.size(), [&](size_t i) { out[i] = values[indices[i]]; });
@@ -45,13 +46,18 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
   Vec3 lo, hi;
   shape->stripBounds(args->primID, lo, hi);
   RTCBounds* b = args->bounds_o;
-  b->lower_x = lo.x; b->lower_y = lo.y; b->lower_z = lo.z;
-  b->upper_x = hi.x; b->upper_y = hi.y; b->upper_z = hi.z;
+  b->lower_x = lo.x;
+  b->lower_y = lo.y;
+  b->lower_z = lo.z;
+  b->upper_x = hi.x;
+  b->upper_y = hi.y;
+  b->upper_z = hi.z;
 }
 
 // The rays of a packet of width kWidth, or of args->N when kWidth is 0. rtcIntersect1 passes
 // single rays: with the width known at compile time, the packet indexing folds away.
-template <unsigned kWidth> void intersectPacket(const RTCIntersectFunctionNArguments* args) {
+template <unsigned kWidth>
+void intersectPacket(const RTCIntersectFunctionNArguments* args) {
   const auto* shape = static_cast<const FeatherShape*>(args->geometryUserPtr);
   const unsigned N = kWidth ? kWidth : args->N;
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, N);
@@ -218,7 +224,8 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
     // rows mirror images; on the positive side t therefore runs back along the barbule (the BSDF
     // is symmetric in t).
     const Vec3 circumferential = b * cosAngle - s.n * sinAngle;  // toward increasing angle
-    t = angle > 0.0f ? -(s.axis * cosSpan_ + circumferential * sinSpan_) : s.axis * cosSpan_ - circumferential * sinSpan_;
+    t = angle > 0.0f ? -(s.axis * cosSpan_ + circumferential * sinSpan_)
+                     : s.axis * cosSpan_ - circumferential * sinSpan_;
   }
   si.shading = Frame(cross(t, si.ng), t, si.ng);
   BarbuleValues values = kDefaultBarbuleValues;

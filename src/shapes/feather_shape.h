@@ -41,8 +41,8 @@
 #include <array>
 #include <memory>
 #include <vector>
-#include "core/transform.h"
 #include "core/properties.h"
+#include "core/transform.h"
 #include "shapes/barb_strip.h"
 #include "shapes/feather_barbule_values.h"
 #include "shapes/feather_ply.h"
@@ -97,8 +97,8 @@ class FeatherShape : public Shape {
   struct BarbuleValues {
     float h, mu, height;
   };
-  static constexpr BarbuleValues kDefaultBarbuleValues{
-      modelSpacingFromFile(kDefaultFileSpacing), modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
+  static constexpr BarbuleValues kDefaultBarbuleValues{modelSpacingFromFile(kDefaultFileSpacing),
+                                                       modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
   std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;

@@ -16,8 +16,9 @@ FeatherPlyData readNamedFeatherPly(const Properties& props) {
     const std::string prefix = e.location.str() + ": ";
     std::string message = e.what();
     if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-    throw InputError(e.location, message + "; generate feathers with `columba feather --neck -o FILE.ply` (a neck) "
-                                           "or `columba feather --single -o FILE.ply` (one feather)");
+    throw InputError(e.location, message +
+                                     "; generate feathers with `columba feather --neck -o FILE.ply` (a neck) "
+                                     "or `columba feather --single -o FILE.ply` (one feather)");
   }
   return readFeatherPly(path);
 }

@@ -14,7 +14,10 @@ class PlanarShape : public AnalyticShape {
   bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const override;
   Vec3 localNormal(const Vec3&) const override { return Vec3(0, 0, flip_ ? -1.0f : 1.0f); }
   Vec3 worldNormal(const Vec3&) const override { return frame_.n; }
-  void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, 0); hi = Vec3(1, 1, 0); }
+  void localBounds(Vec3& lo, Vec3& hi) const override {
+    lo = Vec3(-1, -1, 0);
+    hi = Vec3(1, 1, 0);
+  }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
   PositionSample samplePosition(Vec2 u) const override;

@@ -16,10 +16,18 @@ namespace {
 
 size_t binarySize(PlyType t) {
   switch (t) {
-    case PlyType::Int8: case PlyType::UInt8: return 1;
-    case PlyType::Int16: case PlyType::UInt16: return 2;
-    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
-    case PlyType::Float64: return 8;
+    case PlyType::Int8:
+    case PlyType::UInt8:
+      return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16:
+      return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32:
+      return 4;
+    case PlyType::Float64:
+      return 8;
   }
   return 1;
 }
@@ -59,21 +67,25 @@ namespace {
 
 bool parseType(const std::string& name, PlyType& type) {
   static const std::pair<const char*, PlyType> kNames[] = {
-      {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-      {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-      {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-      {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-      {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+      {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+      {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+      {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+      {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+      {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
       {"float64", PlyType::Float64}};
   for (const auto& [n, t] : kNames)
-    if (name == n) { type = t; return true; }
+    if (name == n) {
+      type = t;
+      return true;
+    }
   return false;
 }
 
 // Values of ASCII records, one record per line.
 class AsciiSource : public PlySource {
  public:
-  AsciiSource(std::istream& in, std::string path, int headerLines) : in_(in), path_(std::move(path)), line_(headerLines) {}
+  AsciiSource(std::istream& in, std::string path, int headerLines)
+      : in_(in), path_(std::move(path)), line_(headerLines) {}
 
   void beginRecord(const PlyElement& e, size_t index) override {
     element_ = &e;
@@ -162,14 +174,22 @@ class BinarySource : public PlySource {
 
   double scalar(PlyType type) override {
     switch (type) {
-      case PlyType::Int8: return read<int8_t>();
-      case PlyType::UInt8: return read<uint8_t>();
-      case PlyType::Int16: return read<int16_t>();
-      case PlyType::UInt16: return read<uint16_t>();
-      case PlyType::Int32: return read<int32_t>();
-      case PlyType::UInt32: return read<uint32_t>();
-      case PlyType::Float32: return read<float>();
-      case PlyType::Float64: return read<double>();
+      case PlyType::Int8:
+        return read<int8_t>();
+      case PlyType::UInt8:
+        return read<uint8_t>();
+      case PlyType::Int16:
+        return read<int16_t>();
+      case PlyType::UInt16:
+        return read<uint16_t>();
+      case PlyType::Int32:
+        return read<int32_t>();
+      case PlyType::UInt32:
+        return read<uint32_t>();
+      case PlyType::Float32:
+        return read<float>();
+      case PlyType::Float64:
+        return read<double>();
     }
     return 0;
   }
@@ -184,7 +204,8 @@ class BinarySource : public PlySource {
   int line() const override { return 0; }
 
  private:
-  template <typename T> T read() {
+  template <typename T>
+  T read() {
     if (end_ - pos_ < sizeof(T)) refill(sizeof(T));
     T v;
     std::memcpy(&v, buffer_.data() + pos_, sizeof(T));
@@ -240,9 +261,12 @@ PlyReader::PlyReader(const std::string& path, const std::string& description)
     if (keyword == "format") {
       std::string format;
       words >> format;
-      if (format == "ascii") binary = false;
-      else if (format == "binary_little_endian") binary = true;
-      else fail("unsupported PLY format '" + format + "' (ascii or binary_little_endian)");
+      if (format == "ascii")
+        binary = false;
+      else if (format == "binary_little_endian")
+        binary = true;
+      else
+        fail("unsupported PLY format '" + format + "' (ascii or binary_little_endian)");
       sawFormat = true;
     } else if (keyword == "element") {
       PlyElement e;
@@ -274,8 +298,10 @@ PlyReader::PlyReader(const std::string& path, const std::string& description)
       if (!sawFormat) fail("the header has no 'format' line");
       endHeaderLine_ = lineNo;
       checkCountsFit(binary);
-      if (binary) source_ = std::make_unique<BinarySource>(in_, path_);
-      else source_ = std::make_unique<AsciiSource>(in_, path_, lineNo);
+      if (binary)
+        source_ = std::make_unique<BinarySource>(in_, path_);
+      else
+        source_ = std::make_unique<AsciiSource>(in_, path_, lineNo);
       return;
     } else {
       fail("unknown header keyword '" + keyword + "'");
@@ -291,7 +317,8 @@ void PlyReader::checkCountsFit(bool binary) {
   in_.seekg(0, std::ios::end);
   const std::streampos fileEnd = in_.tellg();
   in_.seekg(dataStart);
-  if (dataStart < 0 || fileEnd < 0 || !in_) throw InputError({path_, endHeaderLine_}, "cannot find the size of the file");
+  if (dataStart < 0 || fileEnd < 0 || !in_)
+    throw InputError({path_, endHeaderLine_}, "cannot find the size of the file");
   // The last ASCII record may end without a line break.
   const size_t bytesLeft = size_t(fileEnd - dataStart), budget = bytesLeft + (binary ? 0 : 1);
   size_t needed = 0;
@@ -303,8 +330,9 @@ void PlyReader::checkCountsFit(bool binary) {
                                " records but has no properties to store them");
     if (e.count > (budget - needed) / recordBytes)
       throw headerError(e, "element " + e.name + " declares " + std::to_string(e.count) + " " + e.name +
-                               " records of at least " + std::to_string(recordBytes) + " bytes each, but the file has " +
-                               std::to_string(bytesLeft) + " bytes left after the header");
+                               " records of at least " + std::to_string(recordBytes) +
+                               " bytes each, but the file has " + std::to_string(bytesLeft) +
+                               " bytes left after the header");
     needed += e.count * recordBytes;
   }
 }

@@ -66,8 +66,7 @@ void readFaces(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
   for (size_t i = 0; i < e.count; ++i) {
     ply.next();
     const std::vector<double>& face = ply.list(size_t(list));
-    if (face.size() < 3)
-      ply.fail("has " + std::to_string(face.size()) + " vertex indices; a face needs at least 3");
+    if (face.size() < 3) ply.fail("has " + std::to_string(face.size()) + " vertex indices; a face needs at least 3");
     const uint32_t first = ply.vertexIndex(face[0], vertexCount);
     uint32_t previous = ply.vertexIndex(face[1], vertexCount);
     for (size_t k = 2; k < face.size(); ++k) {

@@ -24,11 +24,11 @@ struct HitRecord {
 };
 
 struct SurfaceInteraction {
-  Vec3 p;             // world position
-  Vec3 ng;            // geometric normal (unit, oriented as the shape defines its front)
-  Frame shading;      // shading frame; shading.n is on the same side as ng
+  Vec3 p;         // world position
+  Vec3 ng;        // geometric normal (unit, oriented as the shape defines its front)
+  Frame shading;  // shading frame; shading.n is on the same side as ng
   Vec2 uv;
-  float t = 0.0f;     // ray distance
+  float t = 0.0f;  // ray distance
   const Shape* shape = nullptr;
   SurfaceAttributes attributes;  // per-point values of the BSDF's parameters (a feather's barbules)
 

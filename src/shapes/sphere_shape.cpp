@@ -90,8 +90,8 @@ std::shared_ptr<Object> makeSphereShape(const Properties& props) {
   Vec3 center = props.getVector("center", Vec3(0, 0, 0));
   float radius = props.getFloat("radius", 1.0f);
   if (!(radius > 0.0f)) throw props.error("radius", "the radius must be positive");
-  Transform toWorld = props.getTransform("to_world") * Transform::translate(center) *
-                      Transform::scale(Vec3(radius, radius, radius));
+  Transform toWorld =
+      props.getTransform("to_world") * Transform::translate(center) * Transform::scale(Vec3(radius, radius, radius));
   auto shape = std::make_shared<SphereShape>(toWorld, props.getBool("flip_normals", false));
   attachMaterial(props, *shape);
   return shape;

@@ -11,7 +11,10 @@ class SphereShape : public AnalyticShape {
   SphereShape(const Transform& toWorld, bool flipNormals);
   bool intersectWorld(const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const override;
   Vec3 localNormal(const Vec3& p) const override { return flip_ ? -p : p; }
-  void localBounds(Vec3& lo, Vec3& hi) const override { lo = Vec3(-1, -1, -1); hi = Vec3(1, 1, 1); }
+  void localBounds(Vec3& lo, Vec3& hi) const override {
+    lo = Vec3(-1, -1, -1);
+    hi = Vec3(1, 1, 1);
+  }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
   PositionSample samplePosition(Vec2 u) const override;

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "bsdfs/diffuse.h"
 #include "core/sampling.h"
 #include "emitters/emitter.h"
-#include "bsdfs/diffuse.h"
 
 namespace columba {
 
@@ -29,7 +29,8 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
   std::vector<float> areas(primitiveCount());
   for (size_t t = 0; t < areas.size(); ++t) {
     const Vec3& a = mesh_.positions[mesh_.indices[3 * t]];
-    areas[t] = 0.5f * length(cross(mesh_.positions[mesh_.indices[3 * t + 1]] - a, mesh_.positions[mesh_.indices[3 * t + 2]] - a));
+    areas[t] = 0.5f * length(cross(mesh_.positions[mesh_.indices[3 * t + 1]] - a,
+                                   mesh_.positions[mesh_.indices[3 * t + 2]] - a));
     area_ += areas[t];
     if (!std::isfinite(areas[t]))
       throw InputError(where, "triangle " + std::to_string(t) + " is too large: its area overflows single precision");
@@ -65,7 +66,8 @@ Vec3 TriangleMesh::dpdu(size_t tri) const {
 
 Vec3 TriangleMesh::faceNormal(size_t tri) const {
   const Vec3& a = mesh_.positions[mesh_.indices[3 * tri]];
-  Vec3 n = normalize(cross(mesh_.positions[mesh_.indices[3 * tri + 1]] - a, mesh_.positions[mesh_.indices[3 * tri + 2]] - a));
+  Vec3 n = normalize(
+      cross(mesh_.positions[mesh_.indices[3 * tri + 1]] - a, mesh_.positions[mesh_.indices[3 * tri + 2]] - a));
   return flip_ ? -n : n;
 }
 
@@ -86,8 +88,10 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
     // dp/du lies in the face's plane, so the face frame's s has its direction.
     si.shading = Frame::fromNormalAndS(ns, face.s);
   }
-  if (!mesh_.uvs.empty()) si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
-  else si.uv = Vec2(b1, b2);
+  if (!mesh_.uvs.empty())
+    si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
+  else
+    si.uv = Vec2(b1, b2);
   return si;
 }
 
@@ -109,7 +113,8 @@ void attachMaterial(const Properties& props, Shape& shape) {
   if (!shape.bsdf) shape.bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
   shape.emitter = props.child<Emitter>();
   if (shape.emitter) {
-    if (!(shape.surfaceArea() > 0.0f)) throw InputError(props.location, "an area emitter needs a shape with positive area");
+    if (!(shape.surfaceArea() > 0.0f))
+      throw InputError(props.location, "an area emitter needs a shape with positive area");
     shape.emitter->attachTo(&shape);
   }
 }

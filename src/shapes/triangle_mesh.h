@@ -2,16 +2,16 @@
 // Triangle meshes in world space (obj, ply, cube), intersected by Embree.
 #include <vector>
 #include "core/distribution.h"
-#include "core/transform.h"
 #include "core/properties.h"
+#include "core/transform.h"
 #include "shapes/shape.h"
 
 namespace columba {
 
 struct MeshData {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;  // per vertex, or empty
-  std::vector<Vec2> uvs;      // per vertex, or empty
+  std::vector<Vec3> normals;      // per vertex, or empty
+  std::vector<Vec2> uvs;          // per vertex, or empty
   std::vector<uint32_t> indices;  // 3 per triangle
 };
 
@@ -19,7 +19,8 @@ class TriangleMesh : public Shape {
  public:
   // Transforms `mesh` by `toWorld`; `faceNormals` ignores vertex normals; `flipNormals` turns
   // the front side around. Throws InputError (at `where`) for degenerate or invalid input.
-  TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals, const SourceLocation& where);
+  TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals,
+               const SourceLocation& where);
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
