@@ -44,14 +44,22 @@ BarbuleParameters custom(float b, float phi0, float phi1, float mu, float H, flo
   return p;
 }
 
+BarbuleParameters withoutMelanin() {
+  BarbuleParameters p = reference(0.59f);
+  p.melanin = SpectralDistribution::constant(0.0f);
+  return p;
+}
+
 // The reference scenes (simulation1/2 and simulation3), a rounder, sparser and oppositely tilted
-// barbule, and a thin, dense one with a constant-index film and an arc reaching far underneath.
+// barbule, a thin, dense one with a constant-index film and an arc reaching far underneath, and one
+// without melanin, whose TRT lobe is zero (the sampler keeps it at its floor share).
 const std::vector<ParameterSet>& parameterSets() {
   static const std::vector<ParameterSet> sets = {
       {"reference h0.58", reference(0.58f)},
       {"reference h0.59", reference(0.59f)},
       {"round sparse", custom(0.45f, -1.0f, 1.4f, 0.25f, 2.2f, 0.65f, RefractiveIndex::keratin())},
       {"thin dense n1.56", custom(0.18f, -0.2f, 2.9f, -0.6f, 1.5f, 0.45f, RefractiveIndex::constant(1.56f))},
+      {"no melanin", withoutMelanin()},
   };
   return sets;
 }
@@ -178,7 +186,8 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
   BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H);
   FreeStandingFilm film(p.filmIOR, p.extIOR, p.height, kWavelengths);
   Spectrum melanin;
-  for (int k = 0; k < kSpectrumSamples; ++k) melanin[k] = melaninReflectance(kWavelengths[k]);
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    melanin[k] = p.melanin ? p.melanin->eval(kWavelengths[k]) : melaninReflectance(kWavelengths[k]);
   InPlaneDirection ip = inPlane(wi);
   LitArc arc = geometry.litArc(ip.dir);
   float r = geometry.coverage(arc, ip.dir);

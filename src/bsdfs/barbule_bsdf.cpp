@@ -1,5 +1,7 @@
 #include "bsdfs/barbule_bsdf.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include "bsdfs/barbule_normals.h"
 #include "core/gauss_legendre.h"
@@ -28,23 +30,26 @@
 // fixed normal, the directions on its front side carry integral of |cos theta_o| / pi = 1, so the
 // albedo is at most r max(I_TRT).
 //
-// Sampling: a lobe with probabilities proportional to r <I_R>, r <I_TRT>, t estimated from omega_i
-// alone (so pdf() reproduces them exactly), then
-//   R:   a visible normal (h uniform, theta by inverse CDF) and the mirror direction; its density is
-//        p(phi) p(theta | phi) / cos(theta_m) / (4 omega_i . m), which works out to
-//        D(m) S(omega_i) H / (4 lit width cos(theta_i));
-//   TRT: h uniform (theta_m = 0), a cosine-weighted direction about n flipped to the front of that
-//        normal; its density is (offsets lit from both / lit width) |cos theta_o| / pi, exactly;
+// Sampling, as the paper's Algorithm 1: T against scattering with probabilities proportional to t and
+// r (<I_R> + <I_TRT>), estimated from omega_i alone; for scattering an offset h uniform on the lit
+// width, then R or TRT in proportion to their weights at h (s(h), the TRT share, is linear between
+// a few offsets, so its integral below has a closed form and pdf() reproduces everything exactly):
+//   R:   theta by inverse CDF at h's normal (a visible normal) and the mirror direction; its density
+//        is (1 - s(h_m)) p(phi) p(theta | phi) / cos(theta_m) / (4 omega_i . m), h_m the offset of
+//        the half vector's normal;
+//   TRT: a cosine-weighted direction about h's normal (theta_m = 0) flipped to its front; its
+//        density is (integral of s over the offsets lit from both / lit width) |cos theta_o| / pi;
 //   T:   -wi with weight t / P(T).
-// R and TRT samples whose point is not visible from omega_o are rejected. The weight of a non-delta
-// sample is eval / pdf with pdf the mixture density of what is returned.
+// Both scattering densities carry the factor 1 - P(T). R and TRT samples whose point is not visible
+// from omega_o are rejected. The weight of a non-delta sample is eval / pdf with pdf the mixture
+// density of what is returned.
 
 namespace columba {
 
 namespace {
 
-// Lower bound on the share of R and TRT in the lobe choice, relative to r: keeps every lobe
-// reachable when the estimate at a few normals happens to be near zero.
+// Lower bound on R's and TRT's shares at each node, and on the scattering weight relative to r:
+// keeps every lobe reachable where an estimate happens to be near zero.
 constexpr float kMinLobeShare = 0.01f;
 // The longitudinal normal angles are small enough for cosSinOfSmallAngle.
 static_assert(kBarbuleThetaD <= kSmallAngleLimit);
@@ -97,9 +102,35 @@ float BarbuleBSDF::transmission(const BarbuleCrossSection& geometry, const Incid
   return in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, in.w);
 }
 
+// The lobe choice: the probability of T, decided from omega_i alone, and the TRT share s(h) of the
+// scattering samples at offset h, linear between `nodes` offsets spread evenly over the lit arc.
 struct BarbuleBSDF::LobeChoice {
-  float transmission = 1.0f, reflection = 0.0f, trt = 0.0f;
+  float transmission = 1.0f;
+  float hMin = 0.0f, nodeSpacing = 0.0f;
+  int nodes = 0;
+  std::array<float, kMaxLobeShareNodes> trtShare{};
+
+  float trtShareAt(float h) const;
+  // Integral of s(h) dh over [lo, hi] within the lit arc.
+  float trtShareIntegral(float lo, float hi) const;
 };
+
+float BarbuleBSDF::LobeChoice::trtShareAt(float h) const {
+  float x = clampf((h - hMin) / nodeSpacing, 0.0f, float(nodes - 1));
+  int i = std::min(int(x), nodes - 2);
+  float f = x - float(i);
+  return trtShare[i] + f * (trtShare[i + 1] - trtShare[i]);
+}
+
+float BarbuleBSDF::LobeChoice::trtShareIntegral(float lo, float hi) const {
+  // The trapezoid rule on each linear piece overlapping [lo, hi]: exact.
+  float sum = 0.0f;
+  for (int i = 0; i + 1 < nodes; ++i) {
+    float a = std::max(lo, hMin + float(i) * nodeSpacing), b = std::min(hi, hMin + float(i + 1) * nodeSpacing);
+    if (b > a) sum += 0.5f * (b - a) * (trtShareAt(a) + trtShareAt(b));
+  }
+  return sum;
+}
 
 // omega_o, and what R, TRT and the sampling density share for the pair (omega_i, omega_o): the
 // offsets lit from both, and the half vector with its in-plane direction, its normal in the
@@ -140,7 +171,7 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
   offsetNodes_ = laneGroups(offsets.nodes);
   offsetWeights_ = laneGroups(offsets.weights);
   makeRule(quadrature.thetaNodes, thetaNodes_, thetaWeights_);
-  makeRule(quadrature.lobeEstimateNodes, lobeNodes_, lobeWeights_);
+  lobeShareNodes_ = std::clamp(quadrature.lobeShareNodes, 2, kMaxLobeShareNodes);
 }
 
 BarbuleBSDF::PointModel::PointModel(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl)
@@ -267,25 +298,25 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
   LobeChoice choice;
   if (!in.scatters) return choice;
   const BarbuleCrossSection& geometry = point.geometry;
-  // Means of I_R and of R_m T^2 (TRT with the same film transmission on the way out) over the lit
-  // offsets at theta_m = 0, averaged over the wavelengths.
-  float meanR = 0.0f, meanTRT = 0.0f;
-  for (size_t k = 0; k < lobeNodes_.size(); ++k) {
-    float h = in.arc.hMin + lobeNodes_[k] * in.arc.width();
-    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, h)));
+  // The lobes' weights at each node's normal (theta_m = 0), averaged over the wavelengths: I_R, and
+  // R_m T^2 for TRT (the film's transmission on the way out taken as on the way in).
+  choice.nodes = lobeShareNodes_;
+  choice.hMin = in.arc.hMin;
+  choice.nodeSpacing = in.arc.width() / float(choice.nodes - 1);
+  float meanWeight = 0.0f;  // of R + TRT over the lit offsets: the trapezoid rule, as s(h) is linear
+  for (int k = 0; k < choice.nodes; ++k) {
+    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, choice.hMin + float(k) * choice.nodeSpacing)));
     FreeStandingFilm::Reflectance film = point.film.reflectance(inPlaneProjection(in.w, n));
-    Spectrum r = 0.5f * (film.s + film.p);
-    Spectrum trt = point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p));
-    meanR += lobeWeights_[k] * r.average();
-    meanTRT += lobeWeights_[k] * trt.average();
+    float weightR = (0.5f * (film.s + film.p)).average();
+    float weightTRT =
+        (point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p))).average();
+    float total = weightR + weightTRT;
+    choice.trtShare[k] = total > 0.0f ? clampf(weightTRT / total, kMinLobeShare, 1.0f - kMinLobeShare) : 0.5f;
+    bool end = k == 0 || k == choice.nodes - 1;
+    meanWeight += (end ? 0.5f : 1.0f) * total / float(choice.nodes - 1);
   }
-  float r = in.coverage;
-  float energyR = r * std::max(meanR, kMinLobeShare), energyTRT = r * std::max(meanTRT, kMinLobeShare);
-  float energyT = 1.0f - r;
-  float total = energyR + energyTRT + energyT;
-  choice.transmission = energyT / total;
-  choice.reflection = energyR / total;
-  choice.trt = energyTRT / total;
+  float energyScatter = in.coverage * std::max(meanWeight, kMinLobeShare), energyT = 1.0f - in.coverage;
+  choice.transmission = energyT / (energyT + energyScatter);
   return choice;
 }
 
@@ -298,11 +329,12 @@ float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, cons
     if (cosHalf > 0.0f) {
       float normalPdf =
           visibleNormalPdf(point.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
-      density += choice.reflection * normalPdf / (4.0f * cosHalf);
+      float shareR = 1.0f - choice.trtShareAt(point.geometry.offsetOf(in.arc, out.mLocal));
+      density += shareR * normalPdf / (4.0f * cosHalf);
     }
   }
-  density += choice.trt * out.common.length() / in.arc.width() * std::abs(out.w.z) * kInvPi;
-  return density;
+  density += choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() * std::abs(out.w.z) * kInvPi;
+  return (1.0f - choice.transmission) * density;
 }
 
 Spectrum BarbuleBSDF::evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const {
@@ -381,17 +413,20 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
     return bs;
   }
 
+  // The scattering point: an offset uniform on the lit width, from what uComponent has left.
+  float uOffset = clampf((uComponent - choice.transmission) / (1.0f - choice.transmission), 0.0f, 1.0f);
+  float h = in.arc.hMin + uOffset * in.arc.width();
+  float shareR = 1.0f - choice.trtShareAt(h);
   Vec2 localNormal;
-  if (uComponent < choice.transmission + choice.reflection) {
-    VisibleNormal normal = sampleVisibleNormal(geometry, in.arc, wi, u);
+  if (u.x < shareR) {
+    VisibleNormal normal = visibleNormalAtOffset(geometry, in.arc, wi, h, u.y);
     localNormal = normal.localNormal;
     bs.wo = reflect(wi, normal.m);
   } else {
-    // The offset reuses what uComponent has left within the TRT share; u drives the direction.
-    float uOffset = clampf((uComponent - choice.transmission - choice.reflection) / choice.trt, 0.0f, 1.0f);
-    localNormal = geometry.normalAt(geometry.pointAt(in.arc, in.arc.hMin + uOffset * in.arc.width()));
+    localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
     Vec3 m = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);
-    Vec3 w = sampleCosineHemisphere(u);
+    // What u.x has left within the TRT share drives the direction with u.y.
+    Vec3 w = sampleCosineHemisphere(Vec2(clampf((u.x - shareR) / (1.0f - shareR), 0.0f, 1.0f), u.y));
     bs.wo = dot(w, m) >= 0.0f ? w : -w;
   }
   // The scattering point must be visible from wo.

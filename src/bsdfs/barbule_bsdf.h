@@ -39,18 +39,20 @@
 
 namespace columba {
 
-// Gauss-Legendre node counts of the deterministic averages over visible normals: the TRT lobe
-// (offsets across the lit arc x longitudinal angles; one longitudinal node sits at the mean angle)
-// and the lobe-selection estimate. Against 24 x 8 nodes, the default 4 x 1 has a relative L1
-// error of the TRT lobe over outgoing directions of about 0.7 % on average and 3 % at worst
-// (grazing incidence, where the film's transmission changes fast along the arc); 8 x 2 reaches
-// 0.1 % / 0.6 % at four times the cost. The sampling density does not depend on these counts.
-// The lobe-selection estimate only steers sampling (pdf() repeats it exactly): one node, the
-// middle of the lit offsets, costs a third of three and leaves the samples' weights bounded.
+// Node counts of the deterministic parts of the model and its sampler. The TRT lobe is a
+// Gauss-Legendre average over visible normals (offsets across the lit arc x longitudinal angles;
+// one longitudinal node sits at the mean angle). Against 24 x 8 nodes, the default 4 x 1 has a
+// relative L1 error of the TRT lobe over outgoing directions of about 0.7 % on average and 3 % at
+// worst (grazing incidence, where the film's transmission changes fast along the arc); 8 x 2
+// reaches 0.1 % / 0.6 % at four times the cost. The sampler chooses between R and TRT at the
+// sampled offset in proportion to the lobes' weights at `lobeShareNodes` offsets spread evenly over
+// the lit arc (2 to kMaxLobeShareNodes), linear between them; it only steers sampling (pdf()
+// integrates that share exactly), so the node count changes noise, never the expected image.
+inline constexpr int kMaxLobeShareNodes = 8;
 struct BarbuleQuadrature {
   int offsetNodes = 4;
   int thetaNodes = 1;
-  int lobeEstimateNodes = 1;
+  int lobeShareNodes = 3;
 };
 
 class BarbuleBSDF : public BSDF {
@@ -127,7 +129,7 @@ class BarbuleBSDF : public BSDF {
   int offsetNodeCount_;
   std::vector<FloatLanes> offsetNodes_, offsetWeights_;  // in groups of four lanes
   std::vector<float> thetaNodes_, thetaWeights_;
-  std::vector<float> lobeNodes_, lobeWeights_;
+  int lobeShareNodes_;
 };
 
 // Plug-ins `barbulebsdf` and `barbulebsdfev`: preset (a <string>, see barbule_parameters.h; the

@@ -132,7 +132,7 @@ Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLane
 
 bool BarbuleCrossSection::isLit(const LitArc& arc, Vec2 n) const {
   if (!(dot2(n, arc.toward) > 0.0f)) return false;
-  float h = dot2(pointWithNormal(n), arc.across);
+  float h = offsetOf(arc, n);
   return h >= arc.hMin && h <= arc.hMax;
 }
 

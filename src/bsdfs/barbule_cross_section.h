@@ -77,6 +77,8 @@ class BarbuleCrossSection {
   Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
   // Point (local) of the central ellipse whose outward normal is the local unit vector n.
   Vec2 pointWithNormal(Vec2 n) const;
+  // Offset along `arc` of the point with local unit normal n.
+  float offsetOf(const LitArc& arc, Vec2 n) const { return dot2(pointWithNormal(n), arc.across); }
   // Whether the point with local unit normal n is lit along `arc`'s direction (masking and
   // shadowing test: it faces the direction, lies on the reflective arc and no neighbour blocks it).
   bool isLit(const LitArc& arc, Vec2 n) const;

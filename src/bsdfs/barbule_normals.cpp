@@ -57,12 +57,16 @@ float LongitudinalDensity::pdf(float theta) const {
 }
 
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u) {
-  float h = arc.hMin + u.x * arc.width();
+  return visibleNormalAtOffset(geometry, arc, w, arc.hMin + u.x * arc.width(), u.y);
+}
+
+VisibleNormal visibleNormalAtOffset(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float h,
+                                    float uTheta) {
   VisibleNormal out;
   out.localNormal = geometry.normalAt(geometry.pointAt(arc, h));
   Vec2 n = geometry.toWorld(out.localNormal);
   LongitudinalDensity longitudinal(inPlaneProjection(w, n), w.y);
-  float theta = longitudinal.sample(u.y);
+  float theta = longitudinal.sample(uTheta);
   out.m = barbuleNormal(n, std::cos(theta), std::sin(theta));
   return out;
 }
