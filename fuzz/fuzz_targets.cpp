@@ -18,6 +18,7 @@
 #include "shapes/feather_shape.h"
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
+#include "shapes/serialized_mesh.h"
 #include "shapes/triangle_mesh.h"
 
 namespace columba::fuzz {
@@ -77,6 +78,14 @@ void featherPlyFromBytes(const uint8_t* data, size_t size) {
 void objMeshFromBytes(const uint8_t* data, size_t size) {
   std::string path = writeScratchFile(data, size, ".obj");
   TriangleMesh mesh(readObjMesh(path), Transform(), false, false, {path, 0});
+}
+
+void serializedMeshFromBytes(const uint8_t* data, size_t size) {
+  std::string bytes(reinterpret_cast<const char*>(data), size);
+  for (int index : {0, 1}) {
+    SerializedMesh s = parseSerializedMesh(bytes, index, "<fuzz>");
+    TriangleMesh mesh(std::move(s.mesh), Transform(), s.faceNormals, false, {"<fuzz>", 0});
+  }
 }
 
 void exrEnvmapFromBytes(const uint8_t* data, size_t size) {

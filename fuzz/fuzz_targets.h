@@ -21,6 +21,8 @@ void plyMeshFromBytes(const uint8_t* data, size_t size);
 void featherPlyFromBytes(const uint8_t* data, size_t size);
 // Wavefront OBJ (readObjMesh, then a TriangleMesh).
 void objMeshFromBytes(const uint8_t* data, size_t size);
+// Mitsuba serialized mesh (parseSerializedMesh of its first and second mesh, then a TriangleMesh).
+void serializedMeshFromBytes(const uint8_t* data, size_t size);
 // OpenEXR image (readEXR, then an environment map and a few lookups).
 void exrEnvmapFromBytes(const uint8_t* data, size_t size);
 

@@ -35,6 +35,7 @@ const std::map<std::string, Reader>& readers() {
       {"ply_mesh", columba::fuzz::plyMeshFromBytes},
       {"feather_ply", columba::fuzz::featherPlyFromBytes},
       {"obj_mesh", columba::fuzz::objMeshFromBytes},
+      {"serialized_mesh", columba::fuzz::serializedMeshFromBytes},
       {"exr_envmap", columba::fuzz::exrEnvmapFromBytes},
   };
   return r;

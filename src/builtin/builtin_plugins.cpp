@@ -28,6 +28,7 @@
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/rectangle_shape.h"
+#include "shapes/serialized_mesh.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
 
@@ -62,6 +63,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);
     r.add("shape", "ply", makePlyShape);
+    r.add("shape", "serialized", makeSerializedShape);
     r.add("shape", "rectangle", makeRectangleShape);
     r.add("shape", "disk", makeDiskShape);
     r.add("shape", "sphere", makeSphereShape);

@@ -119,8 +119,10 @@ void attachMaterial(const Properties& props, Shape& shape) {
   }
 }
 
-std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld) {
-  auto shape = std::make_shared<TriangleMesh>(std::move(mesh), toWorld, props.getBool("face_normals", false),
+std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld,
+                                        bool fileFaceNormals) {
+  bool faceNormals = props.getBool("face_normals", false) || fileFaceNormals;
+  auto shape = std::make_shared<TriangleMesh>(std::move(mesh), toWorld, faceNormals,
                                               props.getBool("flip_normals", false), props.location);
   attachMaterial(props, *shape);
   return shape;

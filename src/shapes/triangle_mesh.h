@@ -39,8 +39,10 @@ class TriangleMesh : public Shape {
   std::vector<Frame> faceFrames_;
 };
 
-// Reads `face_normals` and `flip_normals`, attaches the nested BSDF and area emitter.
-std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld);
+// Reads `face_normals` and `flip_normals`, attaches the nested BSDF and area emitter. Face normals
+// are used when `face_normals` is true or the file asks for them (`fileFaceNormals`).
+std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld,
+                                        bool fileFaceNormals = false);
 // Attaches a shape's nested BSDF (default: diffuse 0.5, as Mitsuba) and area emitter.
 void attachMaterial(const Properties& props, Shape& shape);
 
