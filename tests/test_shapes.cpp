@@ -53,3 +53,61 @@ TEST(Shapes, SurfaceAreasFollowTheirTransforms) {
   EXPECT_NEAR(areas[2], 4.0f * kPi * 0.25f, 1e-5f);
   EXPECT_NEAR(areas[3], 6.0f * 16.0f, 1e-3f);
 }
+
+TEST(Shapes, CylinderIsMitsubasOpenTubeAroundP0P1) {
+  // Radius 0.5 around the segment (1, 2, 3) -> (1, 2, 5): the local frame of the axis +z has s = +x.
+  auto scene = sceneWith(R"(
+    <shape type="cylinder"><point name="p0" x="1" y="2" z="3"/><point name="p1" x="1" y="2" z="5"/>
+      <float name="radius" value="0.5"/></shape>)");
+  auto hit = scene->intersect(Ray{Vec3(5, 2, 4.5f), Vec3(-1, 0, 0)});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 3.5f, 1e-5f);
+  EXPECT_NEAR(hit->ng.x, 1.0f, 1e-6f);
+  EXPECT_NEAR(hit->uv.x, 0.0f, 1e-6f);         // angle 0
+  EXPECT_NEAR(hit->uv.y, 0.75f, 1e-6f);        // 1.5 of the length 2
+  EXPECT_NEAR(hit->shading.s.y, 1.0f, 1e-5f);  // dp/du turns counter-clockwise about the axis
+  // From the axis, the far wall is hit from inside (the normal still points outward); past the
+  // ends and along the axis there is nothing (no end caps).
+  auto inside = scene->intersect(Ray{Vec3(1, 2, 4), Vec3(0, 1, 0)});
+  ASSERT_TRUE(inside.has_value());
+  EXPECT_NEAR(inside->t, 0.5f, 1e-5f);
+  EXPECT_NEAR(inside->ng.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(inside->uv.x, 0.25f, 1e-6f);
+  EXPECT_FALSE(scene->intersect(Ray{Vec3(5, 2, 5.01f), Vec3(-1, 0, 0)}).has_value());
+  EXPECT_FALSE(scene->intersect(Ray{Vec3(1, 2, 0), Vec3(0, 0, 1)}).has_value());
+  // A ray entering through the open end hits the inside of the wall.
+  auto throughEnd = scene->intersect(Ray{Vec3(1, 2, 6), normalize(Vec3(0, 0.5f, -1))});
+  ASSERT_TRUE(throughEnd.has_value());
+  EXPECT_NEAR(throughEnd->p.z, 5.0f, 1e-4f);
+}
+
+TEST(Shapes, CylinderAreaAndSamplingAndItsLimits) {
+  ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0">
+    <shape type="cylinder"><float name="radius" value="0.5"/><point name="p1" x="0" y="2" z="0"/>
+      <transform name="to_world"><scale value="3"/></transform>
+      <emitter type="area"><rgb name="radiance" value="1"/></emitter></shape></scene>)",
+                                       "<test>", ".", {}, builtinPlugins());
+  auto tube = std::dynamic_pointer_cast<Shape>(parsed.objects.at(0));
+  EXPECT_NEAR(tube->surfaceArea(), kTwoPi * 1.5f * 6.0f, 1e-3f);
+  for (Vec2 u : {Vec2(0.1f, 0.2f), Vec2(0.9f, 0.7f)}) {
+    PositionSample ps = tube->samplePosition(u);
+    EXPECT_NEAR(std::sqrt(ps.p.x * ps.p.x + ps.p.z * ps.p.z), 1.5f, 1e-5f);  // on the tube around y
+    EXPECT_NEAR(ps.p.y, 6.0f * u.x, 1e-5f);
+    EXPECT_NEAR(dot(ps.n, Vec3(ps.p.x, 0, ps.p.z) / 1.5f), 1.0f, 1e-5f);
+    EXPECT_NEAR(ps.pdfArea, 1.0f / tube->surfaceArea(), 1e-7f);
+  }
+  auto load = [](const std::string& params) {
+    loadSceneString("<scene version=\"3.0.0\">\n<shape type=\"cylinder\">\n" + params + "</shape></scene>", "s.xml",
+                    ".", {}, builtinPlugins());
+  };
+  EXPECT_THROW(load("<float name=\"radius\" value=\"0\"/>"), InputError);
+  EXPECT_THROW(load("<point name=\"p1\" x=\"0\" y=\"0\" z=\"0\"/>"), InputError);
+  try {
+    load(R"(<transform name="to_world"><scale x="2" y="1" z="1"/></transform>
+            <emitter type="area"><rgb name="radiance" value="1"/></emitter>)");
+    ADD_FAILURE() << "an emitting elliptic tube was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("keeps it round"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("s.xml:"), std::string::npos) << e.what();
+  }
+}

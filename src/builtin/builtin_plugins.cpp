@@ -23,6 +23,7 @@
 #include "samplers/stratified_sampler.h"
 #include "sensors/bsdf_visualizer_sensor.h"
 #include "sensors/perspective_sensor.h"
+#include "shapes/cylinder_shape.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
 #include "shapes/obj_mesh.h"
@@ -67,6 +68,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "rectangle", makeRectangleShape);
     r.add("shape", "disk", makeDiskShape);
     r.add("shape", "sphere", makeSphereShape);
+    r.add("shape", "cylinder", makeCylinderShape);
     r.add("shape", "cube", makeCubeShape);
     r.add("shape", "feather", makeFeatherShape);
     return r;

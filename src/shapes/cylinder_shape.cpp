@@ -1,0 +1,86 @@
+#include "shapes/cylinder_shape.h"
+
+#include "core/frame.h"
+#include "shapes/triangle_mesh.h"
+
+namespace columba {
+
+CylinderShape::CylinderShape(const Transform& toWorld, bool flipNormals) : AnalyticShape(toWorld), flip_(flipNormals) {
+  Vec3 ax = toWorld_.vector(Vec3(1, 0, 0)), ay = toWorld_.vector(Vec3(0, 1, 0)), az = toWorld_.vector(Vec3(0, 0, 1));
+  float r = length(ax), tolerance = 1e-5f * r;
+  area_ = kTwoPi * r * length(az);
+  round_ = std::abs(length(ay) - r) < tolerance && std::abs(dot(ax, ay)) < tolerance * r &&
+           std::abs(dot(ax, az)) < tolerance * length(az) && std::abs(dot(ay, az)) < tolerance * length(az);
+}
+
+bool CylinderShape::intersectWorld(const Vec3& worldO, const Vec3& worldD, float tmin, float tmax, float& t) const {
+  Vec3 o = toLocalPoint(worldO), d = toLocalVector(worldD);
+  // |(o + t d)_xy|^2 = 1 in double precision, then the nearer root within the tube's length.
+  double a = double(d.x) * d.x + double(d.y) * d.y;
+  double b = 2.0 * (double(o.x) * d.x + double(o.y) * d.y);
+  double c = double(o.x) * o.x + double(o.y) * o.y - 1.0;
+  double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0 || a == 0.0) return false;
+  double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  for (double root : {t0, t1}) {
+    double z = double(o.z) + root * d.z;
+    if (root > tmin && root < tmax && z >= 0.0 && z <= 1.0) {
+      t = float(root);
+      return true;
+    }
+  }
+  return false;
+}
+
+SurfaceInteraction CylinderShape::interaction(const Ray& ray, const HitRecord& hit) const {
+  SurfaceInteraction si;
+  si.t = hit.t;
+  si.shape = this;
+  Vec3 local = toLocalPoint(ray.at(hit.t));
+  float radial = std::sqrt(local.x * local.x + local.y * local.y);
+  if (radial > 0.0f) local = Vec3(local.x / radial, local.y / radial, local.z);  // back onto the tube
+  si.p = toWorldPoint(local);
+  si.ng = toWorldNormal(localNormal(local));
+  float phi = std::atan2(local.y, local.x);
+  si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), local.z);
+  si.shading = Frame::fromNormalAndS(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));  // dp/du
+  return si;
+}
+
+PositionSample CylinderShape::samplePosition(Vec2 u) const {
+  float phi = kTwoPi * u.y;
+  Vec3 local(std::cos(phi), std::sin(phi), u.x);
+  PositionSample ps;
+  ps.p = toWorldPoint(local);
+  ps.n = toWorldNormal(localNormal(local));
+  ps.pdfArea = 1.0f / area_;
+  return ps;
+}
+
+std::shared_ptr<Object> makeCylinderShape(const Properties& props) {
+  Vec3 p0 = props.getVector("p0", Vec3(0, 0, 0)), p1 = props.getVector("p1", Vec3(0, 0, 1));
+  float radius = props.getFloat("radius", 1.0f);
+  if (!(radius > 0.0f)) throw props.error("radius", "the radius must be positive");
+  float len = length(p1 - p0);
+  if (!(len > 0.0f)) throw props.error("p1", "p0 and p1 must differ: they are the ends of the cylinder's axis");
+  Frame frame = Frame::fromNormal((p1 - p0) / len);
+  Matrix4 axes = Matrix4::identity();
+  for (int row = 0; row < 3; ++row) {
+    axes.m[row][0] = frame.s[row];
+    axes.m[row][1] = frame.t[row];
+    axes.m[row][2] = frame.n[row];
+  }
+  Transform toWorld = props.getTransform("to_world") * Transform::translate(p0) * Transform(axes, axes.transpose()) *
+                      Transform::scale(Vec3(radius, radius, len));
+  auto shape = std::make_shared<CylinderShape>(toWorld, props.getBool("flip_normals", false));
+  attachMaterial(props, *shape);
+  if (shape->emitter && !shape->keepsRound())
+    throw props.error("to_world",
+                      "an emitting cylinder needs a to_world that keeps it round (no shear, the same "
+                      "scale across its axis): its area and area sampling assume so");
+  return shape;
+}
+
+}  // namespace columba
