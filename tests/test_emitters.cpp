@@ -120,3 +120,45 @@ TEST(Emitter, AreaLightDirectionSamplingMatchesPdfHit) {
     EXPECT_GT(result.pValue, 1.0 - std::pow(1.0 - kFamilyAlpha, 1.0 / tests));
   }
 }
+
+TEST(Emitter, SpotFallsOffLinearlyInAngleAsMitsubas) {
+  // Pointing from (1, 1, 1) toward +y; cutoff 40 degrees, beam width 20: full to 20 degrees off the
+  // axis, half at 30, nothing from 40.
+  ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0"><emitter type="spot">
+      <float name="cutoff_angle" value="40"/><float name="beam_width" value="20"/>
+      <transform name="to_world"><lookat origin="1, 1, 1" target="1, 2, 1" up="0, 0, 1"/></transform></emitter>
+      <emitter type="point"><point name="position" x="1" y="1" z="1"/></emitter></scene>)",
+                                       "<test>", ".", {}, builtinPlugins());
+  auto spot = std::dynamic_pointer_cast<Emitter>(parsed.objects.at(0));
+  auto point = std::dynamic_pointer_cast<Emitter>(parsed.objects.at(1));
+  ASSERT_TRUE(spot && point);
+  Wavelengths wl = someWavelengths();
+  auto at = [&](float degrees, float distance) {
+    float a = degToRad(degrees);
+    return Vec3(1.0f + distance * std::sin(a), 1.0f + distance * std::cos(a), 1.0f);
+  };
+  // On the axis the spot equals a point light of the same intensity, 1 / r^2 included.
+  auto onAxis = spot->sample(at(0, 2), Vec2(0.5f, 0.5f), wl);
+  auto pointSample = point->sample(at(0, 2), Vec2(0.5f, 0.5f), wl);
+  ASSERT_TRUE(onAxis && pointSample);
+  EXPECT_NEAR(onAxis->distance, 2.0f, 1e-6f);
+  EXPECT_NEAR(onAxis->direction.y, -1.0f, 1e-6f);
+  for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_FLOAT_EQ(onAxis->radiance[k], pointSample->radiance[k]);
+  for (auto [degrees, expected] :
+       {std::pair{10.0f, 1.0f}, {19.9f, 1.0f}, {25.0f, 0.75f}, {30.0f, 0.5f}, {35.0f, 0.25f}}) {
+    auto s = spot->sample(at(degrees, 2), Vec2(0.5f, 0.5f), wl);
+    ASSERT_TRUE(s) << degrees;
+    EXPECT_NEAR(s->radiance[0] / onAxis->radiance[0], expected, 1e-4f) << degrees << " degrees";
+  }
+  EXPECT_FALSE(spot->sample(at(40.5f, 2), Vec2(0.5f, 0.5f), wl));
+  EXPECT_FALSE(spot->sample(at(180.0f, 2), Vec2(0.5f, 0.5f), wl));  // behind it
+
+  auto load = [](const std::string& params) {
+    loadSceneString("<scene version=\"3.0.0\">\n<emitter type=\"spot\">\n" + params + "</emitter></scene>", "s.xml",
+                    ".", {}, builtinPlugins());
+  };
+  load("<float name=\"cutoff_angle\" value=\"30\"/>");                          // beam width 22.5 by default
+  EXPECT_THROW(load("<float name=\"beam_width\" value=\"25\"/>"), InputError);  // wider than the 20-degree cutoff
+  EXPECT_THROW(load("<float name=\"cutoff_angle\" value=\"0\"/>"), InputError);
+  EXPECT_THROW(load("<texture name=\"texture\" type=\"bitmap\"/>"), InputError);
+}

@@ -12,6 +12,7 @@
 #include "emitters/directional_emitter.h"
 #include "emitters/envmap_emitter.h"
 #include "emitters/point_emitter.h"
+#include "emitters/spot_emitter.h"
 #include "film/box_filter.h"
 #include "film/film.h"
 #include "film/gaussian_filter.h"
@@ -52,6 +53,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("emitter", "area", makeAreaEmitter);
     r.add("emitter", "constant", makeConstantEmitter);
     r.add("emitter", "point", makePointEmitter);
+    r.add("emitter", "spot", makeSpotEmitter);
     r.add("emitter", "directional", makeDirectionalEmitter);
     r.add("emitter", "envmap", makeEnvmapEmitter);
     r.add("bsdf", "diffuse", makeDiffuseBSDF);

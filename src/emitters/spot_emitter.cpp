@@ -1,0 +1,50 @@
+#include "emitters/spot_emitter.h"
+
+namespace columba {
+
+SpotEmitter::SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth)
+    : worldToLocal_(toWorld.inverse()),
+      position_(toWorld.point(Vec3(0, 0, 0))),
+      intensity_(std::move(intensity)),
+      cutoff_(cutoff),
+      beamWidth_(beamWidth),
+      cosCutoff_(std::cos(cutoff)),
+      cosBeamWidth_(std::cos(beamWidth)) {}
+
+float SpotEmitter::falloff(const Vec3& local) const {
+  float cosTheta = normalize(local).z;
+  if (!(cosTheta > cosCutoff_)) return 0.0f;
+  if (cosTheta >= cosBeamWidth_) return 1.0f;
+  return (cutoff_ - safeAcos(cosTheta)) / (cutoff_ - beamWidth_);
+}
+
+std::optional<EmitterSample> SpotEmitter::sample(const Vec3& ref, Vec2, const Wavelengths& wl) const {
+  Vec3 d = position_ - ref;
+  float dist2 = lengthSquared(d);
+  if (dist2 == 0.0f) return std::nullopt;
+  float f = falloff(worldToLocal_.vector(-d));
+  if (!(f > 0.0f)) return std::nullopt;
+  EmitterSample s;
+  s.distance = std::sqrt(dist2);
+  s.direction = d / s.distance;
+  s.radiance = intensity_.sample(wl) * (f / dist2);
+  s.pdf = 1.0f;
+  return s;
+}
+
+std::shared_ptr<Object> makeSpotEmitter(const Properties& props) {
+  if (props.has("texture"))
+    throw props.error("texture", "projected textures are not supported (Columba has no textures yet)");
+  float cutoff = props.getFloat("cutoff_angle", 20.0f);
+  if (!(cutoff > 0.0f && cutoff <= 180.0f))
+    throw props.error("cutoff_angle", "must lie in (0, 180] degrees, not " + std::to_string(cutoff));
+  float beamWidth = props.getFloat("beam_width", 0.75f * cutoff);
+  if (!(beamWidth >= 0.0f && beamWidth <= cutoff))
+    throw props.error("beam_width", "must lie between 0 and cutoff_angle (" + std::to_string(cutoff) +
+                                        " degrees), not " + std::to_string(beamWidth));
+  return std::make_shared<SpotEmitter>(props.getTransform("to_world"),
+                                       props.getSpectrum("intensity", 1.0f, SpectrumUse::Emission), degToRad(cutoff),
+                                       degToRad(beamWidth));
+}
+
+}  // namespace columba

@@ -1,0 +1,30 @@
+#pragma once
+// `spot`: Mitsuba's spot light. At the origin of `to_world`, shining along its +z, with radiant
+// intensity `intensity` (W/sr/nm) on the axis: full within `beam_width` degrees of it, falling
+// linearly in angle to zero at `cutoff_angle` (20 degrees; beam_width 3/4 of it by default).
+// Mitsuba's projected `texture` needs textures, which Columba does not have: an error says so.
+#include "core/properties.h"
+#include "core/transform.h"
+#include "emitters/emitter.h"
+
+namespace columba {
+
+class SpotEmitter : public Emitter {
+ public:
+  // Angles in radians, 0 <= beamWidth <= cutoff.
+  SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth);
+  std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  bool isDelta() const override { return true; }
+  // The fraction of the axis' intensity sent along the light's local direction `local` (any length).
+  float falloff(const Vec3& local) const;
+
+ private:
+  Transform worldToLocal_;
+  Vec3 position_;
+  SpectralDistribution intensity_;
+  float cutoff_, beamWidth_, cosCutoff_, cosBeamWidth_;
+};
+
+std::shared_ptr<Object> makeSpotEmitter(const Properties& props);
+
+}  // namespace columba
