@@ -1,11 +1,15 @@
 #include "builtin/builtin_plugins.h"
 
 #include "bsdfs/barbule_bsdf.h"
+#include "bsdfs/blend_bsdf.h"
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
+#include "bsdfs/mask_bsdf.h"
+#include "bsdfs/null_bsdf.h"
 #include "bsdfs/plastic.h"
 #include "bsdfs/roughconductor.h"
 #include "bsdfs/roughplastic.h"
+#include "bsdfs/thin_dielectric.h"
 #include "bsdfs/twosided.h"
 #include "emitters/area_emitter.h"
 #include "emitters/constant_emitter.h"
@@ -62,6 +66,10 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "dielectric", makeDielectricBSDF);
     r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
+    r.add("bsdf", "thindielectric", makeThinDielectricBSDF);
+    r.add("bsdf", "null", makeNullBSDF);
+    r.add("bsdf", "mask", makeMaskBSDF);
+    r.add("bsdf", "blendbsdf", makeBlendBSDF);
     r.add("bsdf", "barbulebsdf", makeBarbuleBSDF);
     r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);

@@ -1,0 +1,32 @@
+#pragma once
+// Mitsuba's `blendbsdf`: a linear blend (1 - weight) f_0 + weight f_1 of two nested BSDFs, sampled
+// by choosing one of them with those probabilities. A non-delta sample's density is the blend of
+// both densities, so MIS sees the whole mixture; a delta one keeps its component's weight.
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "core/properties.h"
+
+namespace columba {
+
+class BlendBSDF : public BSDF {
+ public:
+  BlendBSDF(std::shared_ptr<const BSDF> first, std::shared_ptr<const BSDF> second, float weight)
+      : first_(std::move(first)), second_(std::move(second)), weight_(weight) {}
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
+  bool hasPassThrough() const override { return first_->hasPassThrough() || second_->hasPassThrough(); }
+  bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
+
+ private:
+  std::shared_ptr<const BSDF> first_, second_;
+  float weight_;  // of the second
+};
+
+// Parameters: weight (a <float> in [0, 1], default 0.5; textures are not supported) and two
+// nested BSDFs.
+std::shared_ptr<Object> makeBlendBSDF(const Properties& props);
+
+}  // namespace columba

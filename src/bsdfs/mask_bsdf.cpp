@@ -1,0 +1,46 @@
+#include "bsdfs/mask_bsdf.h"
+
+namespace columba {
+
+Spectrum MaskBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return opacity_ * nested_->eval(ctx, wi, wo, wl);
+}
+
+float MaskBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return opacity_ * nested_->pdf(ctx, wi, wo, wl);
+}
+
+std::optional<BSDFSample> MaskBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                           float uComponent, Vec2 u) const {
+  float transparency = 1.0f - opacity_;
+  if (uComponent < transparency) {
+    BSDFSample s;
+    s.wo = -wi;
+    s.weight = Spectrum(1.0f);
+    s.pdf = transparency;
+    s.delta = s.passThrough = true;
+    return s;
+  }
+  // The nested BSDF with what uComponent has left; f and pdf both scale by the opacity.
+  std::optional<BSDFSample> s = nested_->sample(ctx, wi, wl, (uComponent - transparency) / opacity_, u);
+  if (s) s->pdf *= opacity_;
+  return s;
+}
+
+Spectrum MaskBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
+  Spectrum through(1.0f - opacity_);
+  if (nested_->hasPassThrough()) through += opacity_ * nested_->passThrough(ctx, wi, wl);
+  return through;
+}
+
+std::shared_ptr<Object> makeMaskBSDF(const Properties& props) {
+  auto nested = props.children<BSDF>();
+  if (nested.size() != 1)
+    throw InputError(props.location, "'mask' takes one nested BSDF, not " + std::to_string(nested.size()));
+  float opacity = props.getFloat("opacity", 0.5f);
+  if (!(opacity >= 0.0f && opacity <= 1.0f))
+    throw props.error("opacity", "must lie in [0, 1], not " + std::to_string(opacity));
+  return std::make_shared<MaskBSDF>(nested.front(), opacity);
+}
+
+}  // namespace columba

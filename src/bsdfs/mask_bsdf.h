@@ -1,0 +1,31 @@
+#pragma once
+// Mitsuba's `mask`: a nested BSDF on a fraction `opacity` of the surface (leaves, fences); the rest
+// lets light through untouched. Values and densities of the nested BSDF are scaled by the opacity,
+// and light passes straight through with weight 1 - opacity (a pass-through, for shadow rays too).
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "core/properties.h"
+
+namespace columba {
+
+class MaskBSDF : public BSDF {
+ public:
+  MaskBSDF(std::shared_ptr<const BSDF> nested, float opacity) : nested_(std::move(nested)), opacity_(opacity) {}
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
+  bool hasPassThrough() const override { return true; }
+  bool isDeltaOnly() const override { return nested_->isDeltaOnly(); }
+
+ private:
+  std::shared_ptr<const BSDF> nested_;
+  float opacity_;
+};
+
+// Parameters: opacity (a <float> in [0, 1], default 0.5; textures are not supported) and one
+// nested BSDF.
+std::shared_ptr<Object> makeMaskBSDF(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,40 @@
+#pragma once
+// Mitsuba's `thindielectric`: a thin sheet of dielectric (a window pane). Light is mirrored with
+// the sheet's reflectance or passes straight through (no refraction: the two faces are parallel),
+// on either side. With the unpolarised Fresnel reflectance r at the incidence angle, the light
+// bouncing between the faces sums to R = r + t^2 r / (1 - r^2) = 2 r / (1 + r) and T = 1 - R.
+// The transmission is a pass-through, so shadow rays cross the sheet with weight T.
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "core/properties.h"
+
+namespace columba {
+
+class ThinDielectricBSDF : public BSDF {
+ public:
+  // eta = interior / exterior index.
+  ThinDielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
+      : eta_(eta),
+        specularReflectance_(std::move(specularReflectance)),
+        specularTransmittance_(std::move(specularTransmittance)) {}
+  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
+    return Spectrum(0.0f);
+  }
+  float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
+  bool hasPassThrough() const override { return true; }
+  bool isDeltaOnly() const override { return true; }
+  // R for light meeting the sheet at incidence cosine `cosI` (either side).
+  float sheetReflectance(float cosI) const;
+
+ private:
+  float eta_;
+  SpectralDistribution specularReflectance_, specularTransmittance_;
+};
+
+// Parameters: int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).
+std::shared_ptr<Object> makeThinDielectricBSDF(const Properties& props);
+
+}  // namespace columba
