@@ -7,6 +7,7 @@
 #include "bsdfs/mask_bsdf.h"
 #include "bsdfs/null_bsdf.h"
 #include "bsdfs/plastic.h"
+#include "bsdfs/rough_dielectric.h"
 #include "bsdfs/roughconductor.h"
 #include "bsdfs/roughplastic.h"
 #include "bsdfs/thin_dielectric.h"
@@ -67,6 +68,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
     r.add("bsdf", "thindielectric", makeThinDielectricBSDF);
+    r.add("bsdf", "roughdielectric", makeRoughDielectricBSDF);
     r.add("bsdf", "null", makeNullBSDF);
     r.add("bsdf", "mask", makeMaskBSDF);
     r.add("bsdf", "blendbsdf", makeBlendBSDF);

@@ -1,0 +1,48 @@
+#pragma once
+// Rough interface between two dielectrics (Mitsuba's `roughdielectric`): microfacet reflection
+// and refraction (Walter et al. 2007, "Microfacet models for refraction through rough surfaces"),
+// sampled through the normals visible from wi, then reflection with the Fresnel reflectance at
+// that normal as its probability. Paths start at the camera: refraction scales the value by
+// (n_wi / n_wo)^2 as the smooth `dielectric` does (radiance compressed on the denser side).
+#include <memory>
+#include "bsdfs/bsdf.h"
+#include "bsdfs/microfacet.h"
+#include "core/properties.h"
+
+namespace columba {
+
+class RoughDielectricBSDF : public BSDF {
+ public:
+  // eta = interior / exterior index; the normal (local +z) points to the exterior.
+  RoughDielectricBSDF(MicrofacetDistribution distribution, float eta, SpectralDistribution specularReflectance,
+                      SpectralDistribution specularTransmittance);
+  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+
+ private:
+  // The pair (wi, wo) seen from wi's side: both mirrored through the surface when wi is inside,
+  // with the relative index eta from wi's side to the other.
+  struct Pair {
+    Vec3 wi, wo;
+    float eta = 1.0f;
+    bool reflection = false;
+    Vec3 m;  // the (generalised) half vector, toward wi's side
+    bool valid = false;
+  };
+  Pair pairOf(const Vec3& wi, const Vec3& wo) const;
+  // f |cos wo| and the density, for a valid pair.
+  float value(const Pair& p, float fresnel) const;
+  float density(const Pair& p, float fresnel) const;
+
+  MicrofacetDistribution distribution_;
+  float eta_;
+  SpectralDistribution specularReflectance_, specularTransmittance_;
+};
+
+// Parameters: distribution ("beckmann", "ggx"), alpha or alpha_u and alpha_v, sample_visible,
+// int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).
+std::shared_ptr<Object> makeRoughDielectricBSDF(const Properties& props);
+
+}  // namespace columba
