@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include "core/illuminant.h"
 #include "scene/scene_loader.h"
+#include "temp_dir_test.h"
 
 using namespace columba;
 
@@ -301,6 +302,85 @@ TEST(XmlLoader, GetPathResolvesAgainstBaseDirAndReportsMissingFiles) {
   EXPECT_TRUE(std::filesystem::equivalent(p->strings.at("file"), dataDir() + "/data/sample.spd"));
   expectContains(errorOf(probe("\n<string name=\"file\" value=\"data/missing.spd\"/>")),
                  {"test.xml:4", "'file'", "data/missing.spd"});
+}
+
+namespace {
+
+// A main scene file that includes parts/part.xml, whose probe names the file `x.txt`.
+class FileLookup : public columba::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    for (const char* sub : {"parts/assets", "extra", "later"}) std::filesystem::create_directories(dir_ / sub);
+    write("main.xml",
+          "<scene version=\"3.0.0\">\n"
+          "  <path value=\"extra\"/>\n"
+          "  <path value=\"later\"/>\n"
+          "  <include filename=\"parts/part.xml\"/>\n"
+          "</scene>\n");
+    write("parts/part.xml",
+          "<scene version=\"3.0.0\">\n"
+          "  <path value=\"assets\"/>\n"
+          "  <bsdf type=\"probe\"><string name=\"file\" value=\"x.txt\"/></bsdf>\n"
+          "</scene>\n");
+  }
+  // The file the probe's `x.txt` leads to, relative to the test's directory.
+  std::string found() {
+    ParsedScene scene = loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+    auto probe = std::dynamic_pointer_cast<TestObject>(scene.objects.at(0));
+    return std::filesystem::relative(probe->strings.at("file"), dir_).string();
+  }
+  std::string loadError() {
+    try {
+      loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+}  // namespace
+
+// The including file's directory, the main file's, the <path>s (the latest declared first, each
+// relative to the file declaring it), then the working directory.
+TEST_F(FileLookup, RelativeNamesAreLookedForInMitsubasOrder) {
+  for (const char* where : {"parts/x.txt", "x.txt", "parts/assets/x.txt", "later/x.txt", "extra/x.txt"})
+    write(where, "");
+  EXPECT_EQ(found(), "parts/x.txt");
+  std::filesystem::remove(dir_ / "parts/x.txt");
+  EXPECT_EQ(found(), "x.txt");
+  std::filesystem::remove(dir_ / "x.txt");
+  EXPECT_EQ(found(), "parts/assets/x.txt");
+  std::filesystem::remove(dir_ / "parts/assets/x.txt");
+  EXPECT_EQ(found(), "later/x.txt");
+  std::filesystem::remove(dir_ / "later/x.txt");
+  EXPECT_EQ(found(), "extra/x.txt");
+  std::filesystem::remove(dir_ / "extra/x.txt");
+  const std::string d = dir_.string();
+  const std::string looked = "(looked for '" + d + "/parts/x.txt', '" + d + "/x.txt', '" + d +
+                             "/parts/assets/x.txt', '" + d + "/later/x.txt', '" + d + "/extra/x.txt' and 'x.txt')";
+  expectContains(loadError(), {"part.xml:3", "'file'", looked.c_str()});
+}
+
+TEST_F(FileLookup, IncludesAreFoundThroughPaths) {
+  write("extra/common.xml", "<scene version=\"3.0.0\">\n  <bsdf type=\"diffuse\" id=\"common\"/>\n</scene>\n");
+  write("main.xml",
+        "<scene version=\"3.0.0\">\n  <path value=\"extra\"/>\n  <include filename=\"common.xml\"/>\n"
+        "  <shape type=\"mesh\"><ref id=\"common\"/></shape>\n</scene>\n");
+  ParsedScene scene = loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(std::dynamic_pointer_cast<TestObject>(scene.objects[1])->children.at(0), scene.objects[0]);
+}
+
+TEST_F(FileLookup, BadPathsNameFileLineAndValue) {
+  write("main.xml", "<scene version=\"3.0.0\">\n\n  <path value=\"nowhere\"/>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:3", "<path> 'nowhere'", "not found"});
+  write("main.xml",
+        "<scene version=\"3.0.0\">\n  <bsdf type=\"probe\">\n    <path value=\"extra\"/>\n  </bsdf>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:3", "<path>", "only allowed directly inside <scene>"});
+  write("main.xml", "<scene version=\"3.0.0\">\n  <path valeu=\"extra\"/>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:2", "'valeu'"});
 }
 
 TEST(XmlLoader, ReferencesShareTheObject) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include "core/file_lookup.h"
 #include "scene/xml_source.h"
 #include "scene/xml_transform.h"
 #include "scene/xml_values.h"
@@ -28,7 +29,10 @@ struct NamedObject {
 // Objects with an `id` can be referenced by any <ref> that comes after them.
 class SceneBuilder {
  public:
-  SceneBuilder(const Defines& defines, const PluginRegistry& registry) : vars_(defines), registry_(registry) {}
+  // `mainDir` is the main scene file's directory, where relative file names are looked for after
+  // the declaring file's.
+  SceneBuilder(const Defines& defines, const PluginRegistry& registry, std::string mainDir)
+      : vars_(defines), registry_(registry), mainDir_(std::move(mainDir)) {}
 
   void readScene(const XmlDocument& doc, ParsedScene& scene);
   // Reads a scene file, which must not be one of the files whose <include>s led to it.
@@ -37,6 +41,9 @@ class SceneBuilder {
 
  private:
   void include(const XmlElement& e, ParsedScene& scene);
+  void addSearchPath(const XmlElement& e);
+  // Where a file name in `doc` is looked for: its directory, the main file's, the <path>s.
+  std::vector<std::string> searchDirs(const XmlDocument& doc) const;
   // `depth` counts the plug-ins enclosing `e`.
   NamedObject instantiate(const XmlElement& e, int depth);
   Properties::Child reference(const XmlElement& e) const;
@@ -46,6 +53,8 @@ class SceneBuilder {
   const PluginRegistry& registry_;
   std::map<std::string, NamedObject> ids_;
   std::vector<std::string> includeStack_;  // the files being read, outermost first
+  std::string mainDir_;
+  std::vector<std::string> searchPaths_;  // the <path> directories, the latest first (as Mitsuba)
 };
 
 void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
@@ -67,6 +76,8 @@ void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
       vars_.addDefault(e.attribute("name"), e.attribute("value"), e.location());
     } else if (tag == "include") {
       include(e, scene);
+    } else if (tag == "path") {
+      addSearchPath(e);
     } else {
       throw InputError(e.location(), "<" + tag + "> cannot appear directly inside <scene>");
     }
@@ -78,10 +89,10 @@ void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
   e.allowAttributes({"filename"});
   e.requireNoChildren();
   namespace fs = std::filesystem;
-  fs::path path(e.attribute("filename"));
-  if (path.is_relative()) path = fs::path(e.document().baseDir()) / path;
+  const fs::path path = requireFile(e.attribute("filename"), searchDirs(e.document()), e.location(), "included file");
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(e.location(), "included file '" + path.string() + "' not found");
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(e.location(), "included file '" + path.string() + "' is not a regular file");
   std::string key = fs::weakly_canonical(path).string();
   auto first = std::find(includeStack_.begin(), includeStack_.end(), key);
   if (first != includeStack_.end()) {
@@ -90,6 +101,27 @@ void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
     throw InputError(e.location(), "including '" + path.string() + "' closes an include cycle: " + cycle + key);
   }
   readFile(path.string(), scene);
+}
+
+// A <path>: a directory where later relative file names are also looked for; a relative one is
+// relative to the declaring file's directory.
+void SceneBuilder::addSearchPath(const XmlElement& e) {
+  e.allowAttributes({"value"});
+  e.requireNoChildren();
+  namespace fs = std::filesystem;
+  const std::string value = e.attribute("value");
+  fs::path dir(value);
+  if (dir.is_relative()) dir = fs::path(e.document().baseDir()) / dir;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError(e.location(), "<path> '" + value + "': directory '" + dir.string() + "' not found");
+  searchPaths_.insert(searchPaths_.begin(), dir.string());
+}
+
+std::vector<std::string> SceneBuilder::searchDirs(const XmlDocument& doc) const {
+  std::vector<std::string> dirs = {doc.baseDir(), mainDir_};
+  dirs.insert(dirs.end(), searchPaths_.begin(), searchPaths_.end());
+  return dirs;
 }
 
 void SceneBuilder::readFile(const std::string& path, ParsedScene& scene) {
@@ -109,7 +141,7 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
   props.type = e.attribute("type");
   props.id = e.attribute("id", "");
   props.location = e.location();
-  props.baseDir = e.document().baseDir();
+  props.searchDirs = searchDirs(e.document());
 
   const PluginFactory* factory = registry_.find(props.tag, props.type);
   if (!factory) throw InputError(e.location(), "unknown <" + props.tag + "> plug-in type '" + props.type + "'");
@@ -190,7 +222,7 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
     e.allowAttributes({"name", "value", "x", "y", "z"});
   } else if (tag == "spectrum") {
     e.allowAttributes({"name", "value", "filename"});
-  } else if (tag == "default" || tag == "include") {
+  } else if (tag == "default" || tag == "include" || tag == "path") {
     throw InputError(loc, "<" + tag + "> is only allowed directly inside <scene>");
   } else {
     throw InputError(loc, "unknown element <" + tag + "> in <" + props.tag + "> '" + props.type + "'");
@@ -234,9 +266,10 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
       v.spectrum = std::move(given.distribution);
       v.lowest = given.lowest;
     } else {
-      std::filesystem::path file(e.attribute("filename"));
-      if (file.is_relative()) file = std::filesystem::path(props.baseDir) / file;
-      GivenSpectrum given = readSpectrumFile(file.string(), what, loc);
+      // A name found nowhere is read where the declaring file is, to say that it does not exist.
+      const std::string name = e.attribute("filename");
+      const std::string file = findFile(name, props.searchDirs).value_or(fileCandidates(name, props.searchDirs)[0]);
+      GivenSpectrum given = readSpectrumFile(file, what, loc);
       v.spectrum = std::move(given.distribution);
       v.lowest = given.lowest;
     }
@@ -248,7 +281,7 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
 
 ParsedScene loadSceneFile(const std::string& path, const Defines& defines, const PluginRegistry& registry) {
   ParsedScene scene;
-  SceneBuilder builder(defines, registry);
+  SceneBuilder builder(defines, registry, std::filesystem::path(path).parent_path().string());
   builder.readFile(path, scene);
   scene.unusedDefines = builder.unusedDefines();
   return scene;
@@ -258,7 +291,7 @@ ParsedScene loadSceneString(const std::string& xml, const std::string& sourceNam
                             const Defines& defines, const PluginRegistry& registry) {
   XmlDocument doc(xml, sourceName, baseDir);
   ParsedScene scene;
-  SceneBuilder builder(defines, registry);
+  SceneBuilder builder(defines, registry, baseDir);
   builder.readScene(doc, scene);
   scene.unusedDefines = builder.unusedDefines();
   return scene;
