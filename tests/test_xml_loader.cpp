@@ -408,6 +408,71 @@ TEST(XmlLoader, ReferencesShareTheObject) {
                  {"test.xml:3", "duplicate id 'a'", "test.xml:2"});
 }
 
+TEST(XmlLoader, ReferencesMayComeBeforeTheirIds) {
+  // As in Mitsuba: the id is declared further on, at the top level or nested in another plug-in;
+  // the plug-in is built when first needed, once.
+  auto scene = load(R"(<scene version="3.0.0">
+<shape type="mesh"><ref id="later"/><ref id="inner"/></shape>
+<bsdf type="diffuse" id="later"/>
+<shape type="mesh"><bsdf type="twosided" id="inner"/></shape>
+</scene>)");
+  EXPECT_EQ(creationLog,
+            (std::vector<std::string>{"bsdf:diffuse#later", "bsdf:twosided#inner", "shape:mesh", "shape:mesh"}));
+  ASSERT_EQ(scene.objects.size(), 3u);
+  auto first = std::dynamic_pointer_cast<TestObject>(scene.objects[0]);
+  auto second = std::dynamic_pointer_cast<TestObject>(scene.objects[2]);
+  ASSERT_EQ(first->children.size(), 2u);
+  EXPECT_EQ(first->children[0], scene.objects[1]);
+  ASSERT_EQ(second->children.size(), 1u);
+  EXPECT_EQ(first->children[1], second->children[0]);
+}
+
+TEST(XmlLoader, ReferenceCyclesAreErrors) {
+  expectContains(errorOf(R"(<scene version="3.0.0">
+<bsdf type="twosided" id="a"><ref id="b"/></bsdf>
+<bsdf type="twosided" id="b">
+  <ref id="a"/>
+</bsdf>
+</scene>)"),
+                 {"test.xml:4", "<ref> to 'a' closes a cycle", "test.xml:2"});
+  expectContains(errorOf(R"(<scene version="3.0.0">
+<bsdf type="twosided" id="self">
+  <bsdf type="twosided"><ref id="self"/></bsdf>
+</bsdf>
+</scene>)"),
+                 {"test.xml:3", "<ref> to 'self' closes a cycle"});
+}
+
+TEST(XmlLoader, TheFirstDefaultOfANameHolds) {
+  const std::string xml = R"(<scene version="3.0.0">
+<default name="spp" value="4"/>
+<default name="spp" value="8"/>
+<integrator type="path"><integer name="spp" value="$spp"/></integrator>
+</scene>)";
+  EXPECT_EQ(only(load(xml))->ints.at("spp"), 4);
+  EXPECT_EQ(only(load(xml, {{"spp", "16"}}))->ints.at("spp"), 16);
+}
+
+TEST(XmlLoader, TopLevelFilmsSamplersAndFiltersAreThereToBeReferenced) {
+  ::testing::internal::CaptureStderr();
+  auto scene = load(R"(<scene version="3.0.0">
+<sampler type="ldsampler" id="sampler"><integer name="sample_count" value="4"/></sampler>
+<rfilter type="gaussian"/>
+<film type="hdrfilm" id="film"><ref id="filter"/></film>
+<rfilter type="gaussian" id="filter"/>
+<sensor type="perspective"><ref id="film"/><ref id="sampler"/></sensor>
+</scene>)");
+  std::string warnings = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(scene.objects.size(), 1u);
+  auto sensor = std::dynamic_pointer_cast<TestObject>(scene.objects[0]);
+  EXPECT_EQ(sensor->tag, "sensor");
+  ASSERT_EQ(sensor->children.size(), 2u);
+  EXPECT_EQ(sensor->children[0]->tag, "film");
+  EXPECT_EQ(sensor->children[1]->tag, "sampler");
+  // The unnamed filter can never be used.
+  expectContains(warnings, {"test.xml:3", "<rfilter> without an id is never used"});
+}
+
 TEST(XmlLoader, NestedPluginsComeFirstAndInDocumentOrder) {
   auto scene = load(R"(<scene version="3.0.0">
 <shape type="mesh">
