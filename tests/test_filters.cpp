@@ -8,25 +8,29 @@
 #include "core/rng.h"
 #include "film/box_filter.h"
 #include "film/gaussian_filter.h"
+#include "film/tent_filter.h"
 
 using namespace columba;
 
 namespace {
 
-Properties gaussianProperties(float stddev) {
+// An <rfilter> of `type` with the float parameter `name` set to `number`.
+Properties filterProperties(const std::string& type, const std::string& name, float number) {
   Properties props;
   props.tag = "rfilter";
-  props.type = "gaussian";
+  props.type = type;
   Properties::Value value;
   value.kind = Properties::ValueKind::Float;
-  value.number = stddev;
-  props.set("stddev", value);
+  value.number = number;
+  props.set(name, value);
   return props;
 }
 
+Properties gaussianProperties(float stddev) { return filterProperties("gaussian", "stddev", stddev); }
+
 std::vector<std::shared_ptr<ReconstructionFilter>> allFilters() {
-  return {std::make_shared<BoxFilter>(), std::make_shared<GaussianFilter>(0.5f),
-          std::make_shared<GaussianFilter>(1.2f)};
+  return {std::make_shared<BoxFilter>(), std::make_shared<GaussianFilter>(0.5f), std::make_shared<GaussianFilter>(1.2f),
+          std::make_shared<TentFilter>(1.0f), std::make_shared<TentFilter>(2.5f)};
 }
 
 // Midpoint-rule integral of eval over [x0, x1] x [y0, y1].
@@ -111,4 +115,26 @@ TEST(FilterSample, GaussianMatchesTheTruncatedNormalQuantiles) {
   int inside = 0;
   for (int i = 0; i < n; ++i) inside += std::abs(filter.sample(Vec2((i + 0.5f) / n, 0.5f)).x) < 0.5f;
   EXPECT_NEAR(double(inside) / n, expected, 2.0 / n);
+}
+
+TEST(FilterFactories, TentTakesMitsubasRadius) {
+  Properties tent;
+  tent.type = "tent";
+  EXPECT_FLOAT_EQ(std::dynamic_pointer_cast<ReconstructionFilter>(makeTentFilter(tent))->radius(), 1.0f);
+  Properties wide = filterProperties("tent", "radius", 2.0f);
+  EXPECT_FLOAT_EQ(std::dynamic_pointer_cast<ReconstructionFilter>(makeTentFilter(wide))->radius(), 2.0f);
+  EXPECT_NO_THROW(wide.checkAllUsed());
+  for (float bad : {0.0f, -1.0f}) EXPECT_THROW(makeTentFilter(filterProperties("tent", "radius", bad)), InputError);
+}
+
+TEST(FilterSample, TentMatchesItsClosedForm) {
+  // Per axis the density is (1 - |x|/r) / r; an eighth of it lies below -r/2 and above r/2.
+  TentFilter filter(2.0f);
+  EXPECT_FLOAT_EQ(filter.eval(Vec2(0, 0)), 0.25f);
+  EXPECT_FLOAT_EQ(filter.eval(Vec2(1, 0)), 0.125f);
+  EXPECT_FLOAT_EQ(filter.eval(Vec2(1, -1)), 0.0625f);
+  EXPECT_EQ(filter.eval(Vec2(2.01f, 0)), 0.0f);
+  EXPECT_NEAR(filter.sample(Vec2(0.125f, 0.875f)).x, -1.0f, 1e-6f);
+  EXPECT_NEAR(filter.sample(Vec2(0.125f, 0.875f)).y, 1.0f, 1e-6f);
+  EXPECT_NEAR(filter.sample(Vec2(0.5f, 0.0f)).y, -2.0f, 1e-6f);
 }

@@ -124,3 +124,48 @@ TEST(Renderer, CancellingKeepsTheImageSizeAndReportsIncomplete) {
   EXPECT_EQ(image.width, 768);
   EXPECT_EQ(image.height, 576);
 }
+
+namespace {
+// A small scene: a sphere on a plane under uniform light, with the given integrator and sensor
+// elements and `more` after them.
+std::string sphereOnAPlane(const std::string& integrator, const std::string& sensor, const std::string& more = "") {
+  return "<scene version=\"3.0.0\">\n" + integrator + "\n" + sensor + "\n" + more + R"(
+      <shape type="sphere"><point name="center" x="0" y="0" z="0.7"/><float name="radius" value="0.7"/></shape>
+      <shape type="rectangle"><transform name="to_world"><scale value="5"/></transform></shape>
+      <emitter type="constant"><spectrum name="radiance" value="1"/></emitter></scene>)";
+}
+const char* const kLookAtTheSphere =
+    R"(<transform name="to_world"><lookat origin="0, -4, 2" target="0, 0, 0.5" up="0, 0, 1"/></transform>)";
+}  // namespace
+
+TEST(Renderer, MitsubaPassParametersLeaveTheImageAlone) {
+  const std::string sensor =
+      std::string("<sensor type=\"perspective\">") + kLookAtTheSphere +
+      R"(<film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="12"/></film>
+        <sampler type="independent"><integer name="sample_count" value="4"/></sampler></sensor>)";
+  Image plain = renderSceneString(sphereOnAPlane("<integrator type=\"path\"/>", sensor));
+  ::testing::internal::CaptureStderr();
+  Image passes =
+      renderSceneString(sphereOnAPlane("<integrator type=\"path\"><integer name=\"samples_per_pass\" value=\"2\"/>\n"
+                                       "<float name=\"timeout\" value=\"30\"/></integrator>",
+                                       sensor));
+  const std::string warnings = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(plain.rgb, passes.rgb);
+  EXPECT_NE(warnings.find("<test scene>:3: timeout is ignored"), std::string::npos) << warnings;
+}
+
+TEST(Renderer, ASensorMayReferenceATopLevelFilmAndSampler) {
+  const std::string film =
+      R"(<film type="hdrfilm" id="f"><integer name="width" value="24"/><integer name="height" value="16"/></film>)";
+  const std::string sampler =
+      R"(<sampler type="independent" id="s"><integer name="sample_count" value="4"/></sampler>)";
+  const std::string sensor = std::string("<sensor type=\"perspective\">") + kLookAtTheSphere;
+  Image nested =
+      renderSceneString(sphereOnAPlane("<integrator type=\"path\"/>", sensor + film + sampler + "</sensor>"));
+  // The sampler declared before the sensor, the film after it.
+  Image referenced = renderSceneString(sphereOnAPlane("<integrator type=\"path\"/>" + sampler,
+                                                      sensor + "<ref id=\"f\"/><ref id=\"s\"/></sensor>", film));
+  EXPECT_EQ(referenced.width, 24);
+  EXPECT_EQ(referenced.height, 16);
+  EXPECT_EQ(nested.rgb, referenced.rgb);
+}

@@ -50,6 +50,18 @@ TEST_F(ObjMeshTest, QuadsSplitAlongTheShorterDiagonalAndPolygonsFan) {
   EXPECT_EQ(pentagon.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4}));
 }
 
+TEST_F(ObjMeshTest, CornersWithTheSameIndicesShareAVertex) {
+  // Two triangles of a square share the corners 1 and 3, so a computed normal is shared there.
+  MeshData square = readObjMesh(write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n"));
+  EXPECT_EQ(square.positions.size(), 4u);
+  EXPECT_EQ(square.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+  // A texture seam at corner 1 (texture coordinates 1 and 4 there) keeps two vertices.
+  MeshData seam = readObjMesh(
+      write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 0\nf 1/1 2/2 3/3\nf 1/4 3/3 4/1\n"));
+  EXPECT_EQ(seam.positions.size(), 5u);
+  EXPECT_EQ(seam.indices, (std::vector<uint32_t>{0, 1, 2, 3, 2, 4}));
+}
+
 TEST_F(ObjMeshTest, IndicesOutOfRangeNameTheFaceLineAndIndex) {
   struct Case {
     std::string faces;

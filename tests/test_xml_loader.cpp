@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include "core/illuminant.h"
 #include "scene/scene_loader.h"
+#include "temp_dir_test.h"
 
 using namespace columba;
 
@@ -303,6 +304,85 @@ TEST(XmlLoader, GetPathResolvesAgainstBaseDirAndReportsMissingFiles) {
                  {"test.xml:4", "'file'", "data/missing.spd"});
 }
 
+namespace {
+
+// A main scene file that includes parts/part.xml, whose probe names the file `x.txt`.
+class FileLookup : public columba::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    for (const char* sub : {"parts/assets", "extra", "later"}) std::filesystem::create_directories(dir_ / sub);
+    write("main.xml",
+          "<scene version=\"3.0.0\">\n"
+          "  <path value=\"extra\"/>\n"
+          "  <path value=\"later\"/>\n"
+          "  <include filename=\"parts/part.xml\"/>\n"
+          "</scene>\n");
+    write("parts/part.xml",
+          "<scene version=\"3.0.0\">\n"
+          "  <path value=\"assets\"/>\n"
+          "  <bsdf type=\"probe\"><string name=\"file\" value=\"x.txt\"/></bsdf>\n"
+          "</scene>\n");
+  }
+  // The file the probe's `x.txt` leads to, relative to the test's directory.
+  std::string found() {
+    ParsedScene scene = loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+    auto probe = std::dynamic_pointer_cast<TestObject>(scene.objects.at(0));
+    return std::filesystem::relative(probe->strings.at("file"), dir_).string();
+  }
+  std::string loadError() {
+    try {
+      loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+}  // namespace
+
+// The including file's directory, the main file's, the <path>s (the latest declared first, each
+// relative to the file declaring it), then the working directory.
+TEST_F(FileLookup, RelativeNamesAreLookedForInMitsubasOrder) {
+  for (const char* where : {"parts/x.txt", "x.txt", "parts/assets/x.txt", "later/x.txt", "extra/x.txt"})
+    write(where, "");
+  EXPECT_EQ(found(), "parts/x.txt");
+  std::filesystem::remove(dir_ / "parts/x.txt");
+  EXPECT_EQ(found(), "x.txt");
+  std::filesystem::remove(dir_ / "x.txt");
+  EXPECT_EQ(found(), "parts/assets/x.txt");
+  std::filesystem::remove(dir_ / "parts/assets/x.txt");
+  EXPECT_EQ(found(), "later/x.txt");
+  std::filesystem::remove(dir_ / "later/x.txt");
+  EXPECT_EQ(found(), "extra/x.txt");
+  std::filesystem::remove(dir_ / "extra/x.txt");
+  const std::string d = dir_.string();
+  const std::string looked = "(looked for '" + d + "/parts/x.txt', '" + d + "/x.txt', '" + d +
+                             "/parts/assets/x.txt', '" + d + "/later/x.txt', '" + d + "/extra/x.txt' and 'x.txt')";
+  expectContains(loadError(), {"part.xml:3", "'file'", looked.c_str()});
+}
+
+TEST_F(FileLookup, IncludesAreFoundThroughPaths) {
+  write("extra/common.xml", "<scene version=\"3.0.0\">\n  <bsdf type=\"diffuse\" id=\"common\"/>\n</scene>\n");
+  write("main.xml",
+        "<scene version=\"3.0.0\">\n  <path value=\"extra\"/>\n  <include filename=\"common.xml\"/>\n"
+        "  <shape type=\"mesh\"><ref id=\"common\"/></shape>\n</scene>\n");
+  ParsedScene scene = loadSceneFile((dir_ / "main.xml").string(), {}, testRegistry());
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(std::dynamic_pointer_cast<TestObject>(scene.objects[1])->children.at(0), scene.objects[0]);
+}
+
+TEST_F(FileLookup, BadPathsNameFileLineAndValue) {
+  write("main.xml", "<scene version=\"3.0.0\">\n\n  <path value=\"nowhere\"/>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:3", "<path> 'nowhere'", "not found"});
+  write("main.xml",
+        "<scene version=\"3.0.0\">\n  <bsdf type=\"probe\">\n    <path value=\"extra\"/>\n  </bsdf>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:3", "<path>", "only allowed directly inside <scene>"});
+  write("main.xml", "<scene version=\"3.0.0\">\n  <path valeu=\"extra\"/>\n</scene>\n");
+  expectContains(loadError(), {"main.xml:2", "'valeu'"});
+}
+
 TEST(XmlLoader, ReferencesShareTheObject) {
   auto scene = load(R"(<scene version="3.0.0">
 <bsdf type="diffuse" id="white"/>
@@ -326,6 +406,71 @@ TEST(XmlLoader, ReferencesShareTheObject) {
 <bsdf type="diffuse" id="a"/>
 </scene>)"),
                  {"test.xml:3", "duplicate id 'a'", "test.xml:2"});
+}
+
+TEST(XmlLoader, ReferencesMayComeBeforeTheirIds) {
+  // As in Mitsuba: the id is declared further on, at the top level or nested in another plug-in;
+  // the plug-in is built when first needed, once.
+  auto scene = load(R"(<scene version="3.0.0">
+<shape type="mesh"><ref id="later"/><ref id="inner"/></shape>
+<bsdf type="diffuse" id="later"/>
+<shape type="mesh"><bsdf type="twosided" id="inner"/></shape>
+</scene>)");
+  EXPECT_EQ(creationLog,
+            (std::vector<std::string>{"bsdf:diffuse#later", "bsdf:twosided#inner", "shape:mesh", "shape:mesh"}));
+  ASSERT_EQ(scene.objects.size(), 3u);
+  auto first = std::dynamic_pointer_cast<TestObject>(scene.objects[0]);
+  auto second = std::dynamic_pointer_cast<TestObject>(scene.objects[2]);
+  ASSERT_EQ(first->children.size(), 2u);
+  EXPECT_EQ(first->children[0], scene.objects[1]);
+  ASSERT_EQ(second->children.size(), 1u);
+  EXPECT_EQ(first->children[1], second->children[0]);
+}
+
+TEST(XmlLoader, ReferenceCyclesAreErrors) {
+  expectContains(errorOf(R"(<scene version="3.0.0">
+<bsdf type="twosided" id="a"><ref id="b"/></bsdf>
+<bsdf type="twosided" id="b">
+  <ref id="a"/>
+</bsdf>
+</scene>)"),
+                 {"test.xml:4", "<ref> to 'a' closes a cycle", "test.xml:2"});
+  expectContains(errorOf(R"(<scene version="3.0.0">
+<bsdf type="twosided" id="self">
+  <bsdf type="twosided"><ref id="self"/></bsdf>
+</bsdf>
+</scene>)"),
+                 {"test.xml:3", "<ref> to 'self' closes a cycle"});
+}
+
+TEST(XmlLoader, TheFirstDefaultOfANameHolds) {
+  const std::string xml = R"(<scene version="3.0.0">
+<default name="spp" value="4"/>
+<default name="spp" value="8"/>
+<integrator type="path"><integer name="spp" value="$spp"/></integrator>
+</scene>)";
+  EXPECT_EQ(only(load(xml))->ints.at("spp"), 4);
+  EXPECT_EQ(only(load(xml, {{"spp", "16"}}))->ints.at("spp"), 16);
+}
+
+TEST(XmlLoader, TopLevelFilmsSamplersAndFiltersAreThereToBeReferenced) {
+  ::testing::internal::CaptureStderr();
+  auto scene = load(R"(<scene version="3.0.0">
+<sampler type="ldsampler" id="sampler"><integer name="sample_count" value="4"/></sampler>
+<rfilter type="gaussian"/>
+<film type="hdrfilm" id="film"><ref id="filter"/></film>
+<rfilter type="gaussian" id="filter"/>
+<sensor type="perspective"><ref id="film"/><ref id="sampler"/></sensor>
+</scene>)");
+  std::string warnings = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(scene.objects.size(), 1u);
+  auto sensor = std::dynamic_pointer_cast<TestObject>(scene.objects[0]);
+  EXPECT_EQ(sensor->tag, "sensor");
+  ASSERT_EQ(sensor->children.size(), 2u);
+  EXPECT_EQ(sensor->children[0]->tag, "film");
+  EXPECT_EQ(sensor->children[1]->tag, "sampler");
+  // The unnamed filter can never be used.
+  expectContains(warnings, {"test.xml:3", "<rfilter> without an id is never used"});
 }
 
 TEST(XmlLoader, NestedPluginsComeFirstAndInDocumentOrder) {

@@ -21,6 +21,7 @@
 #include "film/box_filter.h"
 #include "film/film.h"
 #include "film/gaussian_filter.h"
+#include "film/tent_filter.h"
 #include "integrators/direct_integrator.h"
 #include "integrators/path_integrator.h"
 #include "samplers/independent_sampler.h"
@@ -51,6 +52,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("film", "hdrfilm", makeHDRFilm);
     r.add("rfilter", "box", makeBoxFilter);
     r.add("rfilter", "gaussian", makeGaussianFilter);
+    r.add("rfilter", "tent", makeTentFilter);
     r.add("sampler", "independent", makeIndependentSampler);
     r.add("sampler", "stratified", makeStratifiedSampler);
     r.add("sampler", "ldsampler", makeLowDiscrepancySampler);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/file_lookup.h"
+
 namespace columba {
 
 namespace {
@@ -122,17 +124,12 @@ Transform Properties::getTransform(const std::string& name, const Transform& def
 
 std::string Properties::getPath(const std::string& name) const {
   const Value& v = require(name, {Kind::String}, "a <string> file name");
-  namespace fs = std::filesystem;
-  // Relative paths are looked up next to the scene file, then in the working directory (as
-  // Mitsuba's file resolver does), so `-D mesh=out/x.ply` works from the shell.
-  fs::path given(v.text), path = given;
-  if (given.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / given;
+  const std::string path = requireFile(v.text, searchDirs, v.location, "parameter '" + name + "': file");
+  // Devices and pipes could be read forever, and a directory is no file.
   std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return path.string();
-  if (given.is_relative() && fs::is_regular_file(given, ec)) return given.string();
-  throw InputError(v.location, "parameter '" + name + "': file '" + v.text + "' not found (looked for '" +
-                                   path.string() + "'" + (given.is_relative() ? " and '" + given.string() + "'" : "") +
-                                   ")");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(v.location, "parameter '" + name + "': '" + path + "' is not a regular file");
+  return path;
 }
 
 SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {

@@ -23,8 +23,9 @@ class Properties {
   // Element tag ("bsdf"), plug-in type ("diffuse"), optional id, and where it was declared.
   std::string tag, type, id;
   SourceLocation location;
-  // Directory of the declaring scene file; relative paths resolve against it.
-  std::string baseDir;
+  // Where a relative file name is looked for, in order (core/file_lookup.h): the declaring scene
+  // file's directory, the main scene file's, the <path> directories; then the working directory.
+  std::vector<std::string> searchDirs;
 
   bool has(const std::string& name) const;
   // True when `name` was given as a <string> (e.g. a named IOR rather than a number).
@@ -40,8 +41,8 @@ class Properties {
   std::string getString(const std::string& name, const std::string& def) const;
   Vec3 getVector(const std::string& name, const Vec3& def) const;  // <point> or <vector>
   Transform getTransform(const std::string& name, const Transform& def = Transform()) const;
-  // A file path resolved against the directory of the scene file that declared it, then the
-  // working directory; throws InputError (file, line, value) if the file does not exist.
+  // A file name looked up in `searchDirs`, then the working directory; throws InputError (file,
+  // line, value and the places looked) if no regular file of that name is found.
   std::string getPath(const std::string& name) const;
   // <float>, <spectrum> or <rgb>. Emission must not be negative anywhere (InputError).
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;

@@ -67,8 +67,7 @@ std::shared_ptr<Object> makeDirectIntegrator(const Properties& props) {
   int emitterSamples = props.getInt("emitter_samples", shading), bsdfSamples = props.getInt("bsdf_samples", shading);
   if (emitterSamples < 0) throw props.error("emitter_samples", "emitter_samples must not be negative");
   if (bsdfSamples < 0) throw props.error("bsdf_samples", "bsdf_samples must not be negative");
-  // Accepted for compatibility with Mitsuba 2 scenes; Columba renders all samples in one pass.
-  props.getInt("samples_per_pass", -1);
+  readMitsubaPassParameters(props);
   return std::make_shared<DirectIntegrator>(emitterSamples, bsdfSamples, props.getBool("hide_emitters", false));
 }
 

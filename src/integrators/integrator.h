@@ -1,5 +1,6 @@
 #pragma once
 // The integrator interface: radiance arriving along a camera ray at the path's wavelengths.
+#include "core/properties.h"
 #include "core/ray.h"
 #include "core/spectrum.h"
 #include "samplers/sampler.h"
@@ -14,5 +15,11 @@ class Integrator : public Object {
   virtual Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                             uint64_t& rays) const = 0;
 };
+
+// Reads the pass parameters Mitsuba's sampling integrators take. `samples_per_pass` only splits
+// Mitsuba's render into passes of the same samples, so the image is the same and Columba renders
+// them in one. A positive `timeout` stops Mitsuba's render early; Columba renders every sample and
+// warns, naming the line.
+void readMitsubaPassParameters(const Properties& props);
 
 }  // namespace columba

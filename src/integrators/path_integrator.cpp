@@ -99,6 +99,7 @@ std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
   if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
   if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
+  readMitsubaPassParameters(props);
   std::string strategy = props.getString("strategy", "mis");
   static const std::map<std::string, PathIntegrator::Strategy> kStrategies = {
       {"mis", PathIntegrator::Strategy::MIS},

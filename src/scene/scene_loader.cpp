@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include "core/file_lookup.h"
 #include "scene/xml_source.h"
 #include "scene/xml_transform.h"
 #include "scene/xml_values.h"
@@ -24,31 +25,50 @@ struct NamedObject {
   SourceLocation location;
 };
 
-// Walks a document depth first, creating each plug-in once its nested plug-ins exist.
-// Objects with an `id` can be referenced by any <ref> that comes after them.
+// Reads a scene in two passes, as Mitsuba does. Reading takes every file's <default>s, <path>s
+// and <include>s in document order and notes its plug-ins and their ids; building then creates
+// the top-level plug-ins in document order, each once its nested plug-ins exist. A <ref> may so
+// name an id declared anywhere in the scene, before or after it: the plug-in it names is built
+// when first needed, once, and shared.
 class SceneBuilder {
  public:
-  SceneBuilder(const Defines& defines, const PluginRegistry& registry) : vars_(defines), registry_(registry) {}
+  // `mainDir` is the main scene file's directory, where relative file names are looked for after
+  // the declaring file's.
+  SceneBuilder(const Defines& defines, const PluginRegistry& registry, std::string mainDir)
+      : vars_(defines), registry_(registry), mainDir_(std::move(mainDir)) {}
 
-  void readScene(const XmlDocument& doc, ParsedScene& scene);
+  // `doc` must outlive build().
+  void readScene(const XmlDocument& doc);
   // Reads a scene file, which must not be one of the files whose <include>s led to it.
-  void readFile(const std::string& path, ParsedScene& scene);
+  void readFile(const std::string& path);
+  void build(ParsedScene& scene);
   std::vector<std::string> unusedDefines() const { return vars_.unusedDefines(); }
 
  private:
-  void include(const XmlElement& e, ParsedScene& scene);
+  void include(const XmlElement& e);
+  // Notes the plug-in elements with an id in `e` and below; `depth` counts the plug-ins enclosing `e`.
+  void declareIds(const XmlElement& e, int depth);
+  void addSearchPath(const XmlElement& e);
+  // Where a file name in `doc` is looked for: its directory, the main file's, the <path>s.
+  std::vector<std::string> searchDirs(const XmlDocument& doc) const;
   // `depth` counts the plug-ins enclosing `e`.
   NamedObject instantiate(const XmlElement& e, int depth);
-  Properties::Child reference(const XmlElement& e) const;
+  Properties::Child reference(const XmlElement& e, int depth);
   void readParameter(const XmlElement& e, Properties& props) const;
 
   SceneVariables vars_;
   const PluginRegistry& registry_;
-  std::map<std::string, NamedObject> ids_;
+  std::vector<std::unique_ptr<XmlDocument>> includedDocuments_;  // the elements below point into them
+  std::vector<XmlElement> topLevel_;                             // in document order, across files
+  std::map<std::string, XmlElement> declared_;                   // every plug-in element with an id
+  std::map<std::string, NamedObject> built_;                     // by id
+  std::set<std::string> building_;         // ids whose plug-ins are being built: a <ref> to one is a cycle
   std::vector<std::string> includeStack_;  // the files being read, outermost first
+  std::string mainDir_;
+  std::vector<std::string> searchPaths_;  // the <path> directories, the latest first (as Mitsuba)
 };
 
-void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
+void SceneBuilder::readScene(const XmlDocument& doc) {
   XmlElement root(doc.root(), doc, vars_);
   if (root.tag() != "scene")
     throw InputError(root.location(), "the root element must be <scene>, not <" + root.tag() + ">");
@@ -60,13 +80,16 @@ void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
   for (const XmlElement& e : root.children()) {
     const std::string tag = e.tag();
     if (kPluginTags.count(tag)) {
-      scene.objects.push_back(instantiate(e, 0).object);
+      declareIds(e, 0);
+      topLevel_.push_back(e);
     } else if (tag == "default") {
       e.allowAttributes({"name", "value"});
       e.requireNoChildren();
       vars_.addDefault(e.attribute("name"), e.attribute("value"), e.location());
     } else if (tag == "include") {
-      include(e, scene);
+      include(e);
+    } else if (tag == "path") {
+      addSearchPath(e);
     } else {
       throw InputError(e.location(), "<" + tag + "> cannot appear directly inside <scene>");
     }
@@ -74,14 +97,14 @@ void SceneBuilder::readScene(const XmlDocument& doc, ParsedScene& scene) {
 }
 
 // The included file's <scene> contents are read as if they stood in place of the <include>.
-void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
+void SceneBuilder::include(const XmlElement& e) {
   e.allowAttributes({"filename"});
   e.requireNoChildren();
   namespace fs = std::filesystem;
-  fs::path path(e.attribute("filename"));
-  if (path.is_relative()) path = fs::path(e.document().baseDir()) / path;
+  const fs::path path = requireFile(e.attribute("filename"), searchDirs(e.document()), e.location(), "included file");
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(e.location(), "included file '" + path.string() + "' not found");
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(e.location(), "included file '" + path.string() + "' is not a regular file");
   std::string key = fs::weakly_canonical(path).string();
   auto first = std::find(includeStack_.begin(), includeStack_.end(), key);
   if (first != includeStack_.end()) {
@@ -89,17 +112,70 @@ void SceneBuilder::include(const XmlElement& e, ParsedScene& scene) {
     for (auto file = first; file != includeStack_.end(); ++file) cycle += *file + " -> ";
     throw InputError(e.location(), "including '" + path.string() + "' closes an include cycle: " + cycle + key);
   }
-  readFile(path.string(), scene);
+  readFile(path.string());
 }
 
-void SceneBuilder::readFile(const std::string& path, ParsedScene& scene) {
-  std::unique_ptr<XmlDocument> doc = XmlDocument::fromFile(path);
+// A <path>: a directory where later relative file names are also looked for; a relative one is
+// relative to the declaring file's directory.
+void SceneBuilder::addSearchPath(const XmlElement& e) {
+  e.allowAttributes({"value"});
+  e.requireNoChildren();
+  namespace fs = std::filesystem;
+  const std::string value = e.attribute("value");
+  fs::path dir(value);
+  if (dir.is_relative()) dir = fs::path(e.document().baseDir()) / dir;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError(e.location(), "<path> '" + value + "': directory '" + dir.string() + "' not found");
+  searchPaths_.insert(searchPaths_.begin(), dir.string());
+}
+
+std::vector<std::string> SceneBuilder::searchDirs(const XmlDocument& doc) const {
+  std::vector<std::string> dirs = {doc.baseDir(), mainDir_};
+  dirs.insert(dirs.end(), searchPaths_.begin(), searchPaths_.end());
+  return dirs;
+}
+
+void SceneBuilder::readFile(const std::string& path) {
+  includedDocuments_.push_back(XmlDocument::fromFile(path));
   includeStack_.push_back(std::filesystem::weakly_canonical(path).string());
-  readScene(*doc, scene);
+  readScene(*includedDocuments_.back());
   includeStack_.pop_back();
 }
 
+void SceneBuilder::declareIds(const XmlElement& e, int depth) {
+  if (depth >= kMaxPluginNesting)
+    throw InputError(e.location(),
+                     "<" + e.tag() + "> is nested more than " + std::to_string(kMaxPluginNesting) + " plug-ins deep");
+  if (e.has("id")) {
+    const std::string id = e.attribute("id");
+    if (id.empty()) throw InputError(e.location(), "empty id");
+    auto [it, added] = declared_.emplace(id, e);
+    if (!added)
+      throw InputError(e.location(),
+                       "duplicate id '" + id + "' (first declared at " + it->second.location().str() + ")");
+  }
+  for (const XmlElement& c : e.children())
+    if (kPluginTags.count(c.tag())) declareIds(c, depth + 1);
+}
+
+void SceneBuilder::build(ParsedScene& scene) {
+  for (const XmlElement& e : topLevel_) {
+    NamedObject built = instantiate(e, 0);
+    // As in Mitsuba, a top-level film, sampler or filter is there to be referenced by a sensor.
+    if (built.tag == "film" || built.tag == "sampler" || built.tag == "rfilter") {
+      if (!e.has("id"))
+        warn(e.location(), "<" + built.tag + "> without an id is never used (a sensor's <ref> needs one)");
+      continue;
+    }
+    scene.objects.push_back(built.object);
+  }
+}
+
 NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
+  // Built already: it was referenced before its place in the document, or is referenced again.
+  if (e.has("id"))
+    if (auto it = built_.find(e.attribute("id")); it != built_.end()) return it->second;
   if (depth >= kMaxPluginNesting)
     throw InputError(e.location(),
                      "<" + e.tag() + "> is nested more than " + std::to_string(kMaxPluginNesting) + " plug-ins deep");
@@ -109,17 +185,11 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
   props.type = e.attribute("type");
   props.id = e.attribute("id", "");
   props.location = e.location();
-  props.baseDir = e.document().baseDir();
+  props.searchDirs = searchDirs(e.document());
 
   const PluginFactory* factory = registry_.find(props.tag, props.type);
   if (!factory) throw InputError(e.location(), "unknown <" + props.tag + "> plug-in type '" + props.type + "'");
-  if (e.has("id")) {
-    if (props.id.empty()) throw InputError(e.location(), "empty id");
-    auto it = ids_.find(props.id);
-    if (it != ids_.end())
-      throw InputError(e.location(),
-                       "duplicate id '" + props.id + "' (first declared at " + it->second.location.str() + ")");
-  }
+  if (!props.id.empty()) building_.insert(props.id);
 
   for (const XmlElement& c : e.children()) {
     if (kPluginTags.count(c.tag())) {
@@ -132,7 +202,7 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
       child.type = nested.type;
       props.addChild(std::move(child));
     } else if (c.tag() == "ref") {
-      props.addChild(reference(c));
+      props.addChild(reference(c, depth));
     } else {
       readParameter(c, props);
     }
@@ -148,23 +218,30 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
   }
   if (!result.object) throw InputError(props.location, "<" + props.tag + "> '" + props.type + "' created nothing");
   props.checkAllUsed();
-  if (!props.id.empty()) ids_.emplace(props.id, result);
+  if (!props.id.empty()) {
+    building_.erase(props.id);
+    built_.emplace(props.id, result);
+  }
   return result;
 }
 
-Properties::Child SceneBuilder::reference(const XmlElement& e) const {
+// `depth` counts the plug-ins enclosing the <ref>; one built here is nested one deeper.
+Properties::Child SceneBuilder::reference(const XmlElement& e, int depth) {
   e.allowAttributes({"id", "name"});
   e.requireNoChildren();
-  std::string id = e.attribute("id");
-  auto it = ids_.find(id);
-  if (it == ids_.end())
-    throw InputError(e.location(), "<ref> to unknown id '" + id + "' (an id must be declared before it is referenced)");
+  const std::string id = e.attribute("id");
+  auto declaration = declared_.find(id);
+  if (declaration == declared_.end()) throw InputError(e.location(), "<ref> to unknown id '" + id + "'");
+  if (building_.count(id))
+    throw InputError(e.location(), "<ref> to '" + id + "' closes a cycle: it is needed to build '" + id + "' itself (" +
+                                       declaration->second.location().str() + ")");
+  const NamedObject target = instantiate(declaration->second, depth + 1);
   Properties::Child child;
   child.name = e.attribute("name", "");
-  child.object = it->second.object;
+  child.object = target.object;
   child.location = e.location();
-  child.tag = it->second.tag;
-  child.type = it->second.type;
+  child.tag = target.tag;
+  child.type = target.type;
   return child;
 }
 
@@ -190,7 +267,7 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
     e.allowAttributes({"name", "value", "x", "y", "z"});
   } else if (tag == "spectrum") {
     e.allowAttributes({"name", "value", "filename"});
-  } else if (tag == "default" || tag == "include") {
+  } else if (tag == "default" || tag == "include" || tag == "path") {
     throw InputError(loc, "<" + tag + "> is only allowed directly inside <scene>");
   } else {
     throw InputError(loc, "unknown element <" + tag + "> in <" + props.tag + "> '" + props.type + "'");
@@ -234,9 +311,10 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
       v.spectrum = std::move(given.distribution);
       v.lowest = given.lowest;
     } else {
-      std::filesystem::path file(e.attribute("filename"));
-      if (file.is_relative()) file = std::filesystem::path(props.baseDir) / file;
-      GivenSpectrum given = readSpectrumFile(file.string(), what, loc);
+      // A name found nowhere is read where the declaring file is, to say that it does not exist.
+      const std::string name = e.attribute("filename");
+      const std::string file = findFile(name, props.searchDirs).value_or(fileCandidates(name, props.searchDirs)[0]);
+      GivenSpectrum given = readSpectrumFile(file, what, loc);
       v.spectrum = std::move(given.distribution);
       v.lowest = given.lowest;
     }
@@ -248,8 +326,9 @@ void SceneBuilder::readParameter(const XmlElement& e, Properties& props) const {
 
 ParsedScene loadSceneFile(const std::string& path, const Defines& defines, const PluginRegistry& registry) {
   ParsedScene scene;
-  SceneBuilder builder(defines, registry);
-  builder.readFile(path, scene);
+  SceneBuilder builder(defines, registry, std::filesystem::path(path).parent_path().string());
+  builder.readFile(path);
+  builder.build(scene);
   scene.unusedDefines = builder.unusedDefines();
   return scene;
 }
@@ -258,8 +337,9 @@ ParsedScene loadSceneString(const std::string& xml, const std::string& sourceNam
                             const Defines& defines, const PluginRegistry& registry) {
   XmlDocument doc(xml, sourceName, baseDir);
   ParsedScene scene;
-  SceneBuilder builder(defines, registry);
-  builder.readScene(doc, scene);
+  SceneBuilder builder(defines, registry, baseDir);
+  builder.readScene(doc);
+  builder.build(scene);
   scene.unusedDefines = builder.unusedDefines();
   return scene;
 }

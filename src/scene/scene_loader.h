@@ -19,7 +19,7 @@ using Defines = std::map<std::string, std::string>;
 // `defines` are the -D name=value pairs; they override <default>s. Throws InputError with
 // file:line for every malformed input.
 ParsedScene loadSceneFile(const std::string& path, const Defines& defines, const PluginRegistry& registry);
-// `sourceName` names the text in messages; relative paths resolve against `baseDir`.
+// `sourceName` names the text in messages; `baseDir` stands for the scene file's directory.
 ParsedScene loadSceneString(const std::string& xml, const std::string& sourceName, const std::string& baseDir,
                             const Defines& defines, const PluginRegistry& registry);
 

@@ -31,11 +31,9 @@ SceneVariables::SceneVariables(std::map<std::string, std::string> defines) : def
 void SceneVariables::addDefault(const std::string& name, const std::string& value, const SourceLocation& loc) {
   if (!isVariableName(name))
     throw InputError(loc, "<default> name '" + excerpt(name) + "' is not a variable name (letters, digits and '_')");
-  auto it = defaultLocations_.find(name);
-  if (it != defaultLocations_.end())
-    throw InputError(loc, "duplicate <default> '" + name + "' (first declared at " + it->second.str() + ")");
+  // As in Mitsuba, the first <default> of a name holds: a scene can give its own before it
+  // includes a file whose defaults would otherwise apply.
   defaults_.emplace(name, value);
-  defaultLocations_.emplace(name, loc);
 }
 
 const std::pair<const std::string, std::string>* SceneVariables::longestNameAt(const std::string& text, size_t pos,

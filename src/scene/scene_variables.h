@@ -15,8 +15,9 @@ class SceneVariables {
   // and '_').
   explicit SceneVariables(std::map<std::string, std::string> defines);
 
-  // A <default>: takes effect from here on, unless a define of that name exists. A second
-  // <default> of the same name, or a name that is not a variable name, is an error.
+  // A <default>: the value of $name unless a define of that name exists. A second <default> of
+  // the same name is ignored (the first holds, as in Mitsuba); a name that is not a variable name
+  // is an error.
   void addDefault(const std::string& name, const std::string& value, const SourceLocation& loc);
 
   // Replaces each "$name" in `text` with its value. At every '$' the longest known name that
@@ -33,7 +34,6 @@ class SceneVariables {
   const std::pair<const std::string, std::string>* longestNameAt(const std::string& text, size_t pos, size_t run) const;
   std::map<std::string, std::string> defines_;
   std::map<std::string, std::string> defaults_;
-  std::map<std::string, SourceLocation> defaultLocations_;
   mutable std::set<std::string> usedDefines_;
 };
 

@@ -2,9 +2,11 @@
 
 #include <tiny_obj_loader.h>
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace columba {
@@ -69,19 +71,19 @@ class FaceChecker {
   const tinyobj::attrib_t& attrib_;
 };
 
-// The triangles of a polygon whose corners are mesh vertices first, first + 1, ...
-void triangulate(const MeshData& mesh, uint32_t first, uint32_t corners, std::vector<uint32_t>& indices) {
-  if (corners == 4) {
+// The triangles of a polygon whose corners are the mesh vertices `corners`, in order.
+void triangulate(const MeshData& mesh, const std::vector<uint32_t>& corners, std::vector<uint32_t>& indices) {
+  const uint32_t* c = corners.data();
+  if (corners.size() == 4) {
     // tinyobjloader's split (the shorter diagonal), so that quads triangulate as they always have.
-    const Vec3* p = &mesh.positions[first];
-    Vec3 d02 = p[2] - p[0], d13 = p[3] - p[1];
+    Vec3 d02 = mesh.positions[c[2]] - mesh.positions[c[0]], d13 = mesh.positions[c[3]] - mesh.positions[c[1]];
     if (dot(d02, d02) < dot(d13, d13))
-      indices.insert(indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+      indices.insert(indices.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
     else
-      indices.insert(indices.end(), {first, first + 1, first + 3, first + 1, first + 2, first + 3});
+      indices.insert(indices.end(), {c[0], c[1], c[3], c[1], c[2], c[3]});
     return;
   }
-  for (uint32_t k = 2; k < corners; ++k) indices.insert(indices.end(), {first, first + k - 1, first + k});
+  for (size_t k = 2; k < corners.size(); ++k) indices.insert(indices.end(), {c[0], c[k - 1], c[k]});
 }
 
 }  // namespace
@@ -115,14 +117,22 @@ MeshData readObjMesh(const std::string& path) {
     }
   }
 
-  // OBJ indexes positions, normals and uvs separately: one mesh vertex per face corner.
+  // OBJ indexes positions, normals and uvs separately. As in Mitsuba, there is one mesh vertex per
+  // distinct combination the faces use, so faces meeting at a corner share its computed normal.
   MeshData mesh;
+  std::map<std::array<int, 3>, uint32_t> vertexOfCorner;
+  std::vector<uint32_t> corners;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     size_t corner = 0;
-    for (unsigned char corners : shape.mesh.num_face_vertices) {
-      const uint32_t first = uint32_t(mesh.positions.size());
-      for (size_t k = 0; k < corners; ++k, ++corner) {
+    for (unsigned char count : shape.mesh.num_face_vertices) {
+      corners.clear();
+      for (size_t k = 0; k < count; ++k, ++corner) {
         const tinyobj::index_t& idx = shape.mesh.indices[corner];
+        const std::array<int, 3> key = {idx.vertex_index, useUVs ? idx.texcoord_index : -1,
+                                        useNormals ? idx.normal_index : -1};
+        auto [it, added] = vertexOfCorner.emplace(key, uint32_t(mesh.positions.size()));
+        corners.push_back(it->second);
+        if (!added) continue;
         const float* p = &attrib.vertices[3 * size_t(idx.vertex_index)];
         mesh.positions.push_back(Vec3(p[0], p[1], p[2]));
         if (useNormals) {
@@ -134,7 +144,7 @@ MeshData readObjMesh(const std::string& path) {
           mesh.uvs.push_back(Vec2(uv[0], uv[1]));
         }
       }
-      triangulate(mesh, first, corners, mesh.indices);
+      triangulate(mesh, corners, mesh.indices);
     }
   }
   if (mesh.indices.empty()) throw InputError({path, 0}, "the OBJ file has no faces");

@@ -4,8 +4,10 @@
 // `v`, `vn`, `vt` and `f` statements are used; every number must be finite and within float
 // range, every face corner's position, normal and texture index must exist. Triangles are kept,
 // quads are split along their shorter diagonal and larger polygons are triangulated as fans
-// around their first corner. Every problem is an InputError naming the file and line, and for
-// faces the face's number (counting from 1 in file order).
+// around their first corner. Corners with the same position, texture and normal indices are one
+// mesh vertex (as in Mitsuba), so faces share the smooth normals computed where the file has
+// none. Every problem is an InputError naming the file and line, and for faces the face's
+// number (counting from 1 in file order).
 #include <memory>
 #include <string>
 #include "core/properties.h"

@@ -5,6 +5,7 @@
 #include "bsdfs/diffuse.h"
 #include "core/sampling.h"
 #include "emitters/emitter.h"
+#include "shapes/vertex_normals.h"
 
 namespace columba {
 
@@ -20,11 +21,17 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
     p = toWorld.point(p);
     if (!isFinite(p)) throw InputError(where, "the mesh has a non-finite vertex position");
   }
-  if (faceNormals) mesh_.normals.clear();
-  for (Vec3& n : mesh_.normals) {
-    n = toWorld.normal(n);
-    float len = length(n);
-    n = len > 0 ? n / len : Vec3(0, 0, 1);
+  if (faceNormals) {
+    mesh_.normals.clear();
+  } else if (mesh_.normals.empty()) {
+    // As Mitsuba: a mesh without normals is shaded smooth, its normals made from the world-space faces.
+    mesh_.normals = angleWeightedVertexNormals(mesh_.positions, mesh_.indices);
+  } else {
+    for (Vec3& n : mesh_.normals) {
+      n = toWorld.normal(n);
+      float len = length(n);
+      n = len > 0 ? n / len : Vec3(0, 0, 1);
+    }
   }
   std::vector<float> areas(primitiveCount());
   for (size_t t = 0; t < areas.size(); ++t) {
@@ -81,8 +88,12 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
   si.p = mesh_.positions[idx[0]] * b0 + mesh_.positions[idx[1]] * b1 + mesh_.positions[idx[2]] * b2;
   si.ng = face.n;
   si.shading = face;
-  if (!mesh_.normals.empty()) {
-    Vec3 ns = normalize(mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2);
+  const Vec3 interpolated = mesh_.normals.empty()
+                                ? Vec3(0, 0, 0)
+                                : mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2;
+  // A vanishing interpolated normal (computed normals that cancel) leaves the face frame.
+  if (const float len = length(interpolated); len > 0.0f) {
+    Vec3 ns = interpolated / len;
     if (flip_) ns = -ns;
     if (dot(ns, si.ng) < 0.0f) ns = -ns;
     // dp/du lies in the face's plane, so the face frame's s has its direction.

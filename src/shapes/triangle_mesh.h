@@ -17,8 +17,9 @@ struct MeshData {
 
 class TriangleMesh : public Shape {
  public:
-  // Transforms `mesh` by `toWorld`; `faceNormals` ignores vertex normals; `flipNormals` turns
-  // the front side around. Throws InputError (at `where`) for degenerate or invalid input.
+  // Transforms `mesh` by `toWorld`; `faceNormals` ignores vertex normals, and without it a mesh
+  // without normals gets smooth ones (angleWeightedVertexNormals); `flipNormals` turns the front
+  // side around. Throws InputError (at `where`) for degenerate or invalid input.
   TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals,
                const SourceLocation& where);
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
