@@ -100,6 +100,20 @@ TEST_F(CliTest, BadCommandLineValuesAreRejected) {
   EXPECT_NE(run("render " + (dir_ / "absent.xml").string()).status, 0);
 }
 
+TEST_F(CliTest, AdaptiveSamplingReportsItsPlanAndRefusesPieces) {
+  std::string scene = write("tiny.xml", kTinyScene), out = (dir_ / "img.exr").string();
+  CommandResult r = run("render " + scene + " -o " + out + " --spp 8 --adaptive");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Adaptive sampling: 2 pilot samples per pixel"), std::string::npos) << r.output;
+  EXPECT_NEAR(columba::readEXR(out).pixel(3, 3)[1], 0.5f, 0.1f);
+  r = run("render " + scene + " -o " + out + " --spp 8 --target-error 1.5");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--target-error 1.5: give the relative RMSE to reach"), std::string::npos) << r.output;
+  r = run("render " + scene + " -o " + out + " --spp 8 --adaptive --pass 1/2");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("cannot be combined with --part or --pass"), std::string::npos) << r.output;
+}
+
 // Starts a render in the background, sends `signal` after `delay` seconds and reports the
 // exit status ("status=N") and the seconds from the signal to the exit ("answered=S").
 CommandResult renderAndSignal(const std::string& args, const char* signal, double delay) {

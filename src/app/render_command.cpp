@@ -30,9 +30,11 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output;
   std::string threads;
-  std::string frame;       // --frame I: only frame I of the sweep
-  std::string part, pass;  // --part K/N, --pass K/N
-  std::string manifest;    // --manifest FILE
+  std::string frame;         // --frame I: only frame I of the sweep
+  std::string part, pass;    // --part K/N, --pass K/N
+  std::string manifest;      // --manifest FILE
+  bool adaptive = false;     // --adaptive
+  double targetError = 0.0;  // --target-error E (0: none)
 };
 
 Defines parseDefines(const std::vector<std::string>& items) {
@@ -115,6 +117,15 @@ int runRender(const RenderOptions& options) {
     for (int f = 0; f < frameCount; ++f) selected.push_back(f);
   }
   const bool piece = part || pass;
+  const double targetError = options.targetError;
+  if (targetError != 0.0 && !(targetError > 0.0 && targetError < 1.0))
+    throw std::runtime_error(fmt::format(
+        "--target-error {}: give the relative RMSE to reach, a number between 0 and 1 (e.g. 0.02)", targetError));
+  const bool adaptive = options.adaptive || targetError > 0.0;
+  if (adaptive && piece)
+    throw std::runtime_error(
+        "--adaptive and --target-error render whole images: they cannot be combined with --part "
+        "or --pass");
   // Every output is checked before the first frame is rendered.
   std::vector<OutputPair> outputs;
   for (const std::string& file : plan.files) {
@@ -176,6 +187,8 @@ int runRender(const RenderOptions& options) {
     settings.samplesPerPixel = spp;
     settings.seed = options.scene.seed;
     settings.threads = threads;
+    settings.adaptive = adaptive;
+    settings.targetError = targetError;
     if (options.scene.spectral) settings.spectralBins = bins;
     PieceInfo info;
     info.scene = source.file;
@@ -241,6 +254,12 @@ int runRender(const RenderOptions& options) {
                stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file,
                sweeping ? " (" + label + ")" : "", stats.seconds, stats.samples / stats.seconds * 1e-6,
                stats.rays / stats.seconds * 1e-6, dropped, written);
+    if (adaptive && stats.complete)
+      fmt::print(
+          "Adaptive sampling: {} pilot samples per pixel, then {} to {} ({:.1f} on average); predicted relative "
+          "RMSE {:.4f}\n",
+          stats.pilotSamples, stats.fewestSamples, stats.mostSamples,
+          double(stats.samples) / (double(film.width()) * film.height()), stats.predictedRelativeError);
     std::fflush(stdout);
     if (keepManifest) {
       ManifestFrame& frame = manifest.frames[size_t(f)];
@@ -340,6 +359,12 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--pass", options->pass,
                   "Render only the K-th of N ranges of every pixel's sample indices to OUT.passKofN.exr, for "
                   "`columba merge`: K/N");
+  cmd->add_flag("--adaptive", options->adaptive,
+                "Adaptive sampling: --spp becomes the mean budget per pixel; after a pilot of a quarter of it (2 to "
+                "16), each pixel gets samples in proportion to how much its neighbours' samples vary");
+  cmd->add_option("--target-error", options->targetError,
+                  "Adaptive sampling that stops at the budget its plan predicts for this relative RMSE (e.g. 0.02), "
+                  "at most --spp per pixel on average");
   cmd->add_option("--manifest", options->manifest,
                   "The sweep's manifest, JSON (default: OUT.manifest.json, or manifest.json beside --frames)");
   cmd->callback([options] {

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "integrators/integrator.h"
+#include "render/sample_allocation.h"
+#include "samplers/sampler_parameters.h"
 
 namespace columba {
 
@@ -34,12 +36,94 @@ struct WavelengthBins {
     }
   }
 };
+
+// What a pixel's samples add up to: RGB, and the luminance and its square for adaptive sampling.
+struct PixelSums {
+  double rgb[3] = {0, 0, 0};
+  double luminance = 0.0, luminanceSquares = 0.0;
+  int taken = 0;  // sample indices drawn (those without a ray or with a non-finite value count too)
+};
+
+// Draws the samples of single pixels, for both kinds of render.
+struct PixelSampler {
+  const Scene& scene;
+  const Sensor& sensor;
+  const Film& film;
+  const Integrator& integrator;
+  const WavelengthBins& bins;
+  uint64_t seed;
+  float reach;  // of a camera sample from its pixel's centre
+
+  bool sees(int x, int y) const {
+    return sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
+  }
+  // Adds samples [begin, end) of pixel (x, y) to `sums` and `binSums`; false when `stop()` asked to
+  // stop first (checked before every sample).
+  template <typename Stop>
+  bool add(Sampler& sampler, int x, int y, int begin, int end, PixelSums& sums, double* binSums, uint64_t& rays,
+           uint64_t& nonFinite, const Stop& stop) const {
+    for (int s = begin; s < end; ++s) {
+      if (stop()) return false;
+      ++sums.taken;
+      sampler.startPixelSample(x, y, s, seed);
+      Wavelengths wl = Wavelengths::sampleVisible(sampler.get1D());
+      Vec2 offset = film.filter().sample(sampler.get2D());
+      std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
+      if (!ray) continue;
+      Spectrum L = integrator.radiance(scene, *ray, sampler, wl, rays);
+      if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
+        ++nonFinite;
+        continue;
+      }
+      if (bins.count > 0) bins.accumulate(L, wl, binSums);
+      Vec3 rgb = spectrumToRGB(L, wl);
+      sums.rgb[0] += rgb.x;
+      sums.rgb[1] += rgb.y;
+      sums.rgb[2] += rgb.z;
+      double luminance = 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
+      sums.luminance += luminance;
+      sums.luminanceSquares += luminance * luminance;
+    }
+    return true;
+  }
+};
+
+// The tiles of a window, rendered in parallel; `pixel(sampler, x, y, stop)` renders one pixel
+// (film coordinates) and returns false once a stop was requested.
+template <typename RenderPixel>
+void forEachTile(const PixelRect& window, const RenderSettings& settings, const Sampler& prototype, int progressBase,
+                 int progressTotal, std::atomic<bool>& cancelled, const RenderPixel& pixel) {
+  const int width = window.width(), height = window.height();
+  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+  std::atomic<int> tilesDone{0};
+  tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& range) {
+    std::unique_ptr<Sampler> sampler = prototype.clone();
+    // Checked before every sample, so that a stop request is answered within one sample at any
+    // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
+    auto stopRequested = [&] {
+      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
+      cancelled = true;
+      return true;
+    };
+    for (int tile = range.begin(); tile != range.end(); ++tile) {
+      // (x0, y0): the tile's corner in the window; (x, y): a pixel of the film.
+      const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+      for (int y = window.y0 + y0; y < window.y0 + std::min(y0 + kTileSize, height); ++y)
+        for (int x = window.x0 + x0; x < window.x0 + std::min(x0 + kTileSize, width); ++x)
+          if (!pixel(*sampler, x, y, stopRequested)) return;
+      int done = ++tilesDone;
+      if (settings.onTileDone) settings.onTileDone(progressBase + done, progressTotal);
+    }
+  });
+}
+
+int pilotSamplesFor(int spp) { return std::clamp(spp / 4, 2, 16); }
+
 }  // namespace
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
-  const Integrator& integrator = scene.integrator();
   const bool whole = settings.window.empty();
   const PixelRect window = whole ? PixelRect{0, 0, film.width(), film.height()} : settings.window;
   if (window.x0 < 0 || window.y0 < 0 || window.x1 > film.width() || window.y1 > film.height())
@@ -51,11 +135,11 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   if (sampleBegin < 0 || sampleBegin >= sampleEnd || sampleEnd > spp)
     throw std::runtime_error(fmt::format("the sample indices [{}, {}) are not a range within the {} samples per pixel",
                                          sampleBegin, sampleEnd, spp));
-  const int count = sampleEnd - sampleBegin;  // samples per pixel of this piece
-  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
-  const int tileCount = tilesX * tilesY;
+  if (settings.adaptive && (!whole || sampleBegin != 0 || sampleEnd != spp))
+    throw std::runtime_error("adaptive sampling renders whole images: it cannot be split into parts or passes");
+  if (settings.adaptive && spp < 4)
+    throw std::runtime_error(fmt::format("adaptive sampling needs 4 or more samples per pixel, not {}", spp));
 
-  const float reach = film.filter().radius();  // of a camera sample from its pixel's centre
   Image image = whole ? film.makeImage() : film.resized(width, height)->makeImage();
   WavelengthBins bins;
   if (settings.spectralBins > 0) {
@@ -64,73 +148,96 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     for (int b = 0; b < bins.count; ++b) image.spectral.centres.push_back(bins.lo + (b + 0.5f) * bins.width);
     image.spectral.values.assign(size_t(width) * size_t(height) * size_t(bins.count), 0.0f);
   }
-  std::atomic<uint64_t> rays{0}, samples{0};
-  std::atomic<int> tilesDone{0};
-  std::atomic<bool> cancelled{false};
   std::unique_ptr<tbb::global_control> threadLimit;
   if (settings.threads > 0)
     threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
-
+  const PixelSampler pixels{scene, sensor, film, scene.integrator(), bins, settings.seed, film.filter().radius()};
+  const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
+  std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
+  std::atomic<bool> cancelled{false};
+  // Each pixel's value: its sums over its samples.
+  auto store = [&](int ix, int iy, const PixelSums& sums, const double* binSums, int count) {
+    float* p = image.pixel(ix, iy);
+    for (int c = 0; c < 3; ++c) p[c] = count > 0 ? float(sums.rgb[c] / count) : 0.0f;
+    for (int b = 0; b < bins.count; ++b)
+      image.spectral.values[(size_t(iy) * width + ix) * bins.count + b] = count > 0 ? float(binSums[b] / count) : 0.0f;
+  };
   auto start = std::chrono::steady_clock::now();
-  std::atomic<uint64_t> nonFinite{0};
-  tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
-    std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
-    std::vector<double> binSums(size_t(bins.count));
-    // Checked before every sample, so that a stop request is answered within one sample at any
-    // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
-    auto stopRequested = [&] {
-      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
-      cancelled = true;
-      return true;
+
+  if (!settings.adaptive) {
+    // Every pixel gets the samples [sampleBegin, sampleEnd).
+    const int count = sampleEnd - sampleBegin;
+    forEachTile(window, settings, sensor.sampler(), 0, tileCount, cancelled,
+                [&](Sampler& sampler, int x, int y, const auto& stop) {
+                  PixelSums sums;
+                  std::vector<double> binSums(size_t(bins.count), 0.0);
+                  uint64_t pixelRays = 0, pixelNonFinite = 0;
+                  bool finished = !pixels.sees(x, y) || pixels.add(sampler, x, y, sampleBegin, sampleEnd, sums,
+                                                                   binSums.data(), pixelRays, pixelNonFinite, stop);
+                  rays += pixelRays;
+                  nonFinite += pixelNonFinite;
+                  if (!finished) return false;  // the unfinished pixel stays black
+                  samples += uint64_t(count);
+                  store(x - window.x0, y - window.y0, sums, binSums.data(), count);
+                  return true;
+                });
+  } else {
+    // A pilot for every pixel, the plan, then the rest of each pixel's samples.
+    const int pilot = pilotSamplesFor(spp);
+    const size_t pixelCount = size_t(width) * size_t(height);
+    std::vector<PixelSums> sums(pixelCount);
+    std::vector<double> binSums(pixelCount * size_t(bins.count), 0.0);
+    std::vector<PilotPixel> pilotPixels(pixelCount);
+    auto addRange = [&](Sampler& sampler, int x, int y, int begin, int end, const auto& stop) {
+      size_t i = size_t(y) * width + x;
+      uint64_t pixelRays = 0, pixelNonFinite = 0;
+      bool finished = pixels.add(sampler, x, y, begin, end, sums[i], binSums.data() + i * bins.count, pixelRays,
+                                 pixelNonFinite, stop);
+      rays += pixelRays;
+      nonFinite += pixelNonFinite;
+      return finished;
     };
-    for (int tile = range.begin(); tile != range.end(); ++tile) {
-      uint64_t tileRays = 0, tileNonFinite = 0;
-      // (x0, y0): the tile's corner in the image; (x, y): a pixel of the film.
-      const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-      for (int y = window.y0 + y0; y < window.y0 + std::min(y0 + kTileSize, height); ++y)
-        for (int x = window.x0 + x0; x < window.x0 + std::min(x0 + kTileSize, width); ++x) {
-          if (stopRequested()) return;
-          double sum[3] = {0, 0, 0};
-          std::fill(binSums.begin(), binSums.end(), 0.0);
-          const bool seen =
-              sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
-          for (int s = sampleBegin; seen && s < sampleEnd; ++s) {
-            if (stopRequested()) return;  // the unfinished pixel stays black
-            sampler->startPixelSample(x, y, s, settings.seed);
-            Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
-            Vec2 offset = film.filter().sample(sampler->get2D());
-            std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
-            if (!ray) continue;
-            Spectrum L = integrator.radiance(scene, *ray, *sampler, wl, tileRays);
-            if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
-              ++tileNonFinite;
-              continue;
-            }
-            if (bins.count > 0) bins.accumulate(L, wl, binSums.data());
-            Vec3 rgb = spectrumToRGB(L, wl);
-            sum[0] += rgb.x;
-            sum[1] += rgb.y;
-            sum[2] += rgb.z;
-          }
-          const int ix = x - window.x0, iy = y - window.y0;
-          float* p = image.pixel(ix, iy);
-          for (int c = 0; c < 3; ++c) p[c] = float(sum[c] / count);
-          for (int b = 0; b < bins.count; ++b)
-            image.spectral.values[(size_t(iy) * width + ix) * bins.count + b] = float(binSums[b] / count);
-        }
-      rays += tileRays;
-      nonFinite += tileNonFinite;
-      samples +=
-          uint64_t(count) * uint64_t(std::min(kTileSize, width - x0)) * uint64_t(std::min(kTileSize, height - y0));
-      int done = ++tilesDone;
-      if (settings.onTileDone) settings.onTileDone(done, tileCount);
+    forEachTile(window, settings, sensor.sampler(), 0, 2 * tileCount, cancelled,
+                [&](Sampler& sampler, int x, int y, const auto& stop) {
+                  size_t i = size_t(y) * width + x;
+                  pilotPixels[i].seen = pixels.sees(x, y);
+                  return !pilotPixels[i].seen || addRange(sampler, x, y, 0, pilot, stop);
+                });
+    SamplePlan plan;
+    if (!cancelled) {
+      for (size_t i = 0; i < pixelCount; ++i) {
+        pilotPixels[i].sum = sums[i].luminance;
+        pilotPixels[i].sumSquares = sums[i].luminanceSquares;
+      }
+      plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
+      forEachTile(window, settings, sensor.sampler(), tileCount, 2 * tileCount, cancelled,
+                  [&](Sampler& sampler, int x, int y, const auto& stop) {
+                    size_t i = size_t(y) * width + x;
+                    return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);
+                  });
+      stats.pilotSamples = pilot;
+      stats.predictedRelativeError = plan.predictedRelativeError;
+      bool any = false;
+      for (size_t i = 0; i < pixelCount; ++i) {
+        if (!pilotPixels[i].seen) continue;
+        stats.fewestSamples = any ? std::min(stats.fewestSamples, plan.counts[i]) : plan.counts[i];
+        stats.mostSamples = any ? std::max(stats.mostSamples, plan.counts[i]) : plan.counts[i];
+        any = true;
+      }
     }
-  });
+    // Each pixel is the mean of the samples it took (all of its plan's unless stopped early).
+    for (int iy = 0; iy < height; ++iy)
+      for (int ix = 0; ix < width; ++ix) {
+        size_t i = size_t(iy) * width + ix;
+        samples += uint64_t(sums[i].taken);
+        store(ix, iy, sums[i], binSums.data() + i * bins.count, sums[i].taken);
+      }
+  }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.rays = rays;
   stats.samples = samples;
   stats.nonFiniteSamples = nonFinite;
-  stats.complete = !cancelled && tilesDone == tileCount;
+  stats.complete = !cancelled;
   return image;
 }
 

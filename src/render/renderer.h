@@ -29,6 +29,12 @@ struct RenderSettings {
   // the same pixels of the whole render.
   PixelRect window;
   int sampleBegin = 0, sampleEnd = 0;
+  // Adaptive sampling (render/sample_allocation.h; whole renders only): samplesPerPixel becomes
+  // the mean number of samples per seen pixel. A pilot of a quarter of them (2 to 16) goes to
+  // every pixel, the rest where one sample varies most. With targetError > 0, only what the plan
+  // predicts for that relative RMSE is spent, at most the budget.
+  bool adaptive = false;
+  double targetError = 0.0;
 };
 
 struct RenderStats {
@@ -37,6 +43,10 @@ struct RenderStats {
   uint64_t rays = 0;
   uint64_t nonFiniteSamples = 0;  // radiance estimates with a NaN or infinity, left out of their pixels
   bool complete = true;           // false when cancelled
+  // Adaptive sampling: the pilot's samples per pixel, the fewest and most any seen pixel got, and
+  // the relative RMSE the plan predicted.
+  int pilotSamples = 0, fewestSamples = 0, mostSamples = 0;
+  double predictedRelativeError = 0.0;
 };
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats);
