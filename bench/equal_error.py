@@ -4,7 +4,8 @@
 For each scene a converged image is rendered once (two halves of REF_SPP with different seeds,
 cached under CACHE, keyed by the scene's content and the settings), then the scene is rendered at
 spp = 1, 2, 4, ..., MAX_SPP with a fixed thread count; for each render the wall time of the whole
-`columba render` process and the relative RMSE against the converged image,
+`columba render` process and the relative RMSE against the converged image (each scene also
+with --adaptive, from 4 spp),
     relative RMSE = sqrt(mean((image - converged)^2)) / mean(converged),
 are printed, and the times to reach 5 % and 2 % are interpolated on the log-log error-vs-time
 line. The converged image's own error is estimated from its two halves (rmse(A - B) / 2) and
@@ -19,91 +20,26 @@ import hashlib
 import math
 import os
 import re
-import struct
 import subprocess
 import sys
 import tempfile
 import time
-import zlib
 
 import numpy as np
 
-# ---------------------------------------------------------------------------------------------
-# A minimal reader of scanline OpenEXR files (no, ZIPS or ZIP compression; half/float channels):
-# what `columba render` writes.
+# Columba's Python module of the build that holds COLUMBA (BUILD/python).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else ".")), "python"))
+import columba as columba_module  # noqa: E402
 
 
 def read_exr_rgb(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:4] != b"\x76\x2f\x31\x01":
-        raise ValueError(f"{path}: not an EXR file")
-    if struct.unpack_from("<I", data, 4)[0] & 0x200:
-        raise ValueError(f"{path}: tiled EXR files are not supported")
-    pos = 8
-    attrs = {}
-    while data[pos] != 0:
-        end = data.index(b"\0", pos)
-        name = data[pos:end].decode()
-        pos = end + 1
-        end = data.index(b"\0", pos)
-        kind = data[pos:end].decode()
-        pos = end + 1
-        size = struct.unpack_from("<i", data, pos)[0]
-        pos += 4
-        attrs[name] = (kind, data[pos:pos + size])
-        pos += size
-    pos += 1
-    compression = attrs["compression"][1][0]
-    xmin, ymin, xmax, ymax = struct.unpack("<4i", attrs["dataWindow"][1])
-    width, height = xmax - xmin + 1, ymax - ymin + 1
-    channels = []
-    raw = attrs["channels"][1]
-    p = 0
-    while raw[p] != 0:
-        end = raw.index(b"\0", p)
-        name = raw[p:end].decode()
-        ptype = struct.unpack_from("<i", raw, end + 1)[0]
-        channels.append((name, ptype))
-        p = end + 1 + 16
-    channels.sort()
-    lines = {0: 1, 2: 1, 3: 16}.get(compression)
-    if lines is None:
-        raise ValueError(f"{path}: compression {compression} is not supported")
-    chunks = (height + lines - 1) // lines
-    offsets = struct.unpack_from(f"<{chunks}Q", data, pos)
-    dtypes = {1: np.float16, 2: np.float32}
-    sizes = {1: 2, 2: 4}
-    line_bytes = sum(sizes[t] for _, t in channels) * width
-    out = {name: np.empty((height, width), np.float32) for name, _ in channels}
-    for off in offsets:
-        y, packed = struct.unpack_from("<ii", data, off)
-        block = data[off + 8:off + 8 + packed]
-        n = min(lines, ymax + 1 - y)
-        if packed < line_bytes * n:  # compressed: zlib, then the predictor, then interleaving
-            t = np.frombuffer(zlib.decompress(block), np.uint8).astype(np.int64)
-            t[1:] -= 128
-            t = (np.cumsum(t) & 0xFF).astype(np.uint8)
-            half = (len(t) + 1) // 2
-            u = np.empty_like(t)
-            u[0::2] = t[:half]
-            u[1::2] = t[half:]
-            block = u.tobytes()
-        q = 0
-        for row in range(n):
-            for name, ptype in channels:
-                count = width * sizes[ptype]
-                out[name][y - ymin + row] = np.frombuffer(block, dtypes[ptype], width, q)
-                q += count
-    return np.stack([out["R"], out["G"], out["B"]], axis=-1).astype(np.float64)
+    """An EXR the renderer wrote, as an H x W x 3 float64 array (read by Columba's Python module)."""
+    return columba_module.read_image(path).astype(np.float64)
 
 
-# ---------------------------------------------------------------------------------------------
-
-
-def render(columba, scene, defines, spp, seed, threads, output):
+def render(columba, scene, defines, spp, seed, threads, output, options=()):
     cmd = [columba, "render", scene, "-o", output, "--spp", str(spp), "--seed", str(seed),
-           "--threads", str(threads)]
+           "--threads", str(threads), *options]
     for d in defines:
         cmd += ["-D", d]
     start = time.perf_counter()
@@ -179,18 +115,18 @@ def paper_time(t0, e0, target):
 
 
 def equal_error(columba, cache, work, name, title, scene, inputs, defines, ref_spp, max_spp,
-                threads, paper):
-    print(f"\n== Equal error: {title}")
+                threads, paper, options=(), min_spp=1):
+    print(f"\n== Equal error: {title}" + (f", with {' '.join(options)}" if options else ""))
     ref, mean, ref_mse = converged(columba, cache, name, scene, inputs, defines, ref_spp,
                                    threads, work)
     print(f"{'spp':>6} {'wall_s':>8} {'render_s':>9} {'rel_RMSE':>9} {'corrected':>9} "
           f"{'var/sample':>10} {'non-finite_px':>13}")
     points = []
     timings = {}
-    spp = 1
+    spp = min_spp
     while spp <= max_spp:
         out = os.path.join(work, f"{name}-{spp}.exr")
-        wall, secs = render(columba, scene, defines, spp, 0, threads, out)
+        wall, secs = render(columba, scene, defines, spp, 0, threads, out, options)
         img = read_exr_rgb(out)
         bad = int(np.count_nonzero(~np.isfinite(img).all(axis=-1)))
         with np.errstate(over="ignore", invalid="ignore"):
@@ -241,19 +177,25 @@ def main():
         if not os.path.exists(sim3):
             sim3 = os.path.join(root, "scenes/bsdf_visualization_sampled.xml")
         sim3_defs = ["res=256"]
-        t_sim3 = equal_error(columba, cache, work, "sim3", "simulation3-like: "
-                             f"{os.path.relpath(sim3, root)}, 256x256 (BSDF sampling)",
-                             sim3, [], sim3_defs, ref_sim, max_sim, threads, (5.34, 0.054, 64))
+        sim3_title = f"simulation3-like: {os.path.relpath(sim3, root)}, 256x256 (BSDF sampling)"
+        t_sim3 = equal_error(columba, cache, work, "sim3", sim3_title, sim3, [], sim3_defs, ref_sim,
+                             max_sim, threads, (5.34, 0.054, 64))
+        equal_error(columba, cache, work, "sim3", sim3_title, sim3, [], sim3_defs, ref_sim, max_sim,
+                    threads, (5.34, 0.054, 64), ("--adaptive",), 4)
         # A dense neck patch of Columba's own: the generator's neck with 18 feathers (seed 1):
         # 4,248 barbs of 64 vertices (the paper's patch: 4,320).
         patch = os.path.join(work, "patch.ply")
         subprocess.run([columba, "feather", "--neck", "--feathers", "18", "--seed", "1",
                         "--binary", "-o", patch], check=True, stdout=subprocess.DEVNULL)
-        neck = os.path.join(root, "scenes/neck_direction1.xml")
+        # Under the camera and lights of the paper's neck scene (its feathers are not ours).
+        neck = os.path.join(root, "bench/neck_paper_lighting.xml")
         neck_defs = [f"feathers={patch}", "width=512", "height=384"]
-        equal_error(columba, cache, work, "neck", "dense neck patch: scenes/neck_direction1.xml "
-                    "on `columba feather --neck --feathers 18` (4,248 barbs), 512x384",
-                    neck, [patch], neck_defs, ref_neck, max_neck, threads, (65.0, 0.063, 64))
+        neck_title = ("dense neck patch: bench/neck_paper_lighting.xml on `columba feather --neck "
+                      "--feathers 18` (4,248 barbs), 512x384")
+        equal_error(columba, cache, work, "neck", neck_title, neck, [patch], neck_defs, ref_neck,
+                    max_neck, threads, (65.0, 0.063, 64))
+        equal_error(columba, cache, work, "neck", neck_title, neck, [patch], neck_defs, ref_neck,
+                    max_neck, threads, (65.0, 0.063, 64), ("--adaptive",), 4)
 
         print(f"\n== Equal spp ({threads} threads, fastest of {repeats})")
         sim1 = os.path.join(root, "../shared/reference/scenes/simulation1.xml")
