@@ -47,7 +47,7 @@ def render(columba, scene, defines, spp, seed, threads, output, options=()):
     wall = time.perf_counter() - start
     if proc.returncode != 0:
         sys.exit(f"render failed ({' '.join(cmd)}):\n{proc.stderr}{proc.stdout}")
-    m = re.search(r": ([0-9.]+) s, ", proc.stdout.strip().splitlines()[-1])
+    m = re.search(r"^Rendered .*?: ([0-9.]+) s, ", proc.stdout, re.MULTILINE)
     return wall, float(m.group(1)) if m else float("nan")
 
 
