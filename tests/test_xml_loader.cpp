@@ -265,6 +265,20 @@ TEST(XmlLoader, UnknownPluginTypeNamesFileLineAndType) {
                  {"test.xml:3", "unknown <bsdf> plug-in type 'nonsense'"});
 }
 
+TEST(XmlLoader, MitsubaPluginsColumbaLacksAreNamedWithWhy) {
+  expectContains(errorOf(R"(<scene version="3.0.0">
+  <integrator type="volpath"/>
+</scene>)"),
+                 {"test.xml:2", "<integrator type='volpath'>: a Mitsuba plug-in Columba does not have",
+                  "participating media are not supported"});
+  expectContains(errorOf(R"(<scene version="3.0.0">
+  <shape type="mesh">
+    <bsdf type="diffuse"><texture name="reflectance" type="checkerboard"/></bsdf>
+  </shape>
+</scene>)"),
+                 {"test.xml:3", "<texture type='checkerboard'>", "textures are not supported yet"});
+}
+
 TEST(XmlLoader, BadNumbersAreErrors) {
   for (const char* bad : {"1.5x", "", "abc", "nan", "inf", "1e999"})
     expectContains(errorOf(probe(std::string("\n<float name=\"scale\" value=\"") + bad + "\"/>")),

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <set>
 #include "core/file_lookup.h"
+#include "scene/unsupported_plugins.h"
 #include "scene/xml_source.h"
 #include "scene/xml_transform.h"
 #include "scene/xml_values.h"
@@ -188,7 +189,14 @@ NamedObject SceneBuilder::instantiate(const XmlElement& e, int depth) {
   props.searchDirs = searchDirs(e.document());
 
   const PluginFactory* factory = registry_.find(props.tag, props.type);
-  if (!factory) throw InputError(e.location(), "unknown <" + props.tag + "> plug-in type '" + props.type + "'");
+  if (!factory) {
+    if (std::optional<std::string> reason = unsupportedMitsubaPlugin(props.tag, props.type))
+      throw InputError(e.location(), "<" + props.tag + " type='" + props.type +
+                                         "'>: a Mitsuba plug-in Columba does "
+                                         "not have (" +
+                                         *reason + ")");
+    throw InputError(e.location(), "unknown <" + props.tag + "> plug-in type '" + props.type + "'");
+  }
   if (!props.id.empty()) building_.insert(props.id);
 
   for (const XmlElement& c : e.children()) {

@@ -1,0 +1,73 @@
+#include "scene/unsupported_plugins.h"
+
+#include <map>
+#include <utility>
+
+namespace columba {
+
+namespace {
+const char* kMedia = "participating media are not supported; Columba renders surfaces only";
+const char* kTextures = "textures are not supported yet: give the parameter a constant value or spectrum";
+const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
+const char* kPolarisation = "polarised rendering is not supported";
+}  // namespace
+
+std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, const std::string& type) {
+  static const std::map<std::pair<std::string, std::string>, const char*> kReasons = {
+      {{"integrator", "volpath"}, kMedia},
+      {{"integrator", "volpathmis"}, kMedia},
+      {{"integrator", "prbvolpath"}, kMedia},
+      {{"integrator", "prb"}, kDifferentiable},
+      {{"integrator", "prb_basic"}, kDifferentiable},
+      {{"integrator", "prb_projective"}, kDifferentiable},
+      {{"integrator", "direct_projective"}, kDifferentiable},
+      {{"integrator", "stokes"}, kPolarisation},
+      {{"integrator", "aov"}, "arbitrary output variables are not supported"},
+      {{"integrator", "moment"}, "the moment integrator is not supported"},
+      {{"integrator", "depth"}, "the depth integrator is not supported"},
+      {{"integrator", "ptracer"}, "light tracing is not supported; use 'path'"},
+      {{"medium", "homogeneous"}, kMedia},
+      {{"medium", "heterogeneous"}, kMedia},
+      {{"phase", "isotropic"}, kMedia},
+      {{"phase", "hg"}, kMedia},
+      {{"phase", "rayleigh"}, kMedia},
+      {{"phase", "sggx"}, kMedia},
+      {{"phase", "tabphase"}, kMedia},
+      {{"phase", "blendphase"}, kMedia},
+      {{"texture", "bitmap"}, kTextures},
+      {{"texture", "checkerboard"}, kTextures},
+      {{"texture", "mesh_attribute"}, kTextures},
+      {{"texture", "volume"}, kTextures},
+      {{"bsdf", "principled"}, "the principled BSDF is not supported yet"},
+      {{"bsdf", "principledthin"}, "the thin principled BSDF is not supported yet"},
+      {{"bsdf", "normalmap"}, kTextures},
+      {{"bsdf", "bumpmap"}, kTextures},
+      {{"bsdf", "hair"}, "the hair BSDF is not supported"},
+      {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},
+      {{"bsdf", "pplastic"}, kPolarisation},
+      {{"bsdf", "polarizer"}, kPolarisation},
+      {{"bsdf", "retarder"}, kPolarisation},
+      {{"bsdf", "circular"}, kPolarisation},
+      {{"shape", "sdfgrid"}, "signed distance field grids are not supported"},
+      {{"shape", "bsplinecurve"}, "curves are not supported"},
+      {{"shape", "linearcurve"}, "curves are not supported"},
+      {{"shape", "ellipsoids"}, "ellipsoid clouds are not supported"},
+      {{"shape", "shapegroup"}, "instancing is not supported yet"},
+      {{"shape", "instance"}, "instancing is not supported yet"},
+      {{"emitter", "projector"}, kTextures},
+      {{"emitter", "sunsky"}, "the sun and sky model is not supported; use 'envmap' or 'directional'"},
+      {{"sensor", "irradiancemeter"}, "only cameras are supported as sensors"},
+      {{"sensor", "radiancemeter"}, "only cameras are supported as sensors"},
+      {{"sensor", "distant"}, "only cameras are supported as sensors"},
+      {{"sensor", "batch"}, "only one sensor per scene is supported"},
+      {{"film", "specfilm"}, "use 'hdrfilm' (columba render --spectral writes spectral bands)"},
+      {{"rfilter", "lanczos"}, "use 'box', 'tent' or 'gaussian'"},
+      {{"rfilter", "mitchell"}, "use 'box', 'tent' or 'gaussian'"},
+      {{"rfilter", "catmullrom"}, "use 'box', 'tent' or 'gaussian'"},
+  };
+  auto it = kReasons.find({tag, type});
+  if (it == kReasons.end()) return std::nullopt;
+  return std::string(it->second);
+}
+
+}  // namespace columba
