@@ -85,19 +85,26 @@ def load_default(defines=None, **kwargs):
     return scene
 
 
-def render(scene, spp=None, seed=0, threads=None, stats=False):
+def render(scene, spp=None, seed=0, threads=None, stats=False, adaptive=False, target_error=None):
     """Renders `scene` to an H x W x 3 float32 array of linear Rec.709 RGB.
 
     spp overrides the scene sampler's sample count; the same seed and spp give the same image
     (bit for bit, the CLI's too) for any number of threads (default: all cores). The GIL is
     released while rendering; Ctrl-C stops the render and raises KeyboardInterrupt. With
     stats=True returns (image, dict of seconds, samples, rays, ...).
+
+    adaptive=True (as `columba render --adaptive`) makes spp the mean budget per pixel, spent
+    where the pilot's neighbouring samples vary most; target_error (e.g. 0.02, implies adaptive)
+    stops at the budget its plan predicts for that relative RMSE. The stats then also hold the
+    pilot, the fewest and most samples per pixel and the predicted relative error.
     """
     if spp is not None and spp < 1:
         raise ValueError(f"spp must be between 1 and {1 << 24}, not {spp}")
     if threads is not None and threads < 1:
         raise ValueError(f"threads must be between 1 and 65536, not {threads}")
-    image, info = _columba._render(scene, 0 if spp is None else int(spp), int(seed), 0 if threads is None else int(threads))
+    image, info = _columba._render(scene, 0 if spp is None else int(spp), int(seed),
+                                   0 if threads is None else int(threads), bool(adaptive),
+                                   0.0 if target_error is None else float(target_error))
     return (image, info) if stats else image
 
 

@@ -91,16 +91,21 @@ namespace {
 // Renders on a worker thread while the calling thread, without the GIL, looks for signals every
 // 50 ms: Ctrl-C (or any Python signal handler that raises) stops the render before its next
 // sample and the exception propagates.
-py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads) {
+py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads, bool adaptive, double targetError) {
   if (spp < 0 || spp > kMaxSamplesPerPixel)
     throw py::value_error("spp must be between 1 and " + std::to_string(kMaxSamplesPerPixel) + ", not " +
                           std::to_string(spp));
   if (threads < 0 || threads > 65536)
     throw py::value_error("threads must be between 1 and 65536, not " + std::to_string(threads));
+  if (targetError != 0.0 && !(targetError > 0.0 && targetError < 1.0))
+    throw py::value_error("target_error must lie between 0 and 1 (a relative RMSE such as 0.02), not " +
+                          std::to_string(targetError));
   RenderSettings settings;
   settings.samplesPerPixel = spp > 0 ? spp : s.scene->sensor().sampler().sampleCount();
   settings.seed = seed;
   settings.threads = threads;
+  settings.adaptive = adaptive || targetError > 0.0;
+  settings.targetError = targetError;
   std::atomic<bool> cancel{false};
   settings.cancel = &cancel;
 
@@ -140,7 +145,14 @@ py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads) {
     worker.join();
   }
   if (interrupted) throw py::error_already_set();
-  if (failure) std::rethrow_exception(failure);
+  if (failure) {
+    try {
+      std::rethrow_exception(failure);
+    } catch (const std::runtime_error& e) {  // settings the renderer refuses (adaptive with too few spp)
+      if (!dynamic_cast<const InputError*>(&e)) throw py::value_error(e.what());
+      throw;
+    }
+  }
   py::dict info;
   info["seconds"] = stats.seconds;
   info["samples"] = stats.samples;
@@ -148,6 +160,12 @@ py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads) {
   info["non_finite_samples"] = stats.nonFiniteSamples;
   info["spp"] = settings.samplesPerPixel;
   info["seed"] = seed;
+  if (settings.adaptive) {
+    info["pilot_samples"] = stats.pilotSamples;
+    info["fewest_samples"] = stats.fewestSamples;
+    info["most_samples"] = stats.mostSamples;
+    info["predicted_relative_error"] = stats.predictedRelativeError;
+  }
   return py::make_tuple(imageArray(std::move(image)), info);
 }
 
@@ -210,7 +228,8 @@ PYBIND11_MODULE(_columba, m) {
   m.def("_load_file", &loadFile, py::arg("path"), py::arg("defines"));
   m.def("_load_string", &loadString, py::arg("xml"), py::arg("name"), py::arg("base_dir"), py::arg("defines"));
   m.def("_load_default", &loadDefault, py::arg("defines"));
-  m.def("_render", &renderScene, py::arg("scene"), py::arg("spp"), py::arg("seed"), py::arg("threads"));
+  m.def("_render", &renderScene, py::arg("scene"), py::arg("spp"), py::arg("seed"), py::arg("threads"),
+        py::arg("adaptive"), py::arg("target_error"));
   m.def("write_image", &writeImage, py::arg("path"), py::arg("image"),
         "Writes an H x W x 3 linear RGB array as .exr (float32) or .png (8-bit sRGB)");
   m.def(

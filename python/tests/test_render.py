@@ -159,3 +159,19 @@ def test_ctrl_c_interrupts_a_render(repo):
     stopped = time.perf_counter()
     timer.join()
     assert sent and stopped - sent[0] < 1.0
+
+
+def test_adaptive_render_equals_cli_and_reports_its_plan(cli, repo, tmp_path):
+    scene_path = repo / "examples" / "tiny_feather.xml"
+    out = tmp_path / "adaptive.exr"
+    cli("render", scene_path, "-o", out, "-D", "res=32", "--spp", "8", "--seed", "2", "--adaptive")
+    scene = columba.load_file(scene_path, res=32)
+    image, info = columba.render(scene, spp=8, seed=2, adaptive=True, stats=True)
+    np.testing.assert_array_equal(image, columba.read_image(out))
+    assert info["pilot_samples"] == 2
+    assert info["fewest_samples"] <= 8 <= info["most_samples"]
+    assert info["predicted_relative_error"] > 0
+    with pytest.raises(ValueError, match="target_error"):
+        columba.render(scene, spp=8, target_error=2.0)
+    with pytest.raises(ValueError, match="4 or more samples"):
+        columba.render(scene, spp=2, adaptive=True)
