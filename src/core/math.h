@@ -25,6 +25,17 @@ inline double safeSqrt(double x) { return std::sqrt(std::max(x, 0.0)); }
 inline float safeAsin(float x) { return std::asin(clampf(x, -1.0f, 1.0f)); }
 inline float safeAcos(float x) { return std::acos(clampf(x, -1.0f, 1.0f)); }
 inline float degToRad(float d) { return d * (kPi / 180.0f); }
+// The real roots t0 <= t1 of a t^2 + b t + c = 0 (a != 0; false when there are none), without the
+// cancellation of the textbook formula: q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2, roots q / a, c / q.
+inline bool solveQuadratic(double a, double b, double c, double& t0, double& t1) {
+  double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0 || a == 0.0) return false;
+  double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  t0 = q / a;
+  t1 = q != 0.0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
 inline float radToDeg(float r) { return r * (180.0f / kPi); }
 
 // sqrt, sin and cos for compile-time constants (std::sqrt and std::sin are not constexpr before

@@ -19,11 +19,8 @@ bool CylinderShape::intersectWorld(const Vec3& worldO, const Vec3& worldD, float
   double a = double(d.x) * d.x + double(d.y) * d.y;
   double b = 2.0 * (double(o.x) * d.x + double(o.y) * d.y);
   double c = double(o.x) * o.x + double(o.y) * o.y - 1.0;
-  double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0 || a == 0.0) return false;
-  double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
-  if (t0 > t1) std::swap(t0, t1);
+  double t0, t1;
+  if (!solveQuadratic(a, b, c, t0, t1)) return false;
   for (double root : {t0, t1}) {
     double z = double(o.z) + root * d.z;
     if (root > tmin && root < tmax && z >= 0.0 && z <= 1.0) {
