@@ -41,7 +41,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   const Film& film = sensor.film();
   const Integrator& integrator = scene.integrator();
   const bool whole = settings.window.empty();
-  const PixelRect window = whole ? PixelRect{0, 0, film.width(), film.height()} : settings.window;
+  const PixelRect window = whole ? film.crop() : settings.window;
   if (window.x0 < 0 || window.y0 < 0 || window.x1 > film.width() || window.y1 > film.height())
     throw std::runtime_error(fmt::format("the window [{}, {}) x [{}, {}) is not inside the film of {} x {} pixels",
                                          window.x0, window.x1, window.y0, window.y1, film.width(), film.height()));
