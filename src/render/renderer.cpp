@@ -34,6 +34,13 @@ struct WavelengthBins {
     }
   }
 };
+// The camera ray of a sample of pixel (x, y): an offset drawn from the filter, then a point on
+// the lens, drawn only for sensors that have one, so pinhole sensors' samples stay as they were.
+std::optional<Ray> cameraRay(const Sensor& sensor, int x, int y, Sampler& sampler) {
+  const Vec2 offset = sensor.film().filter().sample(sampler.get2D());
+  const Vec2 aperture = sensor.needsApertureSample() ? sampler.get2D() : Vec2(0.5f, 0.5f);
+  return sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y), aperture);
+}
 }  // namespace
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
@@ -98,8 +105,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
             if (stopRequested()) return;  // the unfinished pixel stays black
             sampler->startPixelSample(x, y, s, settings.seed);
             Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
-            Vec2 offset = film.filter().sample(sampler->get2D());
-            std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
+            std::optional<Ray> ray = cameraRay(sensor, x, y, *sampler);
             if (!ray) continue;
             Spectrum L = integrator.radiance(scene, *ray, *sampler, wl, tileRays);
             if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
@@ -160,8 +166,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
         Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
-        Vec2 offset = film.filter().sample(sampler->get2D());
-        if (std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y)))
+        if (std::optional<Ray> ray = cameraRay(sensor, x, y, *sampler))
           integrator.radiance(scene, *ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more
       }
