@@ -132,6 +132,61 @@ TEST_F(ImageFiles, ReadsLuminanceOnlyEXRAsGrey) {
   EXPECT_EQ(image.rgb, (std::vector<float>{0.75f, 0.75f, 0.75f, 3.0f, 3.0f, 3.0f}));
 }
 
+// The channels named `names` of an EXR file's pixels, channel by channel, and the names the file has.
+std::pair<std::vector<std::vector<float>>, std::vector<std::string>> exrChannels(const std::string& file,
+                                                                                 std::vector<const char*> names) {
+  Imf::InputFile in(file.c_str());
+  const Imath::Box2i window = in.header().dataWindow();
+  const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
+  std::vector<std::vector<float>> values(names.size(), std::vector<float>(size_t(width * height)));
+  Imf::FrameBuffer frame;
+  for (size_t c = 0; c < names.size(); ++c)
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values[c].data()), sizeof(float),
+                                      size_t(width) * sizeof(float)));
+  if (!names.empty()) {
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+  }
+  std::vector<std::string> all;
+  for (auto c = in.header().channels().begin(); c != in.header().channels().end(); ++c) all.push_back(c.name());
+  return {values, all};
+}
+
+TEST_F(ImageFiles, LuminanceAndXYZFilesHoldTheColoursYAndXYZ) {
+  // Red, green and blue primaries and white: Y is Rec.709's luminance weights (0.2126, 0.7152,
+  // 0.0722, ITU-R BT.709), XYZ the primaries' columns (sRGB, IEC 61966-2-1) and D65's white point.
+  Image image(4, 1);
+  image.rgb = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  image.exrColour = EXRColour::Luminance;
+  writeEXR(path("y.exr"), image);
+  auto [y, yNames] = exrChannels(path("y.exr"), {"Y"});
+  EXPECT_EQ(yNames, std::vector<std::string>{"Y"});
+  const float weights[3] = {0.2126f, 0.7152f, 0.0722f};
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(y[0][i], weights[i], 1e-4f);
+  EXPECT_NEAR(y[0][3], 1.0f, 1e-5f);
+  Image grey = readEXR(path("y.exr"));
+  EXPECT_EQ(grey.exrColour, EXRColour::Luminance);
+  EXPECT_EQ(grey.pixel(1, 0)[0], y[0][1]);
+  EXPECT_EQ(grey.pixel(1, 0)[2], y[0][1]);
+
+  image.exrColour = EXRColour::XYZ;
+  writeEXR(path("xyz.exr"), image);
+  auto [xyz, xyzNames] = exrChannels(path("xyz.exr"), {"X", "Y", "Z"});
+  EXPECT_EQ(xyzNames, (std::vector<std::string>{"X", "Y", "Z"}));
+  const float red[3] = {0.4124f, 0.2126f, 0.0193f}, d65[3] = {0.95047f, 1.0f, 1.08883f};
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(xyz[size_t(c)][0], red[c], 1e-4f);
+    EXPECT_NEAR(xyz[size_t(c)][3], d65[c], 1e-4f);
+  }
+  Image back = readEXR(path("xyz.exr"));  // read back as RGB
+  EXPECT_EQ(back.exrColour, EXRColour::XYZ);
+  for (size_t i = 0; i < image.rgb.size(); ++i) EXPECT_NEAR(back.rgb[i], image.rgb[i], 1e-5f);
+
+  // The pieces of a split render stay RGB, so that merging them is exact.
+  writeEXRWindow(path("piece.exr"), image, {0, 0, 4, 1}, 4, 2);
+  EXPECT_EQ(exrChannels(path("piece.exr"), {}).second, (std::vector<std::string>{"B", "G", "R"}));
+}
+
 TEST_F(ImageFiles, ReadingAMissingOrBrokenEXRNamesThePath) {
   const std::string missing = path("missing.exr");
   try {

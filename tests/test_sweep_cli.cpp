@@ -111,6 +111,28 @@ TEST_F(SweepCli, GridsAndFramePatterns) {
   EXPECT_NE(r.output.find("both set $angle"), std::string::npos) << r.output;
 }
 
+TEST_F(SweepCli, PartsOfACroppedFilmMergeIntoTheCroppedRender) {
+  // The parts split the crop window, not the film, and hold its pixels where a render in one piece
+  // puts them.
+  std::string text = kScene;
+  const std::string height = R"(<integer name="height" value="12"/>)";
+  text.replace(text.find(height), height.size(),
+               height + R"(<integer name="crop_offset_x" value="3"/><integer name="crop_offset_y" value="2"/>
+      <integer name="crop_width" value="9"/><integer name="crop_height" value="7"/>)");
+  const std::string s = write("cropped.xml", text);
+  ASSERT_EQ(run("render " + s + " -o " + at("whole.exr")).status, 0);
+  for (int k = 1; k <= 2; ++k) {
+    CommandResult r = run("render " + s + " -o " + at("img.exr") + " --part " + std::to_string(k) + "/2");
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  EXPECT_EQ(readEXRFile(at("img.part2of2.exr")).frameWidth, 9);
+  EXPECT_EQ(readEXRFile(at("img.part2of2.exr")).frameHeight, 7);
+  ASSERT_EQ(run("merge " + at("img.part1of2.exr") + " " + at("img.part2of2.exr") + " -o " + at("merged.exr")).status,
+            0);
+  EXPECT_EQ(readEXR(at("whole.exr")).width, 9);
+  EXPECT_TRUE(samePixels(at("merged.exr"), at("whole.exr")));
+}
+
 TEST_F(SweepCli, PartsAndPassesMergeIntoTheWholeRender) {
   std::string s = scene();
   ASSERT_EQ(run("render " + s + " --spp 8 -o " + at("whole.exr")).status, 0);

@@ -589,6 +589,25 @@ TEST(XmlLoader, LookAtFollowedByTranslate) {
   expectMatrixNear(p->transforms.at("to_world").matrix(), expected);
 }
 
+TEST(XmlLoader, LookAtWithoutUpTakesTheFrameOfTheViewDirection) {
+  // As Mitsuba 3: up is the first axis of the Duff et al. (2017) frame around the direction. For
+  // d = (1, 0, 0): sign = 1, a = -1 / (1 + 0) = -1, b = 0, so up = (1 + d.x^2 a, b, -d.x) = (0, 0, -1);
+  // left = up x d = (0, -1, 0), up' = d x left = (0, 0, -1).
+  const double alongX[4][4] = {{0, 0, 1, 1}, {-1, 0, 0, 2}, {0, -1, 0, 3}, {0, 0, 0, 1}};
+  for (const char* up : {"", " up=\"0, 0, 0\""}) {
+    auto p = only(load(probe(std::string(R"(<transform name="to_world"><lookat origin="1, 2, 3" target="4, 2, 3")") +
+                             up + "/></transform>")));
+    expectMatrixNear(p->transforms.at("to_world").matrix(), alongX);
+  }
+  // d = (0, 0, 1): a = -1/2, b = 0, up = (1, 0, 0); left = (0, -1, 0), up' = (1, 0, 0).
+  auto p = only(load(probe(R"(<transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, 2"/></transform>)")));
+  const double alongZ[4][4] = {{0, 1, 0, 0}, {-1, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+  expectMatrixNear(p->transforms.at("to_world").matrix(), alongZ);
+  expectContains(
+      errorOf(probe("<transform name=\"to_world\">\n<lookat origin=\"1, 1, 1\" target=\"1, 1, 1\"/>\n</transform>")),
+      {"test.xml:4", "origin equals target"});
+}
+
 TEST(XmlLoader, MatrixElement) {
   auto p = only(load(probe(R"(<transform name="to_world">
   <matrix value="1 2 0 4  0 1 0 5  0 0 2 6  0 0 0 1"/>

@@ -196,8 +196,11 @@ int runRender(const RenderOptions& options) {
     info.defines = describeDefines(defines);
     info.seed = options.scene.seed;
     info.spp = spp;
-    info.frameWidth = film.width();
-    info.frameHeight = film.height();
+    // A split render's frame is the film's crop window (the whole film unless cropped): the pieces'
+    // windows are relative to it, and merged they make the image a render in one piece makes.
+    const PixelRect& crop = film.crop();
+    info.frameWidth = crop.width();
+    info.frameHeight = crop.height();
     if (options.scene.spectral)
       info.spectral = fmt::format(
           "{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
@@ -207,10 +210,15 @@ int runRender(const RenderOptions& options) {
     if (part) {
       // Bands of rows of about equal cost, from a pilot every part computes alike.
       info.part = part;
-      info.partBounds = part->count == 1 ? std::vector<int>{0, film.height()}
-                                         : balancedRowBands(estimateRowCosts(scene, settings), part->count);
-      settings.window = partWindow(info.partBounds, part->index, film.width());
-      pieceText = fmt::format(", part {} (rows {}-{})", part->str(), settings.window.y0, settings.window.y1 - 1);
+      if (part->count == 1) {
+        info.partBounds = {0, crop.height()};
+      } else {
+        const std::vector<uint64_t> rowCosts = estimateRowCosts(scene, settings);
+        info.partBounds = balancedRowBands({rowCosts.begin() + crop.y0, rowCosts.begin() + crop.y1}, part->count);
+      }
+      const PixelRect window = partWindow(info.partBounds, part->index, crop.width());
+      settings.window = {crop.x0 + window.x0, crop.y0 + window.y0, crop.x0 + window.x1, crop.y0 + window.y1};
+      pieceText = fmt::format(", part {} (rows {}-{})", part->str(), window.y0, window.y1 - 1);
     }
     if (pass) {
       info.pass = pass;
@@ -219,8 +227,12 @@ int runRender(const RenderOptions& options) {
       settings.sampleEnd = info.sampleEnd;
       pieceText += fmt::format(", pass {} (samples {}:{})", pass->str(), info.sampleBegin, info.sampleEnd);
     }
-    fmt::print(stderr, "Rendering {} ({}x{}, {} spp{}, {} shapes, {} primitives)\n", source.file, film.width(),
-               film.height(), spp, pieceText, scene.shapeCount(), scene.primitiveCount());
+    const std::string cropText =
+        crop.width() == film.width() && crop.height() == film.height()
+            ? ""
+            : fmt::format(", cropped to {}x{} at ({}, {})", crop.width(), crop.height(), crop.x0, crop.y0);
+    fmt::print(stderr, "Rendering {} ({}x{}{}, {} spp{}, {} shapes, {} primitives)\n", source.file, film.width(),
+               film.height(), cropText, spp, pieceText, scene.shapeCount(), scene.primitiveCount());
 
     overall.done = int(i);
     ProgressReporter progress(sweeping ? fmt::format("frame {}/{}", i + 1, selected.size()) : "render",
@@ -240,9 +252,10 @@ int runRender(const RenderOptions& options) {
     if (piece) {
       const std::string file = pieceFileName(output.exr.string(), part, pass);
       written = stats.complete ? file : partialFileName(file);
+      const PixelRect window = settings.window.empty() ? crop : settings.window;
       writeEXRWindow(written, image,
-                     settings.window.empty() ? PixelRect{0, 0, film.width(), film.height()} : settings.window,
-                     film.width(), film.height(), metadata);
+                     {window.x0 - crop.x0, window.y0 - crop.y0, window.x1 - crop.x0, window.y1 - crop.y0}, crop.width(),
+                     crop.height(), metadata);
     } else {
       const OutputPair pair = stats.complete ? output : output.partial();
       writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);

@@ -29,7 +29,9 @@
 #include "samplers/multijitter_sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "sensors/bsdf_visualizer_sensor.h"
+#include "sensors/orthographic_sensor.h"
 #include "sensors/perspective_sensor.h"
+#include "sensors/thin_lens_sensor.h"
 #include "shapes/cylinder_shape.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
@@ -48,6 +50,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("integrator", "path", makePathIntegrator);
     r.add("integrator", "direct", makeDirectIntegrator);
     r.add("sensor", "perspective", makePerspectiveSensor);
+    r.add("sensor", "thinlens", makeThinLensSensor);
+    r.add("sensor", "orthographic", makeOrthographicSensor);
     r.add("sensor", "bsdfvisualizer", makeBSDFVisualizerSensor);
     r.add("film", "hdrfilm", makeHDRFilm);
     r.add("rfilter", "box", makeBoxFilter);

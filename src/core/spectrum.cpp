@@ -188,6 +188,12 @@ float cieYIntegral() { return cieTable().yIntegral; }
 
 Vec3 xyzToLinearRGB(const Vec3& xyz) { return xyzToRec709(xyz); }
 
+Vec3 linearRGBToXYZ(const Vec3& c) {
+  return {0.4124564f * c.x + 0.3575761f * c.y + 0.1804375f * c.z,
+          0.2126729f * c.x + 0.7151522f * c.y + 0.0721750f * c.z,
+          0.0193339f * c.x + 0.1191920f * c.y + 0.9503041f * c.z};
+}
+
 namespace {
 // The colour-matching functions taken to linear RGB and divided by the Y integral, at the
 // CIE table's 1 nm steps: the conversion is linear, so it is applied once here instead of per

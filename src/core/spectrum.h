@@ -87,6 +87,8 @@ float cieYIntegral();
 // Linear Rec.709/sRGB primaries with the plain matrix (no white balance, as Mitsuba): D65 is
 // (1, 1, 1) and a flat (equal-energy) spectrum is slightly pink.
 Vec3 xyzToLinearRGB(const Vec3& xyz);
+// Its inverse; the y of the result is the colour's luminance.
+Vec3 linearRGBToXYZ(const Vec3& rgb);
 // Monte Carlo estimate of a spectrum's linear RGB from its values at `wl`.
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl);
 

@@ -11,13 +11,15 @@ namespace columba {
 
 Image Film::makeImage() const {
   try {
-    return Image(width_, height_);
+    Image image(crop_.width(), crop_.height());
+    image.exrColour = colour_;
+    return image;
   } catch (const std::bad_alloc&) {
-    double gib = double(width_) * double(height_) * 3 * sizeof(float) / double(1 << 30);
+    double gib = double(crop_.width()) * double(crop_.height()) * 3 * sizeof(float) / double(1 << 30);
     throw std::runtime_error(
         fmt::format("the film of {} x {} pixels needs {:.1f} GiB of memory for its image, "
                     "which cannot be allocated",
-                    width_, height_, gib));
+                    crop_.width(), crop_.height(), gib));
   }
 }
 
@@ -27,17 +29,61 @@ std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
     throw props.error("width", "width must be in 1..65536, not " + std::to_string(width));
   if (height <= 0 || height > 65536)
     throw props.error("height", "height must be in 1..65536, not " + std::to_string(height));
-  // Output is always linear float RGB; these are accepted for compatibility with Mitsuba scenes.
-  std::string pixelFormat = props.getString("pixel_format", "rgb");
-  if (pixelFormat != "rgb" && pixelFormat != "rgba")
-    throw props.error("pixel_format", "only 'rgb' and 'rgba' are supported, not '" + pixelFormat + "'");
+  // Mitsuba's crop window: its size defaults to the whole film whatever the offset, and it must
+  // fit inside the film.
+  const int offsetX = props.getInt("crop_offset_x", 0), offsetY = props.getInt("crop_offset_y", 0);
+  const int cropWidth = props.getInt("crop_width", width), cropHeight = props.getInt("crop_height", height);
+  if (offsetX < 0 || offsetX >= width)
+    throw props.error(
+        "crop_offset_x",
+        fmt::format("crop_offset_x must be in 0..{} (the film is {} pixels wide), not {}", width - 1, width, offsetX));
+  if (offsetY < 0 || offsetY >= height)
+    throw props.error("crop_offset_y",
+                      fmt::format("crop_offset_y must be in 0..{} (the film is {} pixels high), not {}", height - 1,
+                                  height, offsetY));
+  if (cropWidth <= 0 || cropWidth > width - offsetX)
+    throw props.error("crop_width",
+                      fmt::format("crop_width must be in 1..{} (crop_offset_x {} on a film {} pixels wide), not {}",
+                                  width - offsetX, offsetX, width, cropWidth));
+  if (cropHeight <= 0 || cropHeight > height - offsetY)
+    throw props.error("crop_height",
+                      fmt::format("crop_height must be in 1..{} (crop_offset_y {} on a film {} pixels high), not {}",
+                                  height - offsetY, offsetY, height, cropHeight));
+  // The output is an EXR file of float32 values; Mitsuba's colour choices are honoured. Those with
+  // an alpha channel are written without it, with a warning: Columba computes no coverage, and
+  // refusing them would stop many exported scenes (rgba is a common choice) from loading.
+  const std::string fileFormat = props.getString("file_format", "openexr");
+  if (fileFormat != "openexr" && fileFormat != "exr")
+    throw props.error("file_format", "file_format must be 'openexr' (or 'exr'), not '" + fileFormat +
+                                         "': Columba writes OpenEXR files (and PNG previews)");
+  const std::string pixelFormat = props.getString("pixel_format", "rgb");
+  EXRColour colour;
+  if (pixelFormat == "rgb") {
+    colour = EXRColour::RGB;
+  } else if (pixelFormat == "luminance") {
+    colour = EXRColour::Luminance;
+  } else if (pixelFormat == "xyz") {
+    colour = EXRColour::XYZ;
+  } else if (pixelFormat == "rgba" || pixelFormat == "luminance_alpha" || pixelFormat == "xyza") {
+    const std::string withoutAlpha = pixelFormat == "rgba" ? "rgb" : pixelFormat == "xyza" ? "xyz" : "luminance";
+    colour = pixelFormat == "rgba" ? EXRColour::RGB : pixelFormat == "xyza" ? EXRColour::XYZ : EXRColour::Luminance;
+    warn(props.locationOf("pixel_format"), "pixel_format '" + pixelFormat +
+                                               "': Columba computes no alpha channel; the image is written as '" +
+                                               withoutAlpha + "'");
+  } else {
+    throw props.error("pixel_format",
+                      "pixel_format must be rgb, luminance or xyz (or rgba, luminance_alpha and xyza, written "
+                      "without their alpha channel), not '" +
+                          pixelFormat + "'");
+  }
   std::string componentFormat = props.getString("component_format", "float16");
   if (componentFormat != "float16" && componentFormat != "float32")
     throw props.error("component_format", "only 'float16' and 'float32' are supported, not '" + componentFormat + "'");
   auto filter = props.child<ReconstructionFilter>();
   if (!filter)
     filter = makeDefaultPlugin<ReconstructionFilter>(makeGaussianFilter, "rfilter", "gaussian", props.location);
-  return std::make_shared<Film>(width, height, std::move(filter));
+  return std::make_shared<Film>(width, height, std::move(filter),
+                                PixelRect{offsetX, offsetY, offsetX + cropWidth, offsetY + cropHeight}, colour);
 }
 
 }  // namespace columba

@@ -1,5 +1,6 @@
 #pragma once
-// `hdrfilm`: the image size and the reconstruction filter. Pixels are accumulated by the renderer.
+// `hdrfilm`: the image size, the crop window rendered and the reconstruction filter. Pixels are
+// accumulated by the renderer.
 #include <memory>
 #include "core/properties.h"
 #include "film/reconstruction_filter.h"
@@ -9,19 +10,35 @@ namespace columba {
 
 class Film : public Object {
  public:
-  Film(int width, int height, std::shared_ptr<ReconstructionFilter> filter)
-      : width_(width), height_(height), filter_(std::move(filter)) {}
+  // `crop` (empty: the whole film) must lie inside the film.
+  Film(int width, int height, std::shared_ptr<ReconstructionFilter> filter, PixelRect crop = {},
+       EXRColour colour = EXRColour::RGB)
+      : width_(width),
+        height_(height),
+        crop_(crop.empty() ? PixelRect{0, 0, width, height} : crop),
+        colour_(colour),
+        filter_(std::move(filter)) {}
+  // The full film, which the sensor's field of view spans.
   int width() const { return width_; }
   int height() const { return height_; }
+  // The pixels rendered, as Mitsuba's crop window: the image holds just them, each the same as in
+  // a render of the whole film. The whole film unless hdrfilm's crop_* parameters say otherwise.
+  const PixelRect& crop() const { return crop_; }
   const ReconstructionFilter& filter() const { return *filter_; }
-  // A black image of the film's size; if it cannot be allocated, throws std::runtime_error
+  // The colour channels of the image's EXR file (hdrfilm's pixel_format).
+  EXRColour exrColour() const { return colour_; }
+  // A black image of the crop's size, with the film's exrColour; if it cannot be allocated, throws std::runtime_error
   // saying how much memory it needs.
   Image makeImage() const;
-  // The same film at another size (fitting a scene to a measured image of that size).
-  std::shared_ptr<Film> resized(int width, int height) const { return std::make_shared<Film>(width, height, filter_); }
+  // The same film, uncropped, at another size (fitting a scene to a measured image of that size).
+  std::shared_ptr<Film> resized(int width, int height) const {
+    return std::make_shared<Film>(width, height, filter_, PixelRect{}, colour_);
+  }
 
  private:
   int width_, height_;
+  PixelRect crop_;
+  EXRColour colour_;
   std::shared_ptr<ReconstructionFilter> filter_;
 };
 

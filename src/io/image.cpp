@@ -26,6 +26,7 @@
 #include <optional>
 #include <stdexcept>
 #include "core/error.h"
+#include "core/spectrum.h"
 #include "core/version.h"
 
 namespace columba {
@@ -59,13 +60,30 @@ void writeEXRFile(const std::string& file, const Image& image, const ImageMetada
   const Imath::Box2i display = window ? Imath::Box2i({0, 0}, {frameWidth - 1, frameHeight - 1}) : data;
   Imf::Header header(display, data);
   for (const auto& [name, text] : metadata) header.insert(name, Imf::StringAttribute(text));
-  for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   Imf::FrameBuffer frame;
-  const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
   auto slice = [&](const float* first, size_t x, size_t y) { return Imf::Slice::Make(Imf::FLOAT, first, data, x, y); };
-  frame.insert("R", slice(image.rgb.data(), xStride, yStride));
-  frame.insert("G", slice(image.rgb.data() + 1, xStride, yStride));
-  frame.insert("B", slice(image.rgb.data() + 2, xStride, yStride));
+  // The colour channels' names and values, `names.size()` floats per pixel.
+  const EXRColour colour = window ? EXRColour::RGB : image.exrColour;
+  std::vector<const char*> names = {"R", "G", "B"};
+  std::vector<float> converted;
+  if (colour != EXRColour::RGB) {
+    names = colour == EXRColour::Luminance ? std::vector<const char*>{"Y"} : std::vector<const char*>{"X", "Y", "Z"};
+    converted.reserve(image.rgb.size() / 3 * names.size());
+    for (size_t i = 0; i < image.rgb.size(); i += 3) {
+      const Vec3 xyz = linearRGBToXYZ(Vec3(image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]));
+      if (colour == EXRColour::Luminance) {
+        converted.push_back(xyz.y);
+      } else {
+        converted.insert(converted.end(), {xyz.x, xyz.y, xyz.z});
+      }
+    }
+  }
+  const float* values = colour == EXRColour::RGB ? image.rgb.data() : converted.data();
+  const size_t xStride = names.size() * sizeof(float), yStride = xStride * size_t(image.width);
+  for (size_t c = 0; c < names.size(); ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(names[c], slice(values + c, xStride, yStride));
+  }
   const SpectralBands& bands = image.spectral;
   const size_t bandStride = bands.count() * sizeof(float);
   for (size_t b = 0; b < bands.count(); ++b) {
@@ -370,7 +388,9 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     result.frameHeight = display.max.y - display.min.y + 1;
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
-    if (!rgb && !channels.findChannel("Y")) throw InputError({path, 0}, "EXR image has neither R, G, B nor Y channels");
+    const bool xyz = !rgb && channels.findChannel("X") && channels.findChannel("Y") && channels.findChannel("Z");
+    if (!rgb && !channels.findChannel("Y"))
+      throw InputError({path, 0}, "EXR image has neither R, G, B, nor X, Y, Z, nor Y channels");
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
     checkEXRPixelCount(path, width, height);
     if (!pixels) return result;
@@ -379,10 +399,9 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     const size_t xStride = 3 * sizeof(float), yStride = xStride * size_t(image.width);
     auto slice = [&](int c) { return Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, window, xStride, yStride); };
     Imf::FrameBuffer frame;
-    if (rgb) {
-      frame.insert("R", slice(0));
-      frame.insert("G", slice(1));
-      frame.insert("B", slice(2));
+    if (rgb || xyz) {
+      const char *names[3] = {"R", "G", "B"}, *xyzNames[3] = {"X", "Y", "Z"};
+      for (int c = 0; c < 3; ++c) frame.insert(rgb ? names[c] : xyzNames[c], slice(c));
     } else {
       frame.insert("Y", slice(0));
     }
@@ -400,8 +419,18 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     }
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
-    if (!rgb)  // grey
-      for (size_t i = 0; i < image.rgb.size(); i += 3) image.rgb[i + 1] = image.rgb[i + 2] = image.rgb[i];
+    image.exrColour = rgb ? EXRColour::RGB : xyz ? EXRColour::XYZ : EXRColour::Luminance;
+    for (size_t i = 0; !rgb && i < image.rgb.size(); i += 3) {
+      float* p = &image.rgb[i];
+      if (xyz) {
+        const Vec3 c = xyzToLinearRGB(Vec3(p[0], p[1], p[2]));
+        p[0] = c.x;
+        p[1] = c.y;
+        p[2] = c.z;
+      } else {  // grey
+        p[1] = p[2] = p[0];
+      }
+    }
     return result;
   } catch (const InputError&) {
     throw;

@@ -18,10 +18,17 @@ struct SpectralBands {
 // The EXR channel name of a bin centred at `lambdaNm`.
 std::string spectralChannelName(float lambdaNm);
 
+// The colour channels of an image's EXR file, as Mitsuba's hdrfilm `pixel_format` chooses them:
+// linear Rec.709 R, G, B; their luminance Y; or CIE 1931 X, Y, Z of those primaries.
+enum class EXRColour { RGB, Luminance, XYZ };
+
 struct Image {
   int width = 0, height = 0;
   std::vector<float> rgb;  // row-major, 3 floats per pixel, linear Rec.709
   SpectralBands spectral;  // empty for RGB images
+  // What writeEXR and writeEXRAndPNG write the colour as (the PNG is RGB whatever it is). The
+  // pieces of a split render (writeEXRWindow) are RGB, so that merging them is exact.
+  EXRColour exrColour = EXRColour::RGB;
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgb(size_t(w) * size_t(h) * 3, 0.0f) {}
   float* pixel(int x, int y) { return &rgb[(size_t(y) * width + x) * 3]; }
@@ -76,7 +83,8 @@ ImageFormat checkOutputImagePath(const std::string& path);
 void writeEXRWindow(const std::string& path, const Image& image, const PixelRect& window, int frameWidth,
                     int frameHeight, const ImageMetadata& metadata = {});
 
-// RGB (or Y) and any spectral bands; throws InputError naming the path if it cannot be read.
+// RGB (from R, G, B, X, Y, Z, or Y alone as grey, `exrColour` saying which) and any spectral
+// bands; throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
 // The same with the header's windows and string attributes; with `pixels` false, only the header
 // is read (the image stays empty).

@@ -37,6 +37,14 @@ struct WavelengthBins {
   }
 };
 
+// The camera ray of a sample of pixel (x, y): an offset drawn from the filter, then a point on
+// the lens, drawn only for sensors that have one, so pinhole sensors' samples stay as they were.
+std::optional<Ray> cameraRay(const Sensor& sensor, int x, int y, Sampler& sampler) {
+  const Vec2 offset = sensor.film().filter().sample(sampler.get2D());
+  const Vec2 aperture = sensor.needsApertureSample() ? sampler.get2D() : Vec2(0.5f, 0.5f);
+  return sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y), aperture);
+}
+
 // What a pixel's samples add up to: RGB, and the luminance and its square for adaptive sampling.
 struct PixelSums {
   double rgb[3] = {0, 0, 0};
@@ -48,7 +56,6 @@ struct PixelSums {
 struct PixelSampler {
   const Scene& scene;
   const Sensor& sensor;
-  const Film& film;
   const Integrator& integrator;
   const WavelengthBins& bins;
   uint64_t seed;
@@ -67,8 +74,7 @@ struct PixelSampler {
       ++sums.taken;
       sampler.startPixelSample(x, y, s, seed);
       Wavelengths wl = Wavelengths::sampleVisible(sampler.get1D());
-      Vec2 offset = film.filter().sample(sampler.get2D());
-      std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y));
+      std::optional<Ray> ray = cameraRay(sensor, x, y, sampler);
       if (!ray) continue;
       Spectrum L = integrator.radiance(scene, *ray, sampler, wl, rays);
       if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
@@ -125,7 +131,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
   const bool whole = settings.window.empty();
-  const PixelRect window = whole ? PixelRect{0, 0, film.width(), film.height()} : settings.window;
+  const PixelRect window = whole ? film.crop() : settings.window;
   if (window.x0 < 0 || window.y0 < 0 || window.x1 > film.width() || window.y1 > film.height())
     throw std::runtime_error(fmt::format("the window [{}, {}) x [{}, {}) is not inside the film of {} x {} pixels",
                                          window.x0, window.x1, window.y0, window.y1, film.width(), film.height()));
@@ -151,7 +157,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   std::unique_ptr<tbb::global_control> threadLimit;
   if (settings.threads > 0)
     threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
-  const PixelSampler pixels{scene, sensor, film, scene.integrator(), bins, settings.seed, film.filter().radius()};
+  const PixelSampler pixels{scene, sensor, scene.integrator(), bins, settings.seed, film.filter().radius()};
   const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
   std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<bool> cancelled{false};
@@ -267,8 +273,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
         Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
-        Vec2 offset = film.filter().sample(sampler->get2D());
-        if (std::optional<Ray> ray = sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y)))
+        if (std::optional<Ray> ray = cameraRay(sensor, x, y, *sampler))
           integrator.radiance(scene, *ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more
       }

@@ -22,11 +22,12 @@ struct RenderSettings {
   float spectralMin = 400.0f, spectralMax = 700.0f;
   // Called from worker threads as tiles finish (done, total); must be thread-safe.
   std::function<void(int, int)> onTileDone;
-  // A piece of the render. `window` (empty: the whole film) limits it to those pixels, and the
-  // image returned holds just them. [sampleBegin, sampleEnd) limits every pixel to those of its
-  // sample indices 0 .. spp - 1 (sampleEnd 0: spp), and each pixel holds their mean. A pixel's
-  // samples depend only on (pixel, sample index, seed), so a window of a render is bit for bit
-  // the same pixels of the whole render.
+  // A piece of the render. `window` (empty: the film's crop window, normally the whole film)
+  // limits it to those pixels of the film, and the image returned holds just them.
+  // [sampleBegin, sampleEnd) limits every pixel to those of its sample indices 0 .. spp - 1
+  // (sampleEnd 0: spp), and each pixel holds their mean. A pixel's samples depend only on
+  // (pixel, sample index, seed), so a window of a render is bit for bit the same pixels of the
+  // whole render.
   PixelRect window;
   int sampleBegin = 0, sampleEnd = 0;
   // Adaptive sampling (render/sample_allocation.h; whole renders only): samplesPerPixel becomes

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include "core/frame.h"
 #include "scene/xml_values.h"
 
 namespace columba {
@@ -64,7 +65,12 @@ Transform operation(const XmlElement& op) {
   if (tag == "lookat") {
     op.allowAttributes({"origin", "target", "up"});
     auto point = [&](const char* name) { return parseVec3(op.attribute(name), describe(op, name), op.location()); };
-    return Transform::lookAt(point("origin"), point("target"), point("up"));
+    const Vec3 origin = point("origin"), target = point("target");
+    Vec3 up = op.has("up") ? point("up") : Vec3(0, 0, 0);
+    // Without an up (or with a zero one), Mitsuba 3 takes the first axis of the frame it builds
+    // around the view direction (Duff et al. 2017), which Frame::fromNormal builds alike.
+    if (up == Vec3(0, 0, 0) && !(target == origin)) up = Frame::fromNormal(normalize(target - origin)).s;
+    return Transform::lookAt(origin, target, up);
   }
   if (tag == "matrix") {
     op.allowAttributes({"value"});

@@ -4,7 +4,7 @@
 
 namespace columba {
 
-std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition) const {
+std::optional<Ray> BSDFVisualizerSensor::generateRay(Vec2 filmPosition, Vec2 /*apertureSample*/) const {
   // Film rows grow downward and so does v: the top half of the image looks from -y.
   float x = filmPosition.x * xScale_ - 1.0f;
   float y = filmPosition.y * yScale_ - 1.0f;

@@ -16,7 +16,8 @@ class BSDFVisualizerSensor : public Sensor {
         distance_(distance),
         xScale_(2.0f / float(this->film().width())),
         yScale_(2.0f / float(this->film().height())) {}
-  std::optional<Ray> generateRay(Vec2 filmPosition) const override;
+  using Sensor::generateRay;
+  std::optional<Ray> generateRay(Vec2 filmPosition, Vec2 apertureSample) const override;
   bool seesAnyOf(Vec2 lo, Vec2 hi) const override;
 
  private:

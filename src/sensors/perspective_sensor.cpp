@@ -6,12 +6,11 @@
 namespace columba {
 
 PerspectiveSensor::PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler,
-                                     const Transform& toWorld, float fovDegrees, const std::string& fovAxis,
-                                     float nearClip, float farClip)
-    : Sensor(std::move(film), std::move(sampler)), toWorld_(toWorld), nearClip_(nearClip), farClip_(farClip) {
+                                     const PerspectiveParameters& view)
+    : Sensor(std::move(film), std::move(sampler)), toWorld_(view.toWorld), clip_(view.clip) {
   float aspect = float(this->film().width()) / float(this->film().height());
-  float t = std::tan(0.5f * degToRad(fovDegrees));
-  std::string axis = fovAxis;
+  float t = std::tan(0.5f * degToRad(view.fovDegrees));
+  std::string axis = view.fovAxis;
   if (axis == "smaller") axis = aspect > 1.0f ? "y" : "x";
   if (axis == "larger") axis = aspect > 1.0f ? "x" : "y";
   if (axis == "x") {
@@ -27,16 +26,20 @@ PerspectiveSensor::PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr
   }
 }
 
-std::optional<Ray> PerspectiveSensor::generateRay(Vec2 filmPosition) const {
+Vec3 PerspectiveSensor::imagePlanePoint(Vec2 filmPosition) const {
   float nx = 2.0f * filmPosition.x / float(film().width()) - 1.0f;
   float ny = 2.0f * filmPosition.y / float(film().height()) - 1.0f;
   // Image right is camera -x (x points left); image down is camera -y.
-  Vec3 local = normalize(Vec3(-nx * tanHalfX_, -ny * tanHalfY_, 1.0f));
+  return Vec3(-nx * tanHalfX_, -ny * tanHalfY_, 1.0f);
+}
+
+std::optional<Ray> PerspectiveSensor::generateRay(Vec2 filmPosition, Vec2 /*apertureSample*/) const {
+  Vec3 local = normalize(imagePlanePoint(filmPosition));
   Ray ray;
   ray.o = toWorld_.point(Vec3(0, 0, 0));
   ray.d = normalize(toWorld_.vector(local));
-  ray.tmin = nearClip_ / local.z;
-  ray.tmax = farClip_ / local.z;
+  ray.tmin = clip_.nearClip / local.z;
+  ray.tmax = clip_.farClip / local.z;
   return ray;
 }
 
@@ -62,7 +65,7 @@ float focalLengthMm(const Properties& props) {
 
 }  // namespace
 
-std::shared_ptr<Object> makePerspectiveSensor(const Properties& props) {
+PerspectiveParameters readPerspectiveParameters(const Properties& props) {
   if (props.has("fov") && props.has("focal_length"))
     throw props.error("focal_length", "give either fov or focal_length, not both");
   float fov;
@@ -82,10 +85,14 @@ std::shared_ptr<Object> makePerspectiveSensor(const Properties& props) {
     fov = diagonalFovOfFocalLength(focalLength);
     axis = "diagonal";
   }
-  float nearClip = props.getFloat("near_clip", 0.01f), farClip = props.getFloat("far_clip", 10000.0f);
-  if (!(nearClip >= 0.0f && farClip > nearClip)) throw props.error("far_clip", "need 0 <= near_clip < far_clip");
-  return std::make_shared<PerspectiveSensor>(sensorFilm(props), sensorSampler(props), props.getTransform("to_world"),
-                                             fov, axis, nearClip, farClip);
+  return {props.getTransform("to_world"), fov, axis, sensorClipRange(props)};
+}
+
+std::shared_ptr<Object> makePerspectiveSensor(const Properties& props) {
+  const PerspectiveParameters view = readPerspectiveParameters(props);
+  // Mitsuba reads the focal plane's distance for every projective camera; a pinhole has none.
+  if (props.has("focus_distance")) props.getFloat("focus_distance");
+  return std::make_shared<PerspectiveSensor>(sensorFilm(props), sensorSampler(props), view);
 }
 
 }  // namespace columba

@@ -10,19 +10,36 @@
 
 namespace columba {
 
+// What the perspective and thin-lens cameras share: where they are, their field of view (degrees,
+// along fovAxis) and their clip range.
+struct PerspectiveParameters {
+  Transform toWorld;
+  float fovDegrees;
+  std::string fovAxis;
+  ClipRange clip;
+};
+// fov and fov_axis or focal_length, near_clip, far_clip and to_world, checked.
+PerspectiveParameters readPerspectiveParameters(const Properties& props);
+
 class PerspectiveSensor : public Sensor {
  public:
-  PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler, const Transform& toWorld,
-                    float fovDegrees, const std::string& fovAxis, float nearClip, float farClip);
-  std::optional<Ray> generateRay(Vec2 filmPosition) const override;
+  PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler, const PerspectiveParameters& view);
+  using Sensor::generateRay;
+  std::optional<Ray> generateRay(Vec2 filmPosition, Vec2 apertureSample) const override;
   // Half extents of the image plane at unit distance: tan of half the field of view.
   float tanHalfFovX() const { return tanHalfX_; }
   float tanHalfFovY() const { return tanHalfY_; }
 
+ protected:
+  // The camera-space point of the image plane z = 1 that `filmPosition` sees.
+  Vec3 imagePlanePoint(Vec2 filmPosition) const;
+  const Transform& toWorld() const { return toWorld_; }
+  const ClipRange& clip() const { return clip_; }
+
  private:
   Transform toWorld_;
   float tanHalfX_, tanHalfY_;  // image-plane half extents at unit distance
-  float nearClip_, farClip_;
+  ClipRange clip_;
 };
 
 inline constexpr float kDefaultFocalLengthMm = 50.0f;

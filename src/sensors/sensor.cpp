@@ -1,5 +1,7 @@
 #include "sensors/sensor.h"
 
+#include <fmt/format.h>
+
 #include "film/film.h"
 #include "samplers/independent_sampler.h"
 
@@ -14,6 +16,16 @@ std::shared_ptr<Sampler> sensorSampler(const Properties& props) {
   auto sampler = props.child<Sampler>();
   return sampler ? sampler
                  : makeDefaultPlugin<Sampler>(makeIndependentSampler, "sampler", "independent", props.location);
+}
+
+ClipRange sensorClipRange(const Properties& props) {
+  const ClipRange clip{props.getFloat("near_clip", 0.01f), props.getFloat("far_clip", 10000.0f)};
+  if (!(clip.nearClip >= 0.0f))
+    throw props.error("near_clip", fmt::format("near_clip must be at least 0, not {:g}", clip.nearClip));
+  if (!(clip.farClip > clip.nearClip))
+    throw props.error("far_clip",
+                      fmt::format("far_clip must exceed near_clip ({:g}), not {:g}", clip.nearClip, clip.farClip));
+  return clip;
 }
 
 }  // namespace columba
