@@ -125,3 +125,23 @@ TEST(AdaptiveSampling, TargetErrorSpendsLessAndRefusesPieces) {
   few.samplesPerPixel = 2;
   EXPECT_THROW(renderSceneString(horizonScene(2), few), std::runtime_error);
 }
+
+TEST(AdaptiveSampling, ACroppedFilmIsPlannedWithinTheCrop) {
+  // The same scene with hdrfilm's crop window: the plan covers the crop's pixels only, and every
+  // pixel of the crop is rendered (the sky and the ground both show).
+  std::string scene = horizonScene(8);
+  const std::string film = R"(<rfilter type="box"/></film>)";
+  scene.replace(scene.find(film), film.size(),
+                R"(<integer name="crop_offset_x" value="5"/><integer name="crop_offset_y" value="9"/>
+      <integer name="crop_width" value="20"/><integer name="crop_height" value="16"/><rfilter type="box"/></film>)");
+  RenderSettings settings;
+  settings.samplesPerPixel = 8;
+  settings.adaptive = true;
+  RenderStats stats;
+  Image image = renderSceneString(scene, settings, &stats);
+  ASSERT_EQ(image.width, 20);
+  ASSERT_EQ(image.height, 16);
+  EXPECT_NEAR(double(stats.samples), 8.0 * 20 * 16, 0.5 * 20 * 16);
+  EXPECT_GT(meanColour(image, 0, 0, 20, 2)[1], 0.9f);    // sky
+  EXPECT_LT(meanColour(image, 0, 14, 20, 16)[1], 0.7f);  // ground
+}

@@ -195,7 +195,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     std::vector<double> binSums(pixelCount * size_t(bins.count), 0.0);
     std::vector<PilotPixel> pilotPixels(pixelCount);
     auto addRange = [&](Sampler& sampler, int x, int y, int begin, int end, const auto& stop) {
-      size_t i = size_t(y) * width + x;
+      size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
       uint64_t pixelRays = 0, pixelNonFinite = 0;
       bool finished = pixels.add(sampler, x, y, begin, end, sums[i], binSums.data() + i * bins.count, pixelRays,
                                  pixelNonFinite, stop);
@@ -205,7 +205,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     };
     forEachTile(window, settings, sensor.sampler(), 0, 2 * tileCount, cancelled,
                 [&](Sampler& sampler, int x, int y, const auto& stop) {
-                  size_t i = size_t(y) * width + x;
+                  size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
                   pilotPixels[i].seen = pixels.sees(x, y);
                   return !pilotPixels[i].seen || addRange(sampler, x, y, 0, pilot, stop);
                 });
@@ -218,7 +218,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
       plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
       forEachTile(window, settings, sensor.sampler(), tileCount, 2 * tileCount, cancelled,
                   [&](Sampler& sampler, int x, int y, const auto& stop) {
-                    size_t i = size_t(y) * width + x;
+                    size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
                     return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);
                   });
       stats.pilotSamples = pilot;
