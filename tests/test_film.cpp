@@ -2,6 +2,8 @@
 // the full render; crops that do not fit are errors naming the file, line and value.
 #include <gtest/gtest.h>
 
+#include "error_test_support.h"
+
 #include <cstring>
 #include <string>
 
@@ -40,12 +42,6 @@ std::string loadError(const std::string& xml) {
     return e.what();
   }
   return "";
-}
-
-void expectContains(const std::string& message, std::initializer_list<const char*> parts) {
-  EXPECT_FALSE(message.empty()) << "no InputError was thrown";
-  for (const char* part : parts)
-    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "error_test_support.h"
+
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +12,7 @@
 #include "temp_dir_test.h"
 
 using namespace columba;
+using columba::testing::expectContains;
 
 namespace {
 
@@ -173,12 +176,6 @@ std::string errorOf(const std::string& xml, const Defines& defines = {}) {
     return e.what();
   }
   return "";
-}
-
-void expectContains(const std::string& message, std::initializer_list<const char*> parts) {
-  EXPECT_FALSE(message.empty()) << "no InputError was thrown";
-  for (const char* part : parts)
-    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
 }
 
 std::string probe(const std::string& body) {
