@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include "optics/conductor_fresnel.h"
 #include "optics/ior_table.h"
 
 namespace columba {
@@ -50,6 +51,29 @@ MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool 
   if (!(alphaU >= 0.0f && alphaV >= 0.0f))
     throw props.error(props.has("alpha") ? "alpha" : "alpha_u", "roughness must not be negative");
   return MicrofacetDistribution(type, alphaU, alphaV);
+}
+
+std::optional<ConductorIndex> readConductorIndex(const Properties& props) {
+  std::string material = props.getString("material", "none");
+  if (props.has("eta") || props.has("k")) {
+    if (material != "none") throw props.error("material", "give either a material or eta and k, not both");
+    return ConductorIndex{props.getSpectrum("eta", 0.0f, SpectrumUse::Unbounded),
+                          props.getSpectrum("k", 1.0f, SpectrumUse::Unbounded)};
+  }
+  if (material == "none") return std::nullopt;
+  std::optional<ConductorIndex> measured = conductorIndex(material);
+  if (!measured)
+    throw props.error("material", "no measured data for conductor '" + material + "' (known: none, " +
+                                      conductorNames() + "); give its eta and k spectra");
+  return measured;
+}
+
+Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const SpectralDistribution& specular,
+                              float cosI, const Wavelengths& wl) {
+  Spectrum r = specular.sample(wl);
+  if (ior)
+    for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, ior->eta.eval(wl[i]), ior->k.eval(wl[i]));
+  return r;
 }
 
 }  // namespace columba

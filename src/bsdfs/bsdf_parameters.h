@@ -1,8 +1,11 @@
 #pragma once
 // Scene parameters shared by several BSDF plug-ins, read with Mitsuba's names and conventions.
+#include <optional>
 #include <string>
 #include "bsdfs/microfacet.h"
 #include "core/properties.h"
+#include "core/spectrum.h"
+#include "optics/conductor_materials.h"
 
 namespace columba {
 
@@ -15,5 +18,14 @@ float readIOR(const Properties& props, const std::string& name, const std::strin
 // sampling strategy, which changes noise, not the expected image. Without `allowAnisotropic`,
 // alpha_u / alpha_v are an error.
 MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic);
+
+// A conductor's complex index: `material` (a measured metal, or "none", the default: a perfect
+// mirror, returned as nullopt) or the spectra `eta` (default 0) and `k` (default 1); not both.
+std::optional<ConductorIndex> readConductorIndex(const Properties& props);
+
+// specular_reflectance times the conductor's Fresnel reflectance at incidence cosine cosI (1 without
+// an index), at the path's wavelengths.
+Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const SpectralDistribution& specular,
+                              float cosI, const Wavelengths& wl);
 
 }  // namespace columba

@@ -5,16 +5,12 @@
 
 namespace columba {
 
-RoughConductorBSDF::RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ComplexIOR> ior,
+RoughConductorBSDF::RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ConductorIndex> ior,
                                        SpectralDistribution specularReflectance)
     : distribution_(distribution), ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
 
 Spectrum RoughConductorBSDF::reflectance(float cosI, const Wavelengths& wl) const {
-  Spectrum r = specularReflectance_.sample(wl);
-  if (ior_)
-    for (int i = 0; i < kSpectrumSamples; ++i)
-      r[i] *= fresnelConductor(cosI, ior_->eta.eval(wl[i]), ior_->k.eval(wl[i]));
-  return r;
+  return conductorReflectance(ior_, specularReflectance_, cosI, wl);
 }
 
 Spectrum RoughConductorBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -48,15 +44,7 @@ std::optional<BSDFSample> RoughConductorBSDF::sample(const BSDFContext&, const V
 
 std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props) {
   MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/true);
-  std::string material = props.getString("material", "none");
-  std::optional<RoughConductorBSDF::ComplexIOR> ior;
-  if (props.has("eta") || props.has("k")) {
-    if (material != "none") throw props.error("material", "give either a material or eta and k, not both");
-    ior = RoughConductorBSDF::ComplexIOR{props.getSpectrum("eta", 0.0f, SpectrumUse::Unbounded),
-                                         props.getSpectrum("k", 1.0f, SpectrumUse::Unbounded)};
-  } else if (material != "none") {
-    throw props.error("material", "no tabulated data for conductor '" + material + "': give its eta and k spectra");
-  }
+  std::optional<ConductorIndex> ior = readConductorIndex(props);
   return std::make_shared<RoughConductorBSDF>(
       distribution, std::move(ior), props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
 }

@@ -6,17 +6,15 @@
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
 #include "core/properties.h"
+#include "optics/conductor_materials.h"
 
 namespace columba {
 
 class RoughConductorBSDF : public BSDF {
  public:
-  // Complex index of refraction of the metal relative to the outside.
-  struct ComplexIOR {
-    SpectralDistribution eta, k;
-  };
-  // Without `ior` every microfacet is a perfect mirror (Fresnel = 1).
-  RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ComplexIOR> ior,
+  // `ior`: the metal's complex index relative to the outside; without it every microfacet is a
+  // perfect mirror (Fresnel = 1).
+  RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ConductorIndex> ior,
                      SpectralDistribution specularReflectance);
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
@@ -28,13 +26,13 @@ class RoughConductorBSDF : public BSDF {
   Spectrum reflectance(float cosI, const Wavelengths& wl) const;
 
   MicrofacetDistribution distribution_;
-  std::optional<ComplexIOR> ior_;
+  std::optional<ConductorIndex> ior_;
   SpectralDistribution specularReflectance_;
 };
 
 // Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1) or alpha_u and alpha_v,
-// sample_visible; material ("none" = perfect mirror, the default) or eta (default 0) and k
-// (default 1) spectra; specular_reflectance (1). Named metals are not tabulated: give eta and k.
+// sample_visible; material ("none" = perfect mirror, the default, or a measured metal:
+// optics/conductor_materials.h) or eta (default 0) and k (default 1) spectra; specular_reflectance (1).
 std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props);
 
 }  // namespace columba

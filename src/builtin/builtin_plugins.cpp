@@ -2,6 +2,7 @@
 
 #include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/blend_bsdf.h"
+#include "bsdfs/conductor.h"
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
 #include "bsdfs/mask_bsdf.h"
@@ -72,6 +73,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "plastic", makePlasticBSDF);
     r.add("bsdf", "dielectric", makeDielectricBSDF);
     r.add("bsdf", "roughconductor", makeRoughConductorBSDF);
+    r.add("bsdf", "conductor", makeConductorBSDF);
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
     r.add("bsdf", "thindielectric", makeThinDielectricBSDF);
     r.add("bsdf", "roughdielectric", makeRoughDielectricBSDF);

@@ -1,0 +1,34 @@
+#pragma once
+// Smooth metal (Mitsuba's `conductor`): a perfect mirror weighted by the metal's Fresnel
+// reflectance at each wavelength. One-sided.
+#include <memory>
+#include <optional>
+#include "bsdfs/bsdf.h"
+#include "core/properties.h"
+#include "optics/conductor_materials.h"
+
+namespace columba {
+
+class ConductorBSDF : public BSDF {
+ public:
+  // Without `ior` the mirror reflects everything (Fresnel = 1).
+  ConductorBSDF(std::optional<ConductorIndex> ior, SpectralDistribution specularReflectance)
+      : ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
+  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
+    return Spectrum(0.0f);
+  }
+  float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
+  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
+                                   Vec2 u) const override;
+  bool isDeltaOnly() const override { return true; }
+
+ private:
+  std::optional<ConductorIndex> ior_;
+  SpectralDistribution specularReflectance_;
+};
+
+// Parameters: material ("none" = perfect mirror, the default, or a measured metal) or eta and k
+// spectra; specular_reflectance (1).
+std::shared_ptr<Object> makeConductorBSDF(const Properties& props);
+
+}  // namespace columba
