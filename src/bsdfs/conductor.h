@@ -3,24 +3,19 @@
 // reflectance at each wavelength. One-sided.
 #include <memory>
 #include <optional>
-#include "bsdfs/bsdf.h"
+#include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
 #include "optics/conductor_materials.h"
 
 namespace columba {
 
-class ConductorBSDF : public BSDF {
+class ConductorBSDF : public DeltaBSDF {
  public:
   // Without `ior` the mirror reflects everything (Fresnel = 1).
   ConductorBSDF(std::optional<ConductorIndex> ior, SpectralDistribution specularReflectance)
       : ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
-  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
-    return Spectrum(0.0f);
-  }
-  float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
-  bool isDeltaOnly() const override { return true; }
 
  private:
   std::optional<ConductorIndex> ior_;

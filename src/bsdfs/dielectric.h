@@ -2,27 +2,22 @@
 // Smooth interface between two dielectrics (Mitsuba's `dielectric`): delta reflection and
 // refraction, one of them chosen with the Fresnel reflectance as its probability.
 #include <memory>
-#include "bsdfs/bsdf.h"
+#include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
 
 namespace columba {
 
-class DielectricBSDF : public BSDF {
+class DielectricBSDF : public DeltaBSDF {
  public:
   // eta = interior / exterior index; the normal (local +z) points to the exterior.
   DielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
       : eta_(eta),
         specularReflectance_(std::move(specularReflectance)),
         specularTransmittance_(std::move(specularTransmittance)) {}
-  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
-    return Spectrum(0.0f);
-  }
-  float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
   // Refraction scales the weight by (n_wi / n_wo)^2: radiance is compressed into the smaller
   // solid angle on the denser side. Paths start at the camera, so this is the radiance form.
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
-  bool isDeltaOnly() const override { return true; }
   float eta() const { return eta_; }
 
  private:

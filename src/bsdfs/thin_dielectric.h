@@ -5,27 +5,22 @@
 // bouncing between the faces sums to R = r + t^2 r / (1 - r^2) = 2 r / (1 + r) and T = 1 - R.
 // The transmission is a pass-through, so shadow rays cross the sheet with weight T.
 #include <memory>
-#include "bsdfs/bsdf.h"
+#include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
 
 namespace columba {
 
-class ThinDielectricBSDF : public BSDF {
+class ThinDielectricBSDF : public DeltaBSDF {
  public:
   // eta = interior / exterior index.
   ThinDielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
       : eta_(eta),
         specularReflectance_(std::move(specularReflectance)),
         specularTransmittance_(std::move(specularTransmittance)) {}
-  Spectrum eval(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override {
-    return Spectrum(0.0f);
-  }
-  float pdf(const BSDFContext&, const Vec3&, const Vec3&, const Wavelengths&) const override { return 0.0f; }
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return true; }
-  bool isDeltaOnly() const override { return true; }
   // R for light meeting the sheet at incidence cosine `cosI` (either side).
   float sheetReflectance(float cosI) const;
 
