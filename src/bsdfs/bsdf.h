@@ -84,5 +84,7 @@ class BSDF : public Object {
 inline float cosTheta(const Vec3& w) { return w.z; }
 inline float absCosTheta(const Vec3& w) { return std::abs(w.z); }
 inline bool sameHemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0.0f; }
+// The mirror direction of w about the shading normal (a smooth surface's specular reflection).
+inline Vec3 mirrorDirection(const Vec3& w) { return Vec3(-w.x, -w.y, w.z); }
 
 }  // namespace columba

@@ -8,7 +8,7 @@ std::optional<BSDFSample> ConductorBSDF::sample(const BSDFContext&, const Vec3& 
                                                 Vec2) const {
   if (cosTheta(wi) <= 0.0f) return std::nullopt;
   BSDFSample s;
-  s.wo = Vec3(-wi.x, -wi.y, wi.z);
+  s.wo = mirrorDirection(wi);
   s.pdf = 1.0f;
   s.delta = true;
   s.weight = conductorReflectance(ior_, specularReflectance_, cosTheta(wi), wl);

@@ -16,7 +16,7 @@ std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext&, const Vec3&
   BSDFSample s;
   s.delta = true;
   if (uComponent < reflectance) {
-    s.wo = Vec3(-wi.x, -wi.y, wi.z);
+    s.wo = mirrorDirection(wi);
     s.pdf = reflectance;
     s.weight = specularReflectance_.sample(wl);
   } else {

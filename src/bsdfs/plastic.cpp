@@ -47,7 +47,7 @@ std::optional<BSDFSample> PlasticBSDF::sample(const BSDFContext& ctx, const Vec3
   float pSpecular = specularProbability(fresnelI);
   BSDFSample s;
   if (uComponent < pSpecular) {
-    s.wo = Vec3(-wi.x, -wi.y, wi.z);
+    s.wo = mirrorDirection(wi);
     s.pdf = pSpecular;
     s.delta = true;
     s.weight = specularReflectance_.sample(wl) * (fresnelI / pSpecular);

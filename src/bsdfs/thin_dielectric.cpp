@@ -17,7 +17,7 @@ std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext&, const V
   BSDFSample s;
   s.delta = true;
   if (uComponent < R) {
-    s.wo = Vec3(-wi.x, -wi.y, wi.z);
+    s.wo = mirrorDirection(wi);
     s.pdf = R;
     s.weight = specularReflectance_.sample(wl);
   } else {
