@@ -38,10 +38,11 @@ struct WavelengthBins {
 };
 
 // The camera ray of a sample of pixel (x, y): an offset drawn from the filter, then a point on
-// the lens, drawn only for sensors that have one, so pinhole sensors' samples stay as they were.
-std::optional<Ray> cameraRay(const Sensor& sensor, int x, int y, Sampler& sampler) {
+// the lens, drawn only for sensors that have one (`lens`: sensor.needsApertureSample(), asked
+// once per render), so pinhole sensors' samples stay as they were.
+std::optional<Ray> cameraRay(const Sensor& sensor, bool lens, int x, int y, Sampler& sampler) {
   const Vec2 offset = sensor.film().filter().sample(sampler.get2D());
-  const Vec2 aperture = sensor.needsApertureSample() ? sampler.get2D() : Vec2(0.5f, 0.5f);
+  const Vec2 aperture = lens ? sampler.get2D() : Vec2(0.5f, 0.5f);
   return sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y), aperture);
 }
 
@@ -60,6 +61,7 @@ struct PixelSampler {
   const WavelengthBins& bins;
   uint64_t seed;
   float reach;  // of a camera sample from its pixel's centre
+  bool lens;    // the sensor draws an aperture sample
 
   bool sees(int x, int y) const {
     return sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
@@ -74,7 +76,7 @@ struct PixelSampler {
       ++sums.taken;
       sampler.startPixelSample(x, y, s, seed);
       Wavelengths wl = Wavelengths::sampleVisible(sampler.get1D());
-      std::optional<Ray> ray = cameraRay(sensor, x, y, sampler);
+      std::optional<Ray> ray = cameraRay(sensor, lens, x, y, sampler);
       if (!ray) continue;
       Spectrum L = integrator.radiance(scene, *ray, sampler, wl, rays);
       if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
@@ -94,16 +96,18 @@ struct PixelSampler {
   }
 };
 
-// The tiles of a window, rendered in parallel; `pixel(sampler, x, y, stop)` renders one pixel
-// (film coordinates) and returns false once a stop was requested.
+// The tiles of a window, rendered in parallel; `pixel(sampler, scratch, x, y, stop)` renders one
+// pixel (film coordinates) and returns false once a stop was requested. `scratch` holds
+// `scratchSize` doubles for the pixel to use, allocated once per group of tiles.
 template <typename RenderPixel>
-void forEachTile(const PixelRect& window, const RenderSettings& settings, const Sampler& prototype, int progressBase,
-                 int progressTotal, std::atomic<bool>& cancelled, const RenderPixel& pixel) {
+void forEachTile(const PixelRect& window, const RenderSettings& settings, const Sampler& prototype, size_t scratchSize,
+                 int progressBase, int progressTotal, std::atomic<bool>& cancelled, const RenderPixel& pixel) {
   const int width = window.width(), height = window.height();
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
   std::atomic<int> tilesDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = prototype.clone();
+    std::vector<double> scratch(scratchSize);
     // Checked before every sample, so that a stop request is answered within one sample at any
     // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
     auto stopRequested = [&] {
@@ -116,7 +120,7 @@ void forEachTile(const PixelRect& window, const RenderSettings& settings, const 
       const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
       for (int y = window.y0 + y0; y < window.y0 + std::min(y0 + kTileSize, height); ++y)
         for (int x = window.x0 + x0; x < window.x0 + std::min(x0 + kTileSize, width); ++x)
-          if (!pixel(*sampler, x, y, stopRequested)) return;
+          if (!pixel(*sampler, scratch, x, y, stopRequested)) return;
       int done = ++tilesDone;
       if (settings.onTileDone) settings.onTileDone(progressBase + done, progressTotal);
     }
@@ -157,7 +161,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   std::unique_ptr<tbb::global_control> threadLimit;
   if (settings.threads > 0)
     threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
-  const PixelSampler pixels{scene, sensor, scene.integrator(), bins, settings.seed, film.filter().radius()};
+  const PixelSampler pixels{
+      scene, sensor, scene.integrator(), bins, settings.seed, film.filter().radius(), sensor.needsApertureSample()};
   const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
   std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<bool> cancelled{false};
@@ -173,10 +178,10 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   if (!settings.adaptive) {
     // Every pixel gets the samples [sampleBegin, sampleEnd).
     const int count = sampleEnd - sampleBegin;
-    forEachTile(window, settings, sensor.sampler(), 0, tileCount, cancelled,
-                [&](Sampler& sampler, int x, int y, const auto& stop) {
+    forEachTile(window, settings, sensor.sampler(), size_t(bins.count), 0, tileCount, cancelled,
+                [&](Sampler& sampler, std::vector<double>& binSums, int x, int y, const auto& stop) {
                   PixelSums sums;
-                  std::vector<double> binSums(size_t(bins.count), 0.0);
+                  std::fill(binSums.begin(), binSums.end(), 0.0);
                   uint64_t pixelRays = 0, pixelNonFinite = 0;
                   bool finished = !pixels.sees(x, y) || pixels.add(sampler, x, y, sampleBegin, sampleEnd, sums,
                                                                    binSums.data(), pixelRays, pixelNonFinite, stop);
@@ -203,8 +208,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
       nonFinite += pixelNonFinite;
       return finished;
     };
-    forEachTile(window, settings, sensor.sampler(), 0, 2 * tileCount, cancelled,
-                [&](Sampler& sampler, int x, int y, const auto& stop) {
+    forEachTile(window, settings, sensor.sampler(), 0, 0, 2 * tileCount, cancelled,
+                [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                   size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
                   pilotPixels[i].seen = pixels.sees(x, y);
                   return !pilotPixels[i].seen || addRange(sampler, x, y, 0, pilot, stop);
@@ -216,8 +221,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         pilotPixels[i].sumSquares = sums[i].luminanceSquares;
       }
       plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
-      forEachTile(window, settings, sensor.sampler(), tileCount, 2 * tileCount, cancelled,
-                  [&](Sampler& sampler, int x, int y, const auto& stop) {
+      forEachTile(window, settings, sensor.sampler(), 0, tileCount, 2 * tileCount, cancelled,
+                  [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                     size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
                     return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);
                   });
@@ -256,6 +261,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
   const int stride = std::max(1, int(std::ceil(std::sqrt(double(width) * double(height) / 16384.0))));
   const int sampledRows = (height + stride - 1) / stride;
   const float reach = film.filter().radius();
+  const bool lens = sensor.needsApertureSample();
   std::vector<uint64_t> blockCosts(size_t(sampledRows), 0);
   std::unique_ptr<tbb::global_control> threadLimit;
   if (settings.threads > 0)
@@ -273,7 +279,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
         Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
-        if (std::optional<Ray> ray = cameraRay(sensor, x, y, *sampler))
+        if (std::optional<Ray> ray = cameraRay(sensor, lens, x, y, *sampler))
           integrator.radiance(scene, *ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more
       }
