@@ -160,5 +160,4 @@ TEST(Emitter, SpotFallsOffLinearlyInAngleAsMitsubas) {
   load("<float name=\"cutoff_angle\" value=\"30\"/>");                          // beam width 22.5 by default
   EXPECT_THROW(load("<float name=\"beam_width\" value=\"25\"/>"), InputError);  // wider than the 20-degree cutoff
   EXPECT_THROW(load("<float name=\"cutoff_angle\" value=\"0\"/>"), InputError);
-  EXPECT_THROW(load("<texture name=\"texture\" type=\"bitmap\"/>"), InputError);
 }

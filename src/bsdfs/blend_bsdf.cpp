@@ -1,20 +1,27 @@
 #include "bsdfs/blend_bsdf.h"
 
+#include <algorithm>
+
 namespace columba {
 
+float BlendBSDF::weightAt(const BSDFContext& ctx) const { return std::clamp(weight_.eval(ctx.uv), 0.0f, 1.0f); }
+
 Spectrum BlendBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return (1.0f - weight_) * first_->eval(ctx, wi, wo, wl) + weight_ * second_->eval(ctx, wi, wo, wl);
+  const float weight = weightAt(ctx);
+  return (1.0f - weight) * first_->eval(ctx, wi, wo, wl) + weight * second_->eval(ctx, wi, wo, wl);
 }
 
 float BlendBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return (1.0f - weight_) * first_->pdf(ctx, wi, wo, wl) + weight_ * second_->pdf(ctx, wi, wo, wl);
+  const float weight = weightAt(ctx);
+  return (1.0f - weight) * first_->pdf(ctx, wi, wo, wl) + weight * second_->pdf(ctx, wi, wo, wl);
 }
 
 std::optional<BSDFSample> BlendBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                             float uComponent, Vec2 u) const {
-  bool second = uComponent >= 1.0f - weight_;
-  float choice = second ? weight_ : 1.0f - weight_;
-  float remaining = second ? (uComponent - (1.0f - weight_)) / weight_ : uComponent / (1.0f - weight_);
+  const float weight = weightAt(ctx);
+  bool second = uComponent >= 1.0f - weight;
+  float choice = second ? weight : 1.0f - weight;
+  float remaining = second ? (uComponent - (1.0f - weight)) / weight : uComponent / (1.0f - weight);
   std::optional<BSDFSample> s = (second ? second_ : first_)->sample(ctx, wi, wl, std::min(remaining, 1.0f), u);
   if (!s) return s;
   if (s->delta) {
@@ -28,16 +35,17 @@ std::optional<BSDFSample> BlendBSDF::sample(const BSDFContext& ctx, const Vec3& 
 }
 
 Spectrum BlendBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
-  return (1.0f - weight_) * first_->passThrough(ctx, wi, wl) + weight_ * second_->passThrough(ctx, wi, wl);
+  const float weight = weightAt(ctx);
+  return (1.0f - weight) * first_->passThrough(ctx, wi, wl) + weight * second_->passThrough(ctx, wi, wl);
 }
 
 std::shared_ptr<Object> makeBlendBSDF(const Properties& props) {
   auto nested = props.children<BSDF>();
   if (nested.size() != 2)
     throw InputError(props.location, "'blendbsdf' takes two nested BSDFs, not " + std::to_string(nested.size()));
-  float weight = props.getFloat("weight", 0.5f);
-  if (!(weight >= 0.0f && weight <= 1.0f))
-    throw props.error("weight", "must lie in [0, 1], not " + std::to_string(weight));
+  FloatParameter weight = readFloatParameter(props, "weight", 0.5f);
+  if (!weight.isTextured() && !(weight.mean() >= 0.0f && weight.mean() <= 1.0f))
+    throw props.error("weight", "must lie in [0, 1], not " + std::to_string(weight.mean()));
   return std::make_shared<BlendBSDF>(nested[0], nested[1], weight);
 }
 

@@ -5,13 +5,14 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class BlendBSDF : public BSDF {
  public:
-  BlendBSDF(std::shared_ptr<const BSDF> first, std::shared_ptr<const BSDF> second, float weight)
-      : first_(std::move(first)), second_(std::move(second)), weight_(weight) {}
+  BlendBSDF(std::shared_ptr<const BSDF> first, std::shared_ptr<const BSDF> second, FloatParameter weight)
+      : first_(std::move(first)), second_(std::move(second)), weight_(std::move(weight)) {}
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -21,12 +22,14 @@ class BlendBSDF : public BSDF {
   bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
 
  private:
+  // The second BSDF's weight at the shading point; a texture's value is clamped to [0, 1].
+  float weightAt(const BSDFContext& ctx) const;
+
   std::shared_ptr<const BSDF> first_, second_;
-  float weight_;  // of the second
+  FloatParameter weight_;  // of the second
 };
 
-// Parameters: weight (a <float> in [0, 1], default 0.5; textures are not supported) and two
-// nested BSDFs.
+// Parameters: weight (a <float> in [0, 1] or a texture, default 0.5) and two nested BSDFs.
 std::shared_ptr<Object> makeBlendBSDF(const Properties& props);
 
 }  // namespace columba

@@ -13,9 +13,11 @@
 namespace columba {
 
 // Per-call inputs besides the directions: the shading point's attributes, the values of BSDF
-// parameters its shape gives per point (none by default).
+// parameters its shape gives per point (none by default), and its surface coordinates, where
+// textured parameters are looked up.
 struct BSDFContext {
   const SurfaceAttributes* attributes = nullptr;
+  Vec2 uv;
 
   std::optional<float> attribute(SurfaceAttributeKey key) const {
     return attributes ? attributes->find(key) : std::nullopt;

@@ -22,7 +22,7 @@ float readIOR(const Properties& props, const std::string& name, const std::strin
   return value;
 }
 
-MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic) {
+MicrofacetRoughness readMicrofacetRoughness(const Properties& props, bool allowAnisotropic) {
   std::string distribution = props.getString("distribution", "beckmann");
   std::transform(distribution.begin(), distribution.end(), distribution.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
@@ -37,20 +37,27 @@ MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool 
 
   props.getBool("sample_visible", true);
 
-  float alphaU, alphaV;
-  if (props.has("alpha_u") || props.has("alpha_v")) {
-    const std::string given = props.has("alpha_u") ? "alpha_u" : "alpha_v";
-    if (!allowAnisotropic) throw props.error(given, "this BSDF supports isotropic roughness only (use 'alpha')");
-    if (props.has("alpha")) throw props.error(given, "give either 'alpha' or 'alpha_u' and 'alpha_v', not both");
-    if (!props.has("alpha_u") || !props.has("alpha_v")) throw props.error(given, "'alpha_u' and 'alpha_v' go together");
-    alphaU = props.getFloat("alpha_u");
-    alphaV = props.getFloat("alpha_v");
-  } else {
-    alphaU = alphaV = props.getFloat("alpha", 0.1f);
+  // A value or a texture.
+  auto given = [&](const std::string& name) { return props.has(name) || props.namedChild<Texture>(name) != nullptr; };
+  const bool anisotropic = given("alpha_u") || given("alpha_v");
+  if (anisotropic) {
+    const std::string first = given("alpha_u") ? "alpha_u" : "alpha_v";
+    if (!allowAnisotropic) throw props.error(first, "this BSDF supports isotropic roughness only (use 'alpha')");
+    if (given("alpha")) throw props.error(first, "give either 'alpha' or 'alpha_u' and 'alpha_v', not both");
+    if (!given("alpha_u") || !given("alpha_v")) throw props.error(first, "'alpha_u' and 'alpha_v' go together");
   }
-  if (!(alphaU >= 0.0f && alphaV >= 0.0f))
-    throw props.error(props.has("alpha") ? "alpha" : "alpha_u", "roughness must not be negative");
-  return MicrofacetDistribution(type, alphaU, alphaV);
+  FloatParameter alphaU = readFloatParameter(props, anisotropic ? "alpha_u" : "alpha", 0.1f);
+  FloatParameter alphaV = anisotropic ? readFloatParameter(props, "alpha_v", 0.1f) : alphaU;
+  for (const FloatParameter& alpha : {alphaU, alphaV})
+    if (!alpha.isTextured() && !(alpha.mean() >= 0.0f))
+      throw props.error(anisotropic ? "alpha_u" : "alpha", "roughness must not be negative");
+  return MicrofacetRoughness(type, alphaU, alphaV);
+}
+
+MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic) {
+  MicrofacetRoughness roughness = readMicrofacetRoughness(props, allowAnisotropic);
+  if (roughness.isTextured()) throw props.error("alpha", "this BSDF's roughness cannot be a texture, as in Mitsuba");
+  return roughness.at(Vec2());
 }
 
 std::optional<ConductorIndex> readConductorIndex(const Properties& props) {
@@ -68,9 +75,9 @@ std::optional<ConductorIndex> readConductorIndex(const Properties& props) {
   return measured;
 }
 
-Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const SpectralDistribution& specular,
-                              float cosI, const Wavelengths& wl) {
-  Spectrum r = specular.sample(wl);
+Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const Spectrum& specular, float cosI,
+                              const Wavelengths& wl) {
+  Spectrum r = specular;
   if (ior)
     for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, ior->eta.eval(wl[i]), ior->k.eval(wl[i]));
   return r;

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 #include "bsdfs/microfacet.h"
+#include "bsdfs/microfacet_roughness.h"
 #include "core/properties.h"
 #include "core/spectrum.h"
 #include "optics/conductor_materials.h"
@@ -16,16 +17,18 @@ float readIOR(const Properties& props, const std::string& name, const std::strin
 // `distribution` ("beckmann", the default, or "ggx"), `alpha` (default 0.1) or both `alpha_u`
 // and `alpha_v`, and `sample_visible`. Visible normals are always sampled: the flag only picks a
 // sampling strategy, which changes noise, not the expected image. Without `allowAnisotropic`,
-// alpha_u / alpha_v are an error.
+// alpha_u / alpha_v are an error. Each roughness may be a value or a texture.
+MicrofacetRoughness readMicrofacetRoughness(const Properties& props, bool allowAnisotropic);
+// The same for a BSDF whose roughness must be constant (InputError for a texture).
 MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic);
 
 // A conductor's complex index: `material` (a measured metal, or "none", the default: a perfect
 // mirror, returned as nullopt) or the spectra `eta` (default 0) and `k` (default 1); not both.
 std::optional<ConductorIndex> readConductorIndex(const Properties& props);
 
-// specular_reflectance times the conductor's Fresnel reflectance at incidence cosine cosI (1 without
-// an index), at the path's wavelengths.
-Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const SpectralDistribution& specular,
-                              float cosI, const Wavelengths& wl);
+// `specular` (specular_reflectance at the path's wavelengths) times the conductor's Fresnel
+// reflectance at incidence cosine cosI (1 without an index).
+Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const Spectrum& specular, float cosI,
+                              const Wavelengths& wl);
 
 }  // namespace columba

@@ -4,21 +4,21 @@
 
 namespace columba {
 
-std::optional<BSDFSample> ConductorBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl, float,
+std::optional<BSDFSample> ConductorBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float,
                                                 Vec2) const {
   if (cosTheta(wi) <= 0.0f) return std::nullopt;
   BSDFSample s;
   s.wo = mirrorDirection(wi);
   s.pdf = 1.0f;
   s.delta = true;
-  s.weight = conductorReflectance(ior_, specularReflectance_, cosTheta(wi), wl);
+  s.weight = conductorReflectance(ior_, specularReflectance_.eval(ctx.uv, wl), cosTheta(wi), wl);
   return s;
 }
 
 std::shared_ptr<Object> makeConductorBSDF(const Properties& props) {
   std::optional<ConductorIndex> ior = readConductorIndex(props);
-  return std::make_shared<ConductorBSDF>(std::move(ior),
-                                         props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
+  return std::make_shared<ConductorBSDF>(
+      std::move(ior), readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

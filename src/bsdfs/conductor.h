@@ -6,20 +6,21 @@
 #include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
 #include "optics/conductor_materials.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class ConductorBSDF : public DeltaBSDF {
  public:
   // Without `ior` the mirror reflects everything (Fresnel = 1).
-  ConductorBSDF(std::optional<ConductorIndex> ior, SpectralDistribution specularReflectance)
+  ConductorBSDF(std::optional<ConductorIndex> ior, SpectrumParameter specularReflectance)
       : ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
 
  private:
   std::optional<ConductorIndex> ior_;
-  SpectralDistribution specularReflectance_;
+  SpectrumParameter specularReflectance_;
 };
 
 // Parameters: material ("none" = perfect mirror, the default, or a measured metal) or eta and k

@@ -5,7 +5,7 @@
 
 namespace columba {
 
-std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl,
+std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                  float uComponent, Vec2) const {
   const float cosI = cosTheta(wi);
   // Relative index across the interface as seen from wi's side.
@@ -18,11 +18,11 @@ std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext&, const Vec3&
   if (uComponent < reflectance) {
     s.wo = mirrorDirection(wi);
     s.pdf = reflectance;
-    s.weight = specularReflectance_.sample(wl);
+    s.weight = specularReflectance_.eval(ctx.uv, wl);
   } else {
     s.wo = Vec3(-wi.x / etaTI, -wi.y / etaTI, std::copysign(a.cosT, -cosI));
     s.pdf = 1.0f - reflectance;
-    s.weight = specularTransmittance_.sample(wl) / (etaTI * etaTI);
+    s.weight = specularTransmittance_.eval(ctx.uv, wl) / (etaTI * etaTI);
   }
   return s;
 }
@@ -30,9 +30,9 @@ std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext&, const Vec3&
 std::shared_ptr<Object> makeDielectricBSDF(const Properties& props) {
   float intIOR = readIOR(props, "int_ior", "bk7");
   float extIOR = readIOR(props, "ext_ior", "air");
-  return std::make_shared<DielectricBSDF>(intIOR / extIOR,
-                                          props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
-                                          props.getSpectrum("specular_transmittance", 1.0f, SpectrumUse::Reflectance));
+  return std::make_shared<DielectricBSDF>(
+      intIOR / extIOR, readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_transmittance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

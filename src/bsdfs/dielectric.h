@@ -4,13 +4,14 @@
 #include <memory>
 #include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class DielectricBSDF : public DeltaBSDF {
  public:
   // eta = interior / exterior index; the normal (local +z) points to the exterior.
-  DielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
+  DielectricBSDF(float eta, SpectrumParameter specularReflectance, SpectrumParameter specularTransmittance)
       : eta_(eta),
         specularReflectance_(std::move(specularReflectance)),
         specularTransmittance_(std::move(specularTransmittance)) {}
@@ -22,7 +23,7 @@ class DielectricBSDF : public DeltaBSDF {
 
  private:
   float eta_;
-  SpectralDistribution specularReflectance_, specularTransmittance_;
+  SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
 // Parameters: int_ior ("bk7"), ext_ior ("air") as numbers or names; specular_reflectance and

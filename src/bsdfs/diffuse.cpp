@@ -4,29 +4,29 @@
 
 namespace columba {
 
-Spectrum DiffuseBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+Spectrum DiffuseBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
-  return reflectance_.sample(wl) * (kInvPi * cosTheta(wo));
+  return reflectance_.eval(ctx.uv, wl) * (kInvPi * cosTheta(wo));
 }
 
-float DiffuseBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+float DiffuseBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   if (cosTheta(wi) <= 0.0f) return 0.0f;
   return cosineHemispherePdf(cosTheta(wo));
 }
 
-std::optional<BSDFSample> DiffuseBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl, float,
+std::optional<BSDFSample> DiffuseBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float,
                                               Vec2 u) const {
   if (cosTheta(wi) <= 0.0f) return std::nullopt;
   BSDFSample s;
   s.wo = sampleCosineHemisphere(u);
   s.pdf = cosineHemispherePdf(cosTheta(s.wo));
   if (s.pdf <= 0.0f) return std::nullopt;
-  s.weight = reflectance_.sample(wl);
+  s.weight = reflectance_.eval(ctx.uv, wl);
   return s;
 }
 
 std::shared_ptr<Object> makeDiffuseBSDF(const Properties& props) {
-  return std::make_shared<DiffuseBSDF>(props.getSpectrum("reflectance", 0.5f, SpectrumUse::Reflectance));
+  return std::make_shared<DiffuseBSDF>(readSpectrumParameter(props, "reflectance", 0.5f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

@@ -3,19 +3,20 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class DiffuseBSDF : public BSDF {
  public:
-  explicit DiffuseBSDF(SpectralDistribution reflectance) : reflectance_(std::move(reflectance)) {}
+  explicit DiffuseBSDF(SpectrumParameter reflectance) : reflectance_(std::move(reflectance)) {}
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
 
  private:
-  SpectralDistribution reflectance_;
+  SpectrumParameter reflectance_;
 };
 
 // Parameters: reflectance (default 0.5).

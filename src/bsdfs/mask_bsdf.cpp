@@ -1,18 +1,22 @@
 #include "bsdfs/mask_bsdf.h"
 
+#include <algorithm>
+
 namespace columba {
 
+float MaskBSDF::opacityAt(const BSDFContext& ctx) const { return std::clamp(opacity_.eval(ctx.uv), 0.0f, 1.0f); }
+
 Spectrum MaskBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return opacity_ * nested_->eval(ctx, wi, wo, wl);
+  return opacityAt(ctx) * nested_->eval(ctx, wi, wo, wl);
 }
 
 float MaskBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return opacity_ * nested_->pdf(ctx, wi, wo, wl);
+  return opacityAt(ctx) * nested_->pdf(ctx, wi, wo, wl);
 }
 
 std::optional<BSDFSample> MaskBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                            float uComponent, Vec2 u) const {
-  float transparency = 1.0f - opacity_;
+  const float opacity = opacityAt(ctx), transparency = 1.0f - opacity;
   if (uComponent < transparency) {
     BSDFSample s;
     s.wo = -wi;
@@ -22,14 +26,15 @@ std::optional<BSDFSample> MaskBSDF::sample(const BSDFContext& ctx, const Vec3& w
     return s;
   }
   // The nested BSDF with what uComponent has left; f and pdf both scale by the opacity.
-  std::optional<BSDFSample> s = nested_->sample(ctx, wi, wl, (uComponent - transparency) / opacity_, u);
-  if (s) s->pdf *= opacity_;
+  std::optional<BSDFSample> s = nested_->sample(ctx, wi, wl, (uComponent - transparency) / opacity, u);
+  if (s) s->pdf *= opacity;
   return s;
 }
 
 Spectrum MaskBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
-  Spectrum through(1.0f - opacity_);
-  if (nested_->hasPassThrough()) through += opacity_ * nested_->passThrough(ctx, wi, wl);
+  const float opacity = opacityAt(ctx);
+  Spectrum through(1.0f - opacity);
+  if (nested_->hasPassThrough()) through += opacity * nested_->passThrough(ctx, wi, wl);
   return through;
 }
 
@@ -37,9 +42,9 @@ std::shared_ptr<Object> makeMaskBSDF(const Properties& props) {
   auto nested = props.children<BSDF>();
   if (nested.size() != 1)
     throw InputError(props.location, "'mask' takes one nested BSDF, not " + std::to_string(nested.size()));
-  float opacity = props.getFloat("opacity", 0.5f);
-  if (!(opacity >= 0.0f && opacity <= 1.0f))
-    throw props.error("opacity", "must lie in [0, 1], not " + std::to_string(opacity));
+  FloatParameter opacity = readFloatParameter(props, "opacity", 0.5f);
+  if (!opacity.isTextured() && !(opacity.mean() >= 0.0f && opacity.mean() <= 1.0f))
+    throw props.error("opacity", "must lie in [0, 1], not " + std::to_string(opacity.mean()));
   return std::make_shared<MaskBSDF>(nested.front(), opacity);
 }
 

@@ -5,12 +5,14 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class MaskBSDF : public BSDF {
  public:
-  MaskBSDF(std::shared_ptr<const BSDF> nested, float opacity) : nested_(std::move(nested)), opacity_(opacity) {}
+  MaskBSDF(std::shared_ptr<const BSDF> nested, FloatParameter opacity)
+      : nested_(std::move(nested)), opacity_(std::move(opacity)) {}
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -20,12 +22,14 @@ class MaskBSDF : public BSDF {
   bool isDeltaOnly() const override { return nested_->isDeltaOnly(); }
 
  private:
+  // The opacity at the shading point; a texture's value is clamped to [0, 1].
+  float opacityAt(const BSDFContext& ctx) const;
+
   std::shared_ptr<const BSDF> nested_;
-  float opacity_;
+  FloatParameter opacity_;
 };
 
-// Parameters: opacity (a <float> in [0, 1], default 0.5; textures are not supported) and one
-// nested BSDF.
+// Parameters: opacity (a <float> in [0, 1] or a texture, default 0.5) and one nested BSDF.
 std::shared_ptr<Object> makeMaskBSDF(const Properties& props);
 
 }  // namespace columba

@@ -7,7 +7,7 @@
 
 namespace columba {
 
-PlasticBSDF::PlasticBSDF(float eta, SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
+PlasticBSDF::PlasticBSDF(float eta, SpectrumParameter diffuseReflectance, SpectrumParameter specularReflectance,
                          bool nonlinear)
     : eta_(eta),
       diffuseReflectance_(std::move(diffuseReflectance)),
@@ -24,9 +24,9 @@ float PlasticBSDF::specularProbability(float fresnelI) const {
   return specular + diffuse > 0.0f ? specular / (specular + diffuse) : 0.0f;
 }
 
-Spectrum PlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+Spectrum PlasticBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
-  Spectrum kd = diffuseReflectance_.sample(wl);
+  Spectrum kd = diffuseReflectance_.eval(ctx.uv, wl);
   Spectrum base =
       kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   // 1/eta^2: radiance leaving the coat spreads into the larger solid angle outside.
@@ -34,7 +34,7 @@ Spectrum PlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, c
   return base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
 }
 
-float PlasticBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+float PlasticBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return 0.0f;
   float pSpecular = specularProbability(fresnelDielectric(cosTheta(wi), eta_));
   return (1.0f - pSpecular) * cosineHemispherePdf(cosTheta(wo));
@@ -50,7 +50,7 @@ std::optional<BSDFSample> PlasticBSDF::sample(const BSDFContext& ctx, const Vec3
     s.wo = mirrorDirection(wi);
     s.pdf = pSpecular;
     s.delta = true;
-    s.weight = specularReflectance_.sample(wl) * (fresnelI / pSpecular);
+    s.weight = specularReflectance_.eval(ctx.uv, wl) * (fresnelI / pSpecular);
     return s;
   }
   s.wo = sampleCosineHemisphere(u);
@@ -64,8 +64,9 @@ std::shared_ptr<Object> makePlasticBSDF(const Properties& props) {
   float intIOR = readIOR(props, "int_ior", "polypropylene");
   float extIOR = readIOR(props, "ext_ior", "air");
   return std::make_shared<PlasticBSDF>(
-      intIOR / extIOR, props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
-      props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance), props.getBool("nonlinear", false));
+      intIOR / extIOR, readSpectrumParameter(props, "diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      props.getBool("nonlinear", false));
 }
 
 }  // namespace columba

@@ -7,6 +7,7 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
@@ -14,8 +15,7 @@ class PlasticBSDF : public BSDF {
  public:
   // eta = coat index / outside index. With `nonlinear`, the base's colour also tints each
   // internal bounce (Kd / (1 - Kd Ri)) instead of only the first (Kd / (1 - Ri)).
-  PlasticBSDF(float eta, SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
-              bool nonlinear);
+  PlasticBSDF(float eta, SpectrumParameter diffuseReflectance, SpectrumParameter specularReflectance, bool nonlinear);
   // The diffuse component only.
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
@@ -27,7 +27,7 @@ class PlasticBSDF : public BSDF {
   float specularProbability(float fresnelI) const;
 
   float eta_;
-  SpectralDistribution diffuseReflectance_, specularReflectance_;
+  SpectrumParameter diffuseReflectance_, specularReflectance_;
   bool nonlinear_;
   float internalReflectance_;     // diffuse Fresnel reflectance at the coat's underside
   float specularSamplingWeight_;  // mean specular / (mean specular + mean diffuse reflectance)

@@ -9,10 +9,9 @@ namespace {
 Vec3 mirrored(const Vec3& w) { return Vec3(w.x, w.y, -w.z); }
 }  // namespace
 
-RoughDielectricBSDF::RoughDielectricBSDF(MicrofacetDistribution distribution, float eta,
-                                         SpectralDistribution specularReflectance,
-                                         SpectralDistribution specularTransmittance)
-    : distribution_(distribution),
+RoughDielectricBSDF::RoughDielectricBSDF(MicrofacetRoughness roughness, float eta,
+                                         SpectrumParameter specularReflectance, SpectrumParameter specularTransmittance)
+    : roughness_(std::move(roughness)),
       eta_(eta),
       specularReflectance_(std::move(specularReflectance)),
       specularTransmittance_(std::move(specularTransmittance)) {}
@@ -37,8 +36,8 @@ RoughDielectricBSDF::Pair RoughDielectricBSDF::pairOf(const Vec3& wi, const Vec3
   return p;
 }
 
-float RoughDielectricBSDF::value(const Pair& p, float fresnel) const {
-  float D = distribution_.D(p.m), G = distribution_.G(p.wi, p.wo, p.m);
+float RoughDielectricBSDF::value(const MicrofacetDistribution& distribution, const Pair& p, float fresnel) {
+  float D = distribution.D(p.m), G = distribution.G(p.wi, p.wo, p.m);
   float iDotM = dot(p.wi, p.m), oDotM = dot(p.wo, p.m);
   if (p.reflection) return fresnel * D * G / (4.0f * cosTheta(p.wi));
   // Walter's f_t |cos wo| = |i.m| |o.m| eta^2 (1 - F) D G / (|i.n| (i.m + eta o.m)^2), times
@@ -47,33 +46,35 @@ float RoughDielectricBSDF::value(const Pair& p, float fresnel) const {
   return (1.0f - fresnel) * D * G * iDotM * std::abs(oDotM) / (cosTheta(p.wi) * denom * denom);
 }
 
-float RoughDielectricBSDF::density(const Pair& p, float fresnel) const {
-  float visible = distribution_.visiblePdf(p.wi, p.m), oDotM = dot(p.wo, p.m);
+float RoughDielectricBSDF::density(const MicrofacetDistribution& distribution, const Pair& p, float fresnel) {
+  float visible = distribution.visiblePdf(p.wi, p.m), oDotM = dot(p.wo, p.m);
   if (p.reflection) return fresnel * visible / (4.0f * oDotM);
   // dm / dwo for refraction: eta^2 |o.m| / (i.m + eta o.m)^2.
   float denom = dot(p.wi, p.m) + p.eta * oDotM;
   return (1.0f - fresnel) * visible * p.eta * p.eta * std::abs(oDotM) / (denom * denom);
 }
 
-Spectrum RoughDielectricBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+Spectrum RoughDielectricBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo,
+                                   const Wavelengths& wl) const {
   Pair p = pairOf(wi, wo);
   if (!p.valid) return Spectrum(0.0f);
-  float f = value(p, fresnelDielectric(dot(p.wi, p.m), p.eta));
-  return (p.reflection ? specularReflectance_ : specularTransmittance_).sample(wl) * f;
+  float f = value(roughness_.at(ctx.uv), p, fresnelDielectric(dot(p.wi, p.m), p.eta));
+  return (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.uv, wl) * f;
 }
 
-float RoughDielectricBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+float RoughDielectricBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   Pair p = pairOf(wi, wo);
-  return p.valid ? density(p, fresnelDielectric(dot(p.wi, p.m), p.eta)) : 0.0f;
+  return p.valid ? density(roughness_.at(ctx.uv), p, fresnelDielectric(dot(p.wi, p.m), p.eta)) : 0.0f;
 }
 
-std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl,
+std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                       float uComponent, Vec2 u) const {
   if (cosTheta(wi) == 0.0f) return std::nullopt;
   bool inside = cosTheta(wi) < 0.0f;
   Vec3 front = inside ? mirrored(wi) : wi;
   float eta = inside ? 1.0f / eta_ : eta_;
-  Vec3 m = distribution_.sampleVisible(front, u);
+  const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+  Vec3 m = distribution.sampleVisible(front, u);
   float cosI = dot(front, m);
   if (!(cosI > 0.0f)) return std::nullopt;
   FresnelAmplitudes a = fresnelAmplitudes(cosI, eta);
@@ -89,19 +90,21 @@ std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext&, const 
   fresnel = fresnelDielectric(dot(p.wi, p.m), p.eta);  // at the half vector pdf() sees
   BSDFSample s;
   s.wo = wo;
-  s.pdf = density(p, fresnel);
+  s.pdf = density(distribution, p, fresnel);
   if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = (p.reflection ? specularReflectance_ : specularTransmittance_).sample(wl) * (value(p, fresnel) / s.pdf);
+  s.weight = (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.uv, wl) *
+             (value(distribution, p, fresnel) / s.pdf);
   return s;
 }
 
 std::shared_ptr<Object> makeRoughDielectricBSDF(const Properties& props) {
-  MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/true);
+  MicrofacetRoughness roughness = readMicrofacetRoughness(props, /*allowAnisotropic=*/true);
   float intIOR = readIOR(props, "int_ior", "bk7");
   float extIOR = readIOR(props, "ext_ior", "air");
   return std::make_shared<RoughDielectricBSDF>(
-      distribution, intIOR / extIOR, props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
-      props.getSpectrum("specular_transmittance", 1.0f, SpectrumUse::Reflectance));
+      std::move(roughness), intIOR / extIOR,
+      readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_transmittance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

@@ -6,16 +6,17 @@
 // (n_wi / n_wo)^2 as the smooth `dielectric` does (radiance compressed on the denser side).
 #include <memory>
 #include "bsdfs/bsdf.h"
-#include "bsdfs/microfacet.h"
+#include "bsdfs/microfacet_roughness.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class RoughDielectricBSDF : public BSDF {
  public:
   // eta = interior / exterior index; the normal (local +z) points to the exterior.
-  RoughDielectricBSDF(MicrofacetDistribution distribution, float eta, SpectralDistribution specularReflectance,
-                      SpectralDistribution specularTransmittance);
+  RoughDielectricBSDF(MicrofacetRoughness roughness, float eta, SpectrumParameter specularReflectance,
+                      SpectrumParameter specularTransmittance);
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -33,15 +34,16 @@ class RoughDielectricBSDF : public BSDF {
   };
   Pair pairOf(const Vec3& wi, const Vec3& wo) const;
   // f |cos wo| and the density, for a valid pair.
-  float value(const Pair& p, float fresnel) const;
-  float density(const Pair& p, float fresnel) const;
+  static float value(const MicrofacetDistribution& distribution, const Pair& p, float fresnel);
+  static float density(const MicrofacetDistribution& distribution, const Pair& p, float fresnel);
 
-  MicrofacetDistribution distribution_;
+  MicrofacetRoughness roughness_;
   float eta_;
-  SpectralDistribution specularReflectance_, specularTransmittance_;
+  SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
-// Parameters: distribution ("beckmann", "ggx"), alpha or alpha_u and alpha_v, sample_visible,
+// Parameters: distribution ("beckmann", "ggx"), alpha or alpha_u and alpha_v (values or
+// textures), sample_visible,
 // int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).
 std::shared_ptr<Object> makeRoughDielectricBSDF(const Properties& props);
 

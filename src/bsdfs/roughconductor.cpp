@@ -5,48 +5,52 @@
 
 namespace columba {
 
-RoughConductorBSDF::RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ConductorIndex> ior,
-                                       SpectralDistribution specularReflectance)
-    : distribution_(distribution), ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
+RoughConductorBSDF::RoughConductorBSDF(MicrofacetRoughness roughness, std::optional<ConductorIndex> ior,
+                                       SpectrumParameter specularReflectance)
+    : roughness_(std::move(roughness)), ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
 
-Spectrum RoughConductorBSDF::reflectance(float cosI, const Wavelengths& wl) const {
-  return conductorReflectance(ior_, specularReflectance_, cosI, wl);
+Spectrum RoughConductorBSDF::reflectance(Vec2 uv, float cosI, const Wavelengths& wl) const {
+  return conductorReflectance(ior_, specularReflectance_.eval(uv, wl), cosI, wl);
 }
 
-Spectrum RoughConductorBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+Spectrum RoughConductorBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
+  const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
   Vec3 m = normalize(wi + wo);
-  float value = distribution_.D(m) * distribution_.G(wi, wo, m) / (4.0f * cosTheta(wi));
+  float value = distribution.D(m) * distribution.G(wi, wo, m) / (4.0f * cosTheta(wi));
   if (value <= 0.0f) return Spectrum(0.0f);
-  return reflectance(dot(wi, m), wl) * value;
+  return reflectance(ctx.uv, dot(wi, m), wl) * value;
 }
 
-float RoughConductorBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+float RoughConductorBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return 0.0f;
+  const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
   Vec3 m = normalize(wi + wo);
   // Visible-normal density times the Jacobian of reflection, dm/dwo = 1 / (4 wo.m).
-  return distribution_.visiblePdf(wi, m) / (4.0f * dot(wo, m));
+  return distribution.visiblePdf(wi, m) / (4.0f * dot(wo, m));
 }
 
-std::optional<BSDFSample> RoughConductorBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl, float,
-                                                     Vec2 u) const {
+std::optional<BSDFSample> RoughConductorBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                                     float, Vec2 u) const {
   if (cosTheta(wi) <= 0.0f) return std::nullopt;
-  Vec3 m = distribution_.sampleVisible(wi, u);
+  const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+  Vec3 m = distribution.sampleVisible(wi, u);
   BSDFSample s;
   s.wo = reflect(wi, m);
   if (cosTheta(s.wo) <= 0.0f) return std::nullopt;
-  s.pdf = distribution_.visiblePdf(wi, m) / (4.0f * dot(s.wo, m));
+  s.pdf = distribution.visiblePdf(wi, m) / (4.0f * dot(s.wo, m));
   if (!(s.pdf > 0.0f)) return std::nullopt;
   // f cos(wo) / pdf: D, G1(wi) and the Jacobian cancel, leaving the masking of wo.
-  s.weight = reflectance(dot(wi, m), wl) * distribution_.G1(s.wo, m);
+  s.weight = reflectance(ctx.uv, dot(wi, m), wl) * distribution.G1(s.wo, m);
   return s;
 }
 
 std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props) {
-  MicrofacetDistribution distribution = readMicrofacetDistribution(props, /*allowAnisotropic=*/true);
+  MicrofacetRoughness roughness = readMicrofacetRoughness(props, /*allowAnisotropic=*/true);
   std::optional<ConductorIndex> ior = readConductorIndex(props);
   return std::make_shared<RoughConductorBSDF>(
-      distribution, std::move(ior), props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance));
+      std::move(roughness), std::move(ior),
+      readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

@@ -4,9 +4,10 @@
 #include <memory>
 #include <optional>
 #include "bsdfs/bsdf.h"
-#include "bsdfs/microfacet.h"
+#include "bsdfs/microfacet_roughness.h"
 #include "core/properties.h"
 #include "optics/conductor_materials.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
@@ -14,8 +15,8 @@ class RoughConductorBSDF : public BSDF {
  public:
   // `ior`: the metal's complex index relative to the outside; without it every microfacet is a
   // perfect mirror (Fresnel = 1).
-  RoughConductorBSDF(MicrofacetDistribution distribution, std::optional<ConductorIndex> ior,
-                     SpectralDistribution specularReflectance);
+  RoughConductorBSDF(MicrofacetRoughness roughness, std::optional<ConductorIndex> ior,
+                     SpectrumParameter specularReflectance);
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -23,14 +24,15 @@ class RoughConductorBSDF : public BSDF {
 
  private:
   // Specular reflectance times the Fresnel reflectance at cos(wi, m) = cosI.
-  Spectrum reflectance(float cosI, const Wavelengths& wl) const;
+  Spectrum reflectance(Vec2 uv, float cosI, const Wavelengths& wl) const;
 
-  MicrofacetDistribution distribution_;
+  MicrofacetRoughness roughness_;
   std::optional<ConductorIndex> ior_;
-  SpectralDistribution specularReflectance_;
+  SpectrumParameter specularReflectance_;
 };
 
-// Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1) or alpha_u and alpha_v,
+// Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1) or alpha_u and alpha_v
+// (values or textures),
 // sample_visible; material ("none" = perfect mirror, the default, or a measured metal:
 // optics/conductor_materials.h) or eta (default 0) and k (default 1) spectra; specular_reflectance (1).
 std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props);

@@ -21,9 +21,8 @@ float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distributi
   return float(sum / (kSteps * kSteps));
 }
 
-RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta,
-                                   SpectralDistribution diffuseReflectance, SpectralDistribution specularReflectance,
-                                   bool nonlinear)
+RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta, SpectrumParameter diffuseReflectance,
+                                   SpectrumParameter specularReflectance, bool nonlinear)
     : distribution_(distribution),
       eta_(eta),
       diffuseReflectance_(std::move(diffuseReflectance)),
@@ -57,19 +56,20 @@ float RoughPlasticBSDF::specularProbability(float cosI) const {
   return specular + diffuse > 0.0f ? specular / (specular + diffuse) : 0.0f;
 }
 
-Spectrum RoughPlasticBSDF::eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+Spectrum RoughPlasticBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
   Vec3 m = normalize(wi + wo);
   float specular =
       fresnelDielectric(dot(wi, m), eta_) * distribution_.D(m) * distribution_.G(wi, wo, m) / (4.0f * cosTheta(wi));
-  Spectrum kd = diffuseReflectance_.sample(wl);
+  Spectrum kd = diffuseReflectance_.eval(ctx.uv, wl);
   Spectrum base =
       kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   float transmission = externalTransmittance(cosTheta(wi)) * externalTransmittance(cosTheta(wo));
-  return specularReflectance_.sample(wl) * specular + base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
+  return specularReflectance_.eval(ctx.uv, wl) * specular +
+         base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
 }
 
-float RoughPlasticBSDF::pdf(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
+float RoughPlasticBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return 0.0f;
   Vec3 m = normalize(wi + wo);
   float pSpecular = specularProbability(cosTheta(wi));
@@ -97,8 +97,10 @@ std::shared_ptr<Object> makeRoughPlasticBSDF(const Properties& props) {
   float intIOR = readIOR(props, "int_ior", "polypropylene");
   float extIOR = readIOR(props, "ext_ior", "air");
   return std::make_shared<RoughPlasticBSDF>(
-      distribution, intIOR / extIOR, props.getSpectrum("diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
-      props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance), props.getBool("nonlinear", false));
+      distribution, intIOR / extIOR,
+      readSpectrumParameter(props, "diffuse_reflectance", 0.5f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      props.getBool("nonlinear", false));
 }
 
 }  // namespace columba

@@ -18,14 +18,15 @@
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class RoughPlasticBSDF : public BSDF {
  public:
   // eta = coat index / outside index. `nonlinear` as for PlasticBSDF.
-  RoughPlasticBSDF(MicrofacetDistribution distribution, float eta, SpectralDistribution diffuseReflectance,
-                   SpectralDistribution specularReflectance, bool nonlinear);
+  RoughPlasticBSDF(MicrofacetDistribution distribution, float eta, SpectrumParameter diffuseReflectance,
+                   SpectrumParameter specularReflectance, bool nonlinear);
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
@@ -43,7 +44,7 @@ class RoughPlasticBSDF : public BSDF {
 
   MicrofacetDistribution distribution_;
   float eta_;
-  SpectralDistribution diffuseReflectance_, specularReflectance_;
+  SpectrumParameter diffuseReflectance_, specularReflectance_;
   bool nonlinear_;
   float specularSamplingWeight_;                         // mean specular / (mean specular + mean diffuse reflectance)
   std::array<float, kTableSize> externalTransmittance_;  // at mu = i / (kTableSize - 1)

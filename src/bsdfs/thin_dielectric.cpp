@@ -11,7 +11,7 @@ float ThinDielectricBSDF::sheetReflectance(float cosI) const {
   return r < 1.0f ? 2.0f * r / (1.0f + r) : 1.0f;
 }
 
-std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext&, const Vec3& wi, const Wavelengths& wl,
+std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                      float uComponent, Vec2) const {
   float R = sheetReflectance(cosTheta(wi));
   BSDFSample s;
@@ -19,26 +19,26 @@ std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext&, const V
   if (uComponent < R) {
     s.wo = mirrorDirection(wi);
     s.pdf = R;
-    s.weight = specularReflectance_.sample(wl);
+    s.weight = specularReflectance_.eval(ctx.uv, wl);
   } else {
     s.wo = -wi;
     s.pdf = 1.0f - R;
-    s.weight = specularTransmittance_.sample(wl);
+    s.weight = specularTransmittance_.eval(ctx.uv, wl);
     s.passThrough = true;
   }
   return s;
 }
 
-Spectrum ThinDielectricBSDF::passThrough(const BSDFContext&, const Vec3& wi, const Wavelengths& wl) const {
-  return specularTransmittance_.sample(wl) * (1.0f - sheetReflectance(cosTheta(wi)));
+Spectrum ThinDielectricBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
+  return specularTransmittance_.eval(ctx.uv, wl) * (1.0f - sheetReflectance(cosTheta(wi)));
 }
 
 std::shared_ptr<Object> makeThinDielectricBSDF(const Properties& props) {
   float intIOR = readIOR(props, "int_ior", "bk7");
   float extIOR = readIOR(props, "ext_ior", "air");
   return std::make_shared<ThinDielectricBSDF>(
-      intIOR / extIOR, props.getSpectrum("specular_reflectance", 1.0f, SpectrumUse::Reflectance),
-      props.getSpectrum("specular_transmittance", 1.0f, SpectrumUse::Reflectance));
+      intIOR / extIOR, readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_transmittance", 1.0f, SpectrumUse::Reflectance));
 }
 
 }  // namespace columba

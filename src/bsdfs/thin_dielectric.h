@@ -7,13 +7,14 @@
 #include <memory>
 #include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class ThinDielectricBSDF : public DeltaBSDF {
  public:
   // eta = interior / exterior index.
-  ThinDielectricBSDF(float eta, SpectralDistribution specularReflectance, SpectralDistribution specularTransmittance)
+  ThinDielectricBSDF(float eta, SpectrumParameter specularReflectance, SpectrumParameter specularTransmittance)
       : eta_(eta),
         specularReflectance_(std::move(specularReflectance)),
         specularTransmittance_(std::move(specularTransmittance)) {}
@@ -26,7 +27,7 @@ class ThinDielectricBSDF : public DeltaBSDF {
 
  private:
   float eta_;
-  SpectralDistribution specularReflectance_, specularTransmittance_;
+  SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
 // Parameters: int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).

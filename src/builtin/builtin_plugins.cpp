@@ -6,6 +6,7 @@
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
 #include "bsdfs/mask_bsdf.h"
+#include "bsdfs/normal_map_bsdf.h"
 #include "bsdfs/null_bsdf.h"
 #include "bsdfs/plastic.h"
 #include "bsdfs/rough_dielectric.h"
@@ -42,6 +43,8 @@
 #include "shapes/serialized_mesh.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
+#include "textures/bitmap_texture.h"
+#include "textures/checkerboard_texture.h"
 
 namespace columba {
 
@@ -80,6 +83,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "null", makeNullBSDF);
     r.add("bsdf", "mask", makeMaskBSDF);
     r.add("bsdf", "blendbsdf", makeBlendBSDF);
+    r.add("bsdf", "normalmap", makeNormalMapBSDF);
     r.add("bsdf", "barbulebsdf", makeBarbuleBSDF);
     r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);
@@ -91,6 +95,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "cylinder", makeCylinderShape);
     r.add("shape", "cube", makeCubeShape);
     r.add("shape", "feather", makeFeatherShape);
+    r.add("texture", "bitmap", makeBitmapTexture);
+    r.add("texture", "checkerboard", makeCheckerboardTexture);
     return r;
   }();
   return registry;

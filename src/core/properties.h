@@ -66,6 +66,19 @@ class Properties {
     return all.empty() ? nullptr : all.front();
   }
 
+  // The nested plug-in (or <ref>) of type T given for parameter `name` by its name attribute, e.g.
+  // <texture name="reflectance">; nullptr if none. It counts as used.
+  template <typename T>
+  std::shared_ptr<T> namedChild(const std::string& name) const {
+    for (const Child& c : children_)
+      if (c.name == name)
+        if (auto p = std::dynamic_pointer_cast<T>(c.object)) {
+          c.used = true;
+          return p;
+        }
+    return nullptr;
+  }
+
   // Where a parameter was declared (the element's own location if unknown).
   SourceLocation locationOf(const std::string& name) const;
   // An error pointing at parameter `name`.

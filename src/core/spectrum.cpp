@@ -244,16 +244,26 @@ SpectralDistribution SpectralDistribution::piecewiseLinear(std::vector<float> la
   return d;
 }
 
+float RGBSpectrum::eval(float lambda) const {
+  float x = normalisedLambda(lambda);
+  return scale * sigmoid((coeffs[0] * x + coeffs[1]) * x + coeffs[2]);
+}
+
+RGBSpectrum fitRGBSpectrum(const Vec3& rgbIn, bool unbounded) {
+  Vec3 rgb = unbounded ? maxv(rgbIn, Vec3(0, 0, 0)) : minv(maxv(rgbIn, Vec3(0, 0, 0)), Vec3(1, 1, 1));
+  // s(0) = 1/2: a grey needs no fit.
+  if (rgb.x == rgb.y && rgb.y == rgb.z) return RGBSpectrum{{0.0f, 0.0f, 0.0f}, 2.0f * rgb.x};
+  float m = std::max(rgb.x, std::max(rgb.y, rgb.z));
+  float scale = unbounded ? 2.0f * m : 1.0f;
+  return RGBSpectrum{fitSigmoidPolynomial(rgb / scale), scale};
+}
+
 SpectralDistribution SpectralDistribution::fromRGB(const Vec3& rgbIn, bool unbounded) {
   Vec3 rgb = unbounded ? maxv(rgbIn, Vec3(0, 0, 0)) : minv(maxv(rgbIn, Vec3(0, 0, 0)), Vec3(1, 1, 1));
   if (rgb.x == rgb.y && rgb.y == rgb.z) return constant(rgb.x);
-  float m = std::max(rgb.x, std::max(rgb.y, rgb.z));
-  // Unbounded colours are fitted at half their maximum and scaled back (pbrt-v4's approach).
-  float scale = unbounded ? 2.0f * m : 1.0f;
   SpectralDistribution d;
   d.kind_ = Kind::Sigmoid;
-  d.value_ = scale;
-  d.coeffs_ = fitSigmoidPolynomial(rgb / scale);
+  d.rgb_ = fitRGBSpectrum(rgb, unbounded);
   return d;
 }
 
@@ -279,10 +289,8 @@ float SpectralDistribution::evalShape(float lambda) const {
       float t = (lambda - lambdas_[i]) / (lambdas_[i + 1] - lambdas_[i]);
       return lerp(t, values_[i], values_[i + 1]);
     }
-    case Kind::Sigmoid: {
-      float x = normalisedLambda(lambda);
-      return value_ * sigmoid((coeffs_[0] * x + coeffs_[1]) * x + coeffs_[2]);
-    }
+    case Kind::Sigmoid:
+      return rgb_.eval(lambda);
   }
   return 0.0f;
 }
@@ -292,6 +300,19 @@ float SpectralDistribution::meanValue() const {
   double s = 0;
   for (int i = 0; i < CieTable::kCount; ++i) s += eval(kLambdaMin + float(i));
   return float(s / CieTable::kCount);
+}
+
+float SpectralDistribution::luminance() const {
+  if (isConstant()) return value_;
+  const CieTable& t = cieTable();
+  double reflected = 0, white = 0;
+  for (int i = 0; i < CieTable::kCount; ++i) {
+    const float lambda = kLambdaMin + float(i);
+    const double weight = double(d65(lambda)) * t.xyz[i].y;
+    reflected += weight * eval(lambda);
+    white += weight;
+  }
+  return float(reflected / white);
 }
 
 }  // namespace columba

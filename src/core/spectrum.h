@@ -92,6 +92,19 @@ Vec3 linearRGBToXYZ(const Vec3& rgb);
 // Monte Carlo estimate of a spectrum's linear RGB from its values at `wl`.
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl);
 
+// The smooth spectrum of an RGB colour (Jakob & Hanika 2019): scale * s(c0 x^2 + c1 x + c2), with x
+// the wavelength normalised to [0, 1] over the visible range and s(t) = 1/2 + t / (2 sqrt(1 + t^2)).
+// Small (16 bytes) so that a texture can keep one per texel.
+struct RGBSpectrum {
+  std::array<float, 3> coeffs{};
+  float scale = 0.0f;
+  float eval(float lambda) const;
+};
+// The spectrum whose colour under D65 is `rgb`, fitted here. `unbounded` allows values above 1
+// (fitted at half the largest component and scaled back, as pbrt-v4 does); otherwise rgb is clamped
+// to [0, 1]. A grey colour is exactly constant.
+RGBSpectrum fitRGBSpectrum(const Vec3& rgb, bool unbounded);
+
 // A spectral distribution given in a scene: constant, piecewise linear, or upsampled RGB.
 class SpectralDistribution {
  public:
@@ -116,15 +129,18 @@ class SpectralDistribution {
   }
   // Mean over the visible range, for light selection and diagnostics.
   float meanValue() const;
+  // Luminance as a reflectance under D65, relative to a white reflector: the value of a constant,
+  // the luminance Y of the colour an RGB spectrum was fitted to.
+  float luminance() const;
 
  private:
   float evalShape(float lambda) const;  // eval without the illuminant
 
   enum class Kind { Constant, Piecewise, Sigmoid } kind_ = Kind::Constant;
   bool timesD65_ = false;
-  float value_ = 0.0f;  // constant value, or the sigmoid's scale
+  float value_ = 0.0f;  // for Kind::Constant
   std::vector<float> lambdas_, values_;
-  std::array<float, 3> coeffs_{};  // sigmoid polynomial in normalised wavelength
+  RGBSpectrum rgb_;  // for Kind::Sigmoid
 };
 
 }  // namespace columba

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include "core/error.h"
+#include "io/image_file_reader.h"
 
 namespace columba {
 
@@ -109,8 +110,14 @@ float EnvmapEmitter::pdfDirection(const Vec3& d) const {
 
 std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props) {
   const std::string path = props.getPath("filename");
-  return std::make_shared<EnvmapEmitter>(readEXR(path), props.getFloat("scale", 1.0f), props.getTransform("to_world"),
-                                         SourceLocation{path, 0});
+  Image image;
+  try {
+    image = readLinearRGBImage(path);
+  } catch (const InputError& e) {
+    throw props.error("filename", e.what());
+  }
+  return std::make_shared<EnvmapEmitter>(std::move(image), props.getFloat("scale", 1.0f),
+                                         props.getTransform("to_world"), SourceLocation{path, 0});
 }
 
 }  // namespace columba

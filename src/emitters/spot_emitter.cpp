@@ -2,14 +2,21 @@
 
 namespace columba {
 
-SpotEmitter::SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth)
+SpotEmitter::SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth,
+                         std::shared_ptr<const Texture> texture)
     : worldToLocal_(toWorld.inverse()),
       position_(toWorld.point(Vec3(0, 0, 0))),
       intensity_(std::move(intensity)),
       cutoff_(cutoff),
       beamWidth_(beamWidth),
       cosCutoff_(std::cos(cutoff)),
-      cosBeamWidth_(std::cos(beamWidth)) {}
+      cosBeamWidth_(std::cos(beamWidth)),
+      texture_(std::move(texture)) {}
+
+Vec2 SpotEmitter::textureUV(const Vec3& local) const {
+  const float scale = 0.5f / (local.z * std::tan(cutoff_));
+  return Vec2(0.5f + local.x * scale, 0.5f + local.y * scale);
+}
 
 float SpotEmitter::falloff(const Vec3& local) const {
   float cosTheta = normalize(local).z;
@@ -22,19 +29,21 @@ std::optional<EmitterSample> SpotEmitter::sample(const Vec3& ref, Vec2, const Wa
   Vec3 d = position_ - ref;
   float dist2 = lengthSquared(d);
   if (dist2 == 0.0f) return std::nullopt;
-  float f = falloff(worldToLocal_.vector(-d));
+  const Vec3 local = worldToLocal_.vector(-d);
+  float f = falloff(local);
   if (!(f > 0.0f)) return std::nullopt;
   EmitterSample s;
   s.distance = std::sqrt(dist2);
   s.direction = d / s.distance;
   s.radiance = intensity_.sample(wl) * (f / dist2);
+  if (texture_) s.radiance *= texture_->evalSpectrum(textureUV(local), wl);
   s.pdf = 1.0f;
   return s;
 }
 
 std::shared_ptr<Object> makeSpotEmitter(const Properties& props) {
-  if (props.has("texture"))
-    throw props.error("texture", "projected textures are not supported (Columba has no textures yet)");
+  std::shared_ptr<const Texture> texture = props.namedChild<Texture>("texture");
+  if (props.has("texture")) throw props.error("texture", "the projected 'texture' must be a <texture>");
   float cutoff = props.getFloat("cutoff_angle", 20.0f);
   if (!(cutoff > 0.0f && cutoff <= 180.0f))
     throw props.error("cutoff_angle", "must lie in (0, 180] degrees, not " + std::to_string(cutoff));
@@ -44,7 +53,7 @@ std::shared_ptr<Object> makeSpotEmitter(const Properties& props) {
                                         " degrees), not " + std::to_string(beamWidth));
   return std::make_shared<SpotEmitter>(props.getTransform("to_world"),
                                        props.getSpectrum("intensity", 1.0f, SpectrumUse::Emission), degToRad(cutoff),
-                                       degToRad(beamWidth));
+                                       degToRad(beamWidth), texture);
 }
 
 }  // namespace columba

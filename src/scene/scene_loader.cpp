@@ -163,10 +163,10 @@ void SceneBuilder::declareIds(const XmlElement& e, int depth) {
 void SceneBuilder::build(ParsedScene& scene) {
   for (const XmlElement& e : topLevel_) {
     NamedObject built = instantiate(e, 0);
-    // As in Mitsuba, a top-level film, sampler or filter is there to be referenced by a sensor.
-    if (built.tag == "film" || built.tag == "sampler" || built.tag == "rfilter") {
-      if (!e.has("id"))
-        warn(e.location(), "<" + built.tag + "> without an id is never used (a sensor's <ref> needs one)");
+    // As in Mitsuba, a top-level film, sampler or filter is there to be referenced by a sensor, and
+    // a top-level texture by a BSDF.
+    if (built.tag == "film" || built.tag == "sampler" || built.tag == "rfilter" || built.tag == "texture") {
+      if (!e.has("id")) warn(e.location(), "<" + built.tag + "> without an id is never used (a <ref> to it needs one)");
       continue;
     }
     scene.objects.push_back(built.object);

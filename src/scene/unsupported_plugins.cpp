@@ -7,7 +7,7 @@ namespace columba {
 
 namespace {
 const char* kMedia = "participating media are not supported; Columba renders surfaces only";
-const char* kTextures = "textures are not supported yet: give the parameter a constant value or spectrum";
+const char* kTextures = "of Mitsuba's textures, Columba has 'bitmap' and 'checkerboard'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
 const char* kPolarisation = "polarised rendering is not supported";
 }  // namespace
@@ -34,14 +34,11 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"phase", "sggx"}, kMedia},
       {{"phase", "tabphase"}, kMedia},
       {{"phase", "blendphase"}, kMedia},
-      {{"texture", "bitmap"}, kTextures},
-      {{"texture", "checkerboard"}, kTextures},
       {{"texture", "mesh_attribute"}, kTextures},
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "principled"}, "the principled BSDF is not supported yet"},
       {{"bsdf", "principledthin"}, "the thin principled BSDF is not supported yet"},
-      {{"bsdf", "normalmap"}, kTextures},
-      {{"bsdf", "bumpmap"}, kTextures},
+      {{"bsdf", "bumpmap"}, "bump mapping is not supported yet (normalmap is)"},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},
       {{"bsdf", "pplastic"}, kPolarisation},
@@ -54,7 +51,7 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"shape", "ellipsoids"}, "ellipsoid clouds are not supported"},
       {{"shape", "shapegroup"}, "instancing is not supported yet"},
       {{"shape", "instance"}, "instancing is not supported yet"},
-      {{"emitter", "projector"}, kTextures},
+      {{"emitter", "projector"}, "the projector emitter is not supported yet"},
       {{"emitter", "sunsky"}, "the sun and sky model is not supported; use 'envmap' or 'directional'"},
       {{"sensor", "irradiancemeter"}, "only cameras are supported as sensors"},
       {{"sensor", "radiancemeter"}, "only cameras are supported as sensors"},

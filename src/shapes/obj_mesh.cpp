@@ -152,7 +152,11 @@ MeshData readObjMesh(const std::string& path) {
 }
 
 std::shared_ptr<Object> makeObjShape(const Properties& props) {
-  return finishMeshShape(props, readObjMesh(props.getPath("filename")), props.getTransform("to_world"));
+  MeshData mesh = readObjMesh(props.getPath("filename"));
+  // OBJ files put v = 0 at the bottom of an image, textures at the top: Mitsuba flips v by default.
+  if (props.getBool("flip_tex_coords", true))
+    for (Vec2& uv : mesh.uvs) uv.y = 1.0f - uv.y;
+  return finishMeshShape(props, std::move(mesh), props.getTransform("to_world"));
 }
 
 }  // namespace columba

@@ -17,7 +17,8 @@ namespace columba {
 
 MeshData readObjMesh(const std::string& path);
 
-// Parameters: `filename`, `to_world`, `face_normals`, `flip_normals`; nested BSDF and emitter.
+// Parameters: `filename`, `to_world`, `face_normals`, `flip_normals`, `flip_tex_coords` (true: v
+// becomes 1 - v, as Mitsuba reads OBJ files); nested BSDF and emitter.
 std::shared_ptr<Object> makeObjShape(const Properties& props);
 
 }  // namespace columba

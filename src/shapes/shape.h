@@ -32,7 +32,7 @@ struct SurfaceInteraction {
   const Shape* shape = nullptr;
   SurfaceAttributes attributes;  // per-point values of the BSDF's parameters (a feather's barbules)
 
-  BSDFContext bsdfContext() const { return BSDFContext{&attributes}; }
+  BSDFContext bsdfContext() const { return BSDFContext{&attributes, uv}; }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
   Ray spawnRay(const Vec3& d) const;

@@ -1,0 +1,193 @@
+#include "textures/bitmap_texture.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "core/error.h"
+
+namespace columba {
+
+namespace {
+// A colour's bits, to fit each distinct colour of an image once: photographs and 8-bit images
+// repeat colours a great deal, and each fit is an iterative solve.
+struct ColourKey {
+  uint32_t bits[3];
+  bool operator==(const ColourKey& o) const { return std::memcmp(bits, o.bits, sizeof bits) == 0; }
+};
+struct ColourKeyHash {
+  size_t operator()(const ColourKey& k) const {
+    return (size_t(k.bits[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.bits[1]) * 0xC2B2AE3D27D4EB4Full) ^ k.bits[2];
+  }
+};
+ColourKey keyOf(const Vec3& c) {
+  ColourKey k;
+  std::memcpy(&k.bits[0], &c.x, 4);
+  std::memcpy(&k.bits[1], &c.y, 4);
+  std::memcpy(&k.bits[2], &c.z, 4);
+  return k;
+}
+
+float spectrumMean(const RGBSpectrum& s) {
+  double sum = 0;
+  const int count = int(kLambdaMax - kLambdaMin) + 1;
+  for (int i = 0; i < count; ++i) sum += s.eval(kLambdaMin + float(i));
+  return float(sum / count);
+}
+
+TextureFilter readFilter(const Properties& props) {
+  const std::string name = props.getString("filter_type", "bilinear");
+  if (name == "bilinear") return TextureFilter::Bilinear;
+  if (name == "nearest") return TextureFilter::Nearest;
+  throw props.error("filter_type", "unknown filter_type '" + name + "' (bilinear or nearest)");
+}
+
+TextureWrap readWrap(const Properties& props) {
+  const std::string name = props.getString("wrap_mode", "repeat");
+  if (name == "repeat") return TextureWrap::Repeat;
+  if (name == "mirror") return TextureWrap::Mirror;
+  if (name == "clamp") return TextureWrap::Clamp;
+  throw props.error("wrap_mode", "unknown wrap_mode '" + name + "' (repeat, mirror or clamp)");
+}
+}  // namespace
+
+int wrapTexelIndex(int i, int size, TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::Repeat: {
+      int r = i % size;
+      return r < 0 ? r + size : r;
+    }
+    case TextureWrap::Mirror: {
+      // Period 2 * size: the image, then the image mirrored.
+      int r = i % (2 * size);
+      if (r < 0) r += 2 * size;
+      return r < size ? r : 2 * size - 1 - r;
+    }
+    case TextureWrap::Clamp:
+      return i < 0 ? 0 : (i >= size ? size - 1 : i);
+  }
+  return 0;
+}
+
+BitmapTexture::BitmapTexture(const PixelGrid& pixels, bool raw, TextureFilter filter, TextureWrap wrap, Transform toUV)
+    : width_(pixels.width),
+      height_(pixels.height),
+      channels_(pixels.channels),
+      filter_(filter),
+      wrap_(wrap),
+      toUV_(toUV) {
+  const size_t count = size_t(width_) * size_t(height_);
+  values_.resize(count);
+  double sum = 0;
+  if (channels_ == 1) {
+    for (size_t i = 0; i < count; ++i) sum += values_[i] = pixels.values[i];
+    mean_ = float(sum / double(count));
+    return;
+  }
+  std::vector<Vec3> colours(count);
+  for (size_t i = 0; i < count; ++i) {
+    colours[i] = Vec3(pixels.values[3 * i], pixels.values[3 * i + 1], pixels.values[3 * i + 2]);
+    values_[i] = linearRGBToXYZ(colours[i]).y;
+  }
+  if (raw) {
+    rawRGB_ = std::move(colours);
+    for (float v : values_) sum += v;
+    mean_ = float(sum / double(count));
+    return;
+  }
+  // One fit per distinct colour, in parallel; the result does not depend on the order.
+  std::unordered_map<ColourKey, uint32_t, ColourKeyHash> indexOf;
+  std::vector<Vec3> distinct;
+  std::vector<uint32_t> texelColour(count);
+  for (size_t i = 0; i < count; ++i) {
+    auto [it, added] = indexOf.emplace(keyOf(colours[i]), uint32_t(distinct.size()));
+    if (added) distinct.push_back(colours[i]);
+    texelColour[i] = it->second;
+  }
+  std::vector<RGBSpectrum> fitted(distinct.size());
+  std::vector<float> fittedMean(distinct.size());
+  tbb::parallel_for(size_t(0), distinct.size(), [&](size_t i) {
+    const Vec3& c = distinct[i];
+    fitted[i] = fitRGBSpectrum(c, std::max(c.x, std::max(c.y, c.z)) > 1.0f);
+    fittedMean[i] = spectrumMean(fitted[i]);
+  });
+  spectra_.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    spectra_[i] = fitted[texelColour[i]];
+    sum += fittedMean[texelColour[i]];
+  }
+  mean_ = float(sum / double(count));
+}
+
+BitmapTexture::Footprint BitmapTexture::footprint(Vec2 uvIn) const {
+  const Vec2 uv = applyToUV(toUV_, uvIn);
+  Footprint f;
+  auto texel = [&](int x, int y) {
+    return size_t(wrapTexelIndex(y, height_, wrap_)) * size_t(width_) + size_t(wrapTexelIndex(x, width_, wrap_));
+  };
+  if (filter_ == TextureFilter::Nearest) {
+    f.count = 1;
+    f.texel[0] = texel(int(std::floor(uv.x * float(width_))), int(std::floor(uv.y * float(height_))));
+    f.weight[0] = 1.0f;
+    return f;
+  }
+  const float x = uv.x * float(width_) - 0.5f, y = uv.y * float(height_) - 0.5f;
+  const float x0 = std::floor(x), y0 = std::floor(y);
+  const float tx = x - x0, ty = y - y0;
+  const int ix = int(x0), iy = int(y0);
+  f.count = 4;
+  f.texel[0] = texel(ix, iy);
+  f.texel[1] = texel(ix + 1, iy);
+  f.texel[2] = texel(ix, iy + 1);
+  f.texel[3] = texel(ix + 1, iy + 1);
+  f.weight[0] = (1.0f - tx) * (1.0f - ty);
+  f.weight[1] = tx * (1.0f - ty);
+  f.weight[2] = (1.0f - tx) * ty;
+  f.weight[3] = tx * ty;
+  return f;
+}
+
+Spectrum BitmapTexture::evalSpectrum(Vec2 uv, const Wavelengths& wl) const {
+  if (spectra_.empty()) return Spectrum(evalFloat(uv));  // a grey image
+  const Footprint f = footprint(uv);
+  Spectrum result(0.0f);
+  for (int k = 0; k < f.count; ++k) {
+    const RGBSpectrum& s = spectra_[f.texel[k]];
+    Spectrum texel;
+    for (int i = 0; i < kSpectrumSamples; ++i) texel[i] = s.eval(wl[i]);
+    result += texel * f.weight[k];
+  }
+  return result;
+}
+
+float BitmapTexture::evalFloat(Vec2 uv) const {
+  const Footprint f = footprint(uv);
+  float result = 0.0f;
+  for (int k = 0; k < f.count; ++k) result += values_[f.texel[k]] * f.weight[k];
+  return result;
+}
+
+Vec3 BitmapTexture::evalRGB(Vec2 uv) const {
+  if (rawRGB_.empty()) throw std::logic_error("evalRGB: the texture holds no raw colours");
+  const Footprint f = footprint(uv);
+  Vec3 result(0, 0, 0);
+  for (int k = 0; k < f.count; ++k) result += rawRGB_[f.texel[k]] * f.weight[k];
+  return result;
+}
+
+std::shared_ptr<Object> makeBitmapTexture(const Properties& props) {
+  const std::string path = props.getPath("filename");
+  const bool raw = props.getBool("raw", false);
+  PixelGrid pixels;
+  try {
+    pixels = readImagePixels(path, !raw);
+  } catch (const InputError& e) {
+    throw props.error("filename", e.what());
+  }
+  return std::make_shared<BitmapTexture>(pixels, raw, readFilter(props), readWrap(props), props.getTransform("to_uv"));
+}
+
+}  // namespace columba

@@ -1,0 +1,29 @@
+#pragma once
+// Mitsuba's `checkerboard`: two values in alternating squares of half a unit of uv each.
+#include <memory>
+#include "core/properties.h"
+#include "textures/textured_parameter.h"
+
+namespace columba {
+
+class CheckerboardTexture : public Texture {
+ public:
+  CheckerboardTexture(SpectrumParameter color0, SpectrumParameter color1, Transform toUV)
+      : color0_(std::move(color0)), color1_(std::move(color1)), toUV_(toUV) {}
+  Spectrum evalSpectrum(Vec2 uv, const Wavelengths& wl) const override;
+  float evalFloat(Vec2 uv) const override;
+  float mean() const override;
+
+  // Whether `uv` (after to_uv) lies in a square of color0: the fractional parts of u and v are
+  // both above 1/2 or both at most 1/2.
+  bool inFirstColour(Vec2 uv) const;
+
+ private:
+  SpectrumParameter color0_, color1_;
+  Transform toUV_;
+};
+
+// Parameters: color0 (default 0.4), color1 (0.2), each a colour or a texture; to_uv.
+std::shared_ptr<Object> makeCheckerboardTexture(const Properties& props);
+
+}  // namespace columba
