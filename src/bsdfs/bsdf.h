@@ -13,11 +13,13 @@
 namespace columba {
 
 // Per-call inputs besides the directions: the shading point's attributes, the values of BSDF
-// parameters its shape gives per point (none by default), and its surface coordinates, where
-// textured parameters are looked up.
+// parameters its shape gives per point (none by default), its surface coordinates, where
+// textured parameters are looked up, and the derivatives of the position in them (in the local
+// shading frame; zero where the shape gives none), which bump maps perturb.
 struct BSDFContext {
   const SurfaceAttributes* attributes = nullptr;
   Vec2 uv;
+  Vec3 dpdu, dpdv;
 
   std::optional<float> attribute(SurfaceAttributeKey key) const {
     return attributes ? attributes->find(key) : std::nullopt;

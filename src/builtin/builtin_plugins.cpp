@@ -2,6 +2,7 @@
 
 #include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/blend_bsdf.h"
+#include "bsdfs/bump_map_bsdf.h"
 #include "bsdfs/conductor.h"
 #include "bsdfs/dielectric.h"
 #include "bsdfs/diffuse.h"
@@ -84,6 +85,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "mask", makeMaskBSDF);
     r.add("bsdf", "blendbsdf", makeBlendBSDF);
     r.add("bsdf", "normalmap", makeNormalMapBSDF);
+    r.add("bsdf", "bumpmap", makeBumpMapBSDF);
     r.add("bsdf", "barbulebsdf", makeBarbuleBSDF);
     r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);

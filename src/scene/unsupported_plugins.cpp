@@ -38,7 +38,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "principled"}, "the principled BSDF is not supported yet"},
       {{"bsdf", "principledthin"}, "the thin principled BSDF is not supported yet"},
-      {{"bsdf", "bumpmap"}, "bump mapping is not supported yet (normalmap is)"},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},
       {{"bsdf", "pplastic"}, kPolarisation},

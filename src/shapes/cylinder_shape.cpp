@@ -42,6 +42,8 @@ SurfaceInteraction CylinderShape::interaction(const Ray& ray, const HitRecord& h
   si.ng = toWorldNormal(localNormal(local));
   float phi = std::atan2(local.y, local.x);
   si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), local.z);
+  si.dpdu = toWorld_.vector(Vec3(-local.y, local.x, 0) * kTwoPi);
+  si.dpdv = toWorld_.vector(Vec3(0, 0, 1));
   si.shading = Frame::fromNormalAndS(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));  // dp/du
   return si;
 }

@@ -11,6 +11,14 @@ Vec2 DiskShape::uvAt(Vec2 local) const {
   return Vec2(r, (phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi));
 }
 
+std::pair<Vec2, Vec2> DiskShape::localPositionDerivatives(Vec2 local) const {
+  // u = r: the radial unit vector; v = phi / (2 pi): 2 pi r along the circle.
+  float r = std::sqrt(local.x * local.x + local.y * local.y);
+  if (!(r > 0.0f)) return {Vec2(1, 0), Vec2(0, 0)};
+  Vec2 radial(local.x / r, local.y / r);
+  return {radial, Vec2(-local.y, local.x) * kTwoPi};
+}
+
 Vec2 DiskShape::sampleLocal(Vec2 u) const { return sampleConcentricDisk(u); }
 
 std::shared_ptr<Object> makeDiskShape(const Properties& props) {

@@ -13,6 +13,7 @@ class DiskShape : public PlanarShape {
   bool contains(Vec2 local) const override { return local.x * local.x + local.y * local.y <= 1.0f; }
   // Polar coordinates: (radius, angle / 2 pi).
   Vec2 uvAt(Vec2 local) const override;
+  std::pair<Vec2, Vec2> localPositionDerivatives(Vec2 local) const override;
   Vec2 sampleLocal(Vec2 u) const override;
 };
 

@@ -48,6 +48,9 @@ SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit
   si.p = worldPoint(Vec2(local.x, local.y));
   si.ng = frame_.n;
   si.uv = uvAt(Vec2(local.x, local.y));
+  const auto [du, dv] = localPositionDerivatives(Vec2(local.x, local.y));
+  si.dpdu = axisX_ * du.x + axisY_ * du.y;
+  si.dpdv = axisX_ * dv.x + axisY_ * dv.y;
   si.shading = frame_;
   return si;
 }

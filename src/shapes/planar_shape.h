@@ -2,6 +2,7 @@
 // Flat shapes in the local plane z = 0 within [-1, 1]^2, facing +z (or -z with `flip_normals`),
 // placed by an affine `to_world`: `disk` and `rectangle`. They are intersected exactly, as
 // Mitsuba 3 does, and share one flat shading frame (s along the local x axis, dp/du).
+#include <utility>
 #include "shapes/analytic_shape.h"
 
 namespace columba {
@@ -26,6 +27,8 @@ class PlanarShape : public AnalyticShape {
   // Whether the local point (x, y) of the plane belongs to the shape.
   virtual bool contains(Vec2 local) const = 0;
   virtual Vec2 uvAt(Vec2 local) const = 0;
+  // dp/du and dp/dv at a local point, as local vectors (x, y) in the plane.
+  virtual std::pair<Vec2, Vec2> localPositionDerivatives(Vec2 local) const = 0;
   // A local point uniformly distributed over the shape.
   virtual Vec2 sampleLocal(Vec2 u) const = 0;
 

@@ -28,11 +28,14 @@ struct SurfaceInteraction {
   Vec3 ng;        // geometric normal (unit, oriented as the shape defines its front)
   Frame shading;  // shading frame; shading.n is on the same side as ng
   Vec2 uv;
+  // Derivatives of the position in u and in v (world space, not normalised), which bump maps
+  // need; zero where the shape does not give them.
+  Vec3 dpdu, dpdv;
   float t = 0.0f;  // ray distance
   const Shape* shape = nullptr;
   SurfaceAttributes attributes;  // per-point values of the BSDF's parameters (a feather's barbules)
 
-  BSDFContext bsdfContext() const { return BSDFContext{&attributes, uv}; }
+  BSDFContext bsdfContext() const { return BSDFContext{&attributes, uv, shading.toLocal(dpdu), shading.toLocal(dpdv)}; }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
   Ray spawnRay(const Vec3& d) const;

@@ -70,6 +70,10 @@ SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit
   si.ng = toWorldNormal(localNormal(local));
   float phi = std::atan2(local.y, local.x);
   si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
+  // u = phi / (2 pi), v = theta / pi.
+  si.dpdu = toWorld_.vector(Vec3(-local.y, local.x, 0) * kTwoPi);
+  const float r = std::sqrt(local.x * local.x + local.y * local.y);
+  if (r > 0.0f) si.dpdv = toWorld_.vector(Vec3(local.z * local.x / r, local.z * local.y / r, -r) * kPi);
   si.shading = Frame::fromNormalAndS(si.ng, toWorld_.vector(Vec3(-local.y, local.x, 0)));  // dp/du
   return si;
 }

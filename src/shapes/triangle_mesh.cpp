@@ -1,5 +1,7 @@
 #include "shapes/triangle_mesh.h"
 
+#include <tuple>
+
 #include <cmath>
 
 #include "bsdfs/diffuse.h"
@@ -45,7 +47,8 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
   if (!std::isfinite(area_)) throw InputError(where, "the mesh's total area overflows single precision");
   if (area_ > 0.0f) triangleByArea_ = Distribution1D(std::move(areas));
   faceFrames_.resize(primitiveCount());
-  for (size_t t = 0; t < faceFrames_.size(); ++t) faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), dpdu(t));
+  for (size_t t = 0; t < faceFrames_.size(); ++t)
+    faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), positionDerivatives(t).first);
 }
 
 unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
@@ -60,15 +63,16 @@ unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
   return id;
 }
 
-Vec3 TriangleMesh::dpdu(size_t tri) const {
+std::pair<Vec3, Vec3> TriangleMesh::positionDerivatives(size_t tri) const {
   const uint32_t* idx = &mesh_.indices[3 * tri];
   const Vec3 &p0 = mesh_.positions[idx[0]], &p1 = mesh_.positions[idx[1]], &p2 = mesh_.positions[idx[2]];
   if (!mesh_.uvs.empty()) {
     Vec2 d02 = mesh_.uvs[idx[0]] - mesh_.uvs[idx[2]], d12 = mesh_.uvs[idx[1]] - mesh_.uvs[idx[2]];
     float det = d02.x * d12.y - d02.y * d12.x;
-    if (std::abs(det) > 1e-12f) return ((p0 - p2) * d12.y - (p1 - p2) * d02.y) / det;
+    if (std::abs(det) > 1e-12f)
+      return {((p0 - p2) * d12.y - (p1 - p2) * d02.y) / det, ((p1 - p2) * d02.x - (p0 - p2) * d12.x) / det};
   }
-  return p1 - p0;  // no usable texture coordinates: the first edge keeps the frame stable
+  return {p1 - p0, p2 - p0};  // the first edge also keeps the frame stable
 }
 
 Vec3 TriangleMesh::faceNormal(size_t tri) const {
@@ -103,6 +107,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
     si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
   else
     si.uv = Vec2(b1, b2);
+  std::tie(si.dpdu, si.dpdv) = positionDerivatives(hit.primID);
   return si;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // Triangle meshes in world space (obj, ply, cube), intersected by Embree.
+#include <utility>
 #include <vector>
 #include "core/distribution.h"
 #include "core/properties.h"
@@ -31,7 +32,9 @@ class TriangleMesh : public Shape {
  private:
   Vec3 faceNormal(size_t tri) const;
   // Surface derivative along u (the shading frame's first axis, as in Mitsuba).
-  Vec3 dpdu(size_t tri) const;
+  // dp/du and dp/dv of a triangle: from its uvs where they are usable, else from the barycentric
+  // coordinates that stand in for them (p1 - p0 and p2 - p0).
+  std::pair<Vec3, Vec3> positionDerivatives(size_t tri) const;
   MeshData mesh_;
   bool flip_;
   float area_ = 0.0f;

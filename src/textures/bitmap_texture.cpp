@@ -139,6 +139,8 @@ BitmapTexture::Footprint BitmapTexture::footprint(Vec2 uvIn) const {
   const float tx = x - x0, ty = y - y0;
   const int ix = int(x0), iy = int(y0);
   f.count = 4;
+  f.tx = tx;
+  f.ty = ty;
   f.texel[0] = texel(ix, iy);
   f.texel[1] = texel(ix + 1, iy);
   f.texel[2] = texel(ix, iy + 1);
@@ -168,6 +170,18 @@ float BitmapTexture::evalFloat(Vec2 uv) const {
   float result = 0.0f;
   for (int k = 0; k < f.count; ++k) result += values_[f.texel[k]] * f.weight[k];
   return result;
+}
+
+Vec2 BitmapTexture::evalFloatGradient(Vec2 uv) const {
+  if (filter_ == TextureFilter::Nearest) return Vec2(0, 0);
+  const Footprint f = footprint(uv);
+  const float v00 = values_[f.texel[0]], v10 = values_[f.texel[1]], v01 = values_[f.texel[2]],
+              v11 = values_[f.texel[3]];
+  // Slopes per unit of the looked-up coordinates, then through to_uv's linear part (its transpose).
+  const float dx = float(width_) * ((1.0f - f.ty) * (v10 - v00) + f.ty * (v11 - v01));
+  const float dy = float(height_) * ((1.0f - f.tx) * (v01 - v00) + f.tx * (v11 - v10));
+  const auto& m = toUV_.matrix().m;
+  return Vec2(float(m[0][0] * dx + m[1][0] * dy), float(m[0][1] * dx + m[1][1] * dy));
 }
 
 Vec3 BitmapTexture::evalRGB(Vec2 uv) const {

@@ -27,6 +27,7 @@ class BitmapTexture : public Texture {
   BitmapTexture(const PixelGrid& pixels, bool raw, TextureFilter filter, TextureWrap wrap, Transform toUV);
   Spectrum evalSpectrum(Vec2 uv, const Wavelengths& wl) const override;
   float evalFloat(Vec2 uv) const override;
+  Vec2 evalFloatGradient(Vec2 uv) const override;
   float mean() const override { return mean_; }
 
   int width() const { return width_; }
@@ -45,6 +46,7 @@ class BitmapTexture : public Texture {
     int count = 0;
     size_t texel[4] = {};
     float weight[4] = {};
+    float tx = 0.0f, ty = 0.0f;  // bilinear: the position between the texel columns and rows
   };
   Footprint footprint(Vec2 uv) const;
 

@@ -15,6 +15,9 @@ class Texture : public Object {
   // The value at `uv` as a single number (roughness, opacity, a blend weight): a grey texture's
   // value, a colour texture's luminance.
   virtual float evalFloat(Vec2 uv) const = 0;
+  // The derivatives of evalFloat in u and in v (a bump map's slopes); zero where it is piecewise
+  // constant.
+  virtual Vec2 evalFloatGradient(Vec2 /*uv*/) const { return Vec2(0, 0); }
   // The mean over the unit square of uv, as a number: what a BSDF that chooses between its lobes
   // with fixed probabilities weighs them by (Mitsuba's Texture::mean).
   virtual float mean() const = 0;
