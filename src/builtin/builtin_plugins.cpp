@@ -36,10 +36,12 @@
 #include "shapes/cylinder_shape.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
+#include "shapes/instance_shape.h"
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/rectangle_shape.h"
 #include "shapes/serialized_mesh.h"
+#include "shapes/shape_group.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
 
@@ -91,6 +93,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "cylinder", makeCylinderShape);
     r.add("shape", "cube", makeCubeShape);
     r.add("shape", "feather", makeFeatherShape);
+    r.add("shape", "shapegroup", makeShapeGroup);
+    r.add("shape", "instance", makeInstanceShape);
     return r;
   }();
   return registry;
