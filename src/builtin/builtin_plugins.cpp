@@ -38,10 +38,12 @@
 #include "shapes/cylinder_shape.h"
 #include "shapes/disk_shape.h"
 #include "shapes/feather_shape.h"
+#include "shapes/instance_shape.h"
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/rectangle_shape.h"
 #include "shapes/serialized_mesh.h"
+#include "shapes/shape_group.h"
 #include "shapes/sphere_shape.h"
 #include "shapes/triangle_mesh.h"
 #include "textures/bitmap_texture.h"
@@ -99,6 +101,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "feather", makeFeatherShape);
     r.add("texture", "bitmap", makeBitmapTexture);
     r.add("texture", "checkerboard", makeCheckerboardTexture);
+    r.add("shape", "shapegroup", makeShapeGroup);
+    r.add("shape", "instance", makeInstanceShape);
     return r;
   }();
   return registry;

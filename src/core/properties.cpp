@@ -168,6 +168,12 @@ SourceLocation Properties::locationOf(const std::string& name) const {
   return location;
 }
 
+SourceLocation Properties::childLocation(const Object& child) const {
+  for (const Child& c : children_)
+    if (c.object.get() == &child) return c.location;
+  return location;
+}
+
 InputError Properties::error(const std::string& name, const std::string& message) const {
   return InputError(locationOf(name), element() + ", parameter '" + name + "': " + message);
 }

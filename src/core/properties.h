@@ -81,6 +81,9 @@ class Properties {
 
   // Where a parameter was declared (the element's own location if unknown).
   SourceLocation locationOf(const std::string& name) const;
+  // Where the nested plug-in (or the <ref> to it) `child` stands (the element's own location if
+  // it is not one of them).
+  SourceLocation childLocation(const Object& child) const;
   // An error pointing at parameter `name`.
   InputError error(const std::string& name, const std::string& message) const;
   // Throws for the first parameter or nested plug-in no factory read.

@@ -6,6 +6,7 @@
 #include "core/fast_math.h"
 #include "integrators/path_integrator.h"
 #include "sensors/perspective_sensor.h"
+#include "shapes/shape_group.h"
 
 namespace columba {
 
@@ -34,7 +35,8 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
     } else if (auto integrator = std::dynamic_pointer_cast<Integrator>(object)) {
       if (integrator_) throw InputError(source, "the scene has more than one integrator");
       integrator_ = integrator;
-    } else if (!std::dynamic_pointer_cast<BSDF>(object)) {
+    } else if (!std::dynamic_pointer_cast<BSDF>(object) && !std::dynamic_pointer_cast<ShapeGroup>(object)) {
+      // A shapegroup is rendered only through its instances.
       throw InputError(source,
                        "the scene has a top-level object that is not a shape, emitter, sensor, integrator or bsdf");
     }
@@ -80,7 +82,10 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
   rtcIntersect1(scene_, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   HitRecord hit{rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z)};
-  return shapes_[rh.hit.geomID]->interaction(ray, hit);
+  hit.geomID = rh.hit.geomID;
+  // A hit through an instance belongs to the instance, which finds the group's shape by geomID.
+  const unsigned shape = rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID ? rh.hit.geomID : rh.hit.instID[0];
+  return shapes_[shape]->interaction(ray, hit);
 }
 
 Spectrum Scene::traceThrough(Ray ray, const Wavelengths& wl, uint64_t& rays,

@@ -48,8 +48,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"shape", "bsplinecurve"}, "curves are not supported"},
       {{"shape", "linearcurve"}, "curves are not supported"},
       {{"shape", "ellipsoids"}, "ellipsoid clouds are not supported"},
-      {{"shape", "shapegroup"}, "instancing is not supported yet"},
-      {{"shape", "instance"}, "instancing is not supported yet"},
       {{"emitter", "projector"}, "the projector emitter is not supported yet"},
       {{"emitter", "sunsky"}, "the sun and sky model is not supported; use 'envmap' or 'directional'"},
       {{"sensor", "irradiancemeter"}, "only cameras are supported as sensors"},

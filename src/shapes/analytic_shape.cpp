@@ -24,8 +24,10 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
   args->bounds_o->upper_z = whi.z;
 }
 
+// `context` tells which instance, if any, the ray is traced through (intersection only).
 template <bool occlusion>
-void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, RTCRay& ray, RTCHit* hit) {
+void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, const RTCIntersectContext* context,
+                 RTCRay& ray, RTCHit* hit) {
   Vec3 o(ray.org_x, ray.org_y, ray.org_z), d(ray.dir_x, ray.dir_y, ray.dir_z);
   float t;
   if (!shape->intersectWorld(o, d, ray.tnear, ray.tfar, t)) return;
@@ -41,22 +43,22 @@ void hitCallback(const AnalyticShape* shape, unsigned primID, unsigned geomID, R
     hit->v = 0;
     hit->primID = primID;
     hit->geomID = geomID;
-    hit->instID[0] = RTC_INVALID_GEOMETRY_ID;
+    hit->instID[0] = context->instID[0];
   }
 }
 
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
   if (args->N != 1 || !args->valid[0]) return;
-  hitCallback<false>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID, rh->ray,
-                     &rh->hit);
+  hitCallback<false>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID,
+                     args->context, rh->ray, &rh->hit);
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   if (args->N != 1 || !args->valid[0]) return;
   auto* ray = reinterpret_cast<RTCRay*>(args->ray);
-  hitCallback<true>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID, *ray,
-                    nullptr);
+  hitCallback<true>(static_cast<const AnalyticShape*>(args->geometryUserPtr), args->primID, args->geomID, args->context,
+                    *ray, nullptr);
 }
 }  // namespace
 

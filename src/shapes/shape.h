@@ -15,12 +15,14 @@ class Emitter;
 class Shape;
 
 // What Embree reports for a hit, in the shape's own terms (u, v and primID are whatever the
-// shape's geometry wrote; ng is the unnormalised geometric normal in world space).
+// shape's geometry wrote; ng is the unnormalised geometric normal in the space of the Embree scene
+// holding the geometry, a shapegroup's for a hit through an instance).
 struct HitRecord {
   float t = 0.0f;
   unsigned primID = 0;
   float u = 0.0f, v = 0.0f;
   Vec3 ng;
+  unsigned geomID = 0;  // the geometry hit in that Embree scene
 };
 
 struct SurfaceInteraction {

@@ -1,0 +1,33 @@
+#pragma once
+// `instance`: a shapegroup placed in the scene by an affine `to_world`, applied on top of the
+// group's shapes' own transforms. Embree traces the group's scene through an instance geometry;
+// a hit is resolved in the group's space and its interaction carried back to the scene's.
+#include <memory>
+#include "core/properties.h"
+#include "core/transform.h"
+#include "shapes/shape.h"
+#include "shapes/shape_group.h"
+
+namespace columba {
+
+class InstanceShape : public Shape {
+ public:
+  // Embree inverts the matrix of `toWorld` itself, so the interaction maps rays and normals by its
+  // exact inverse too, not by the one `toWorld` keeps (only the transpose for a <rotate> about an
+  // axis that is not unit length, see Transform::rotate).
+  InstanceShape(std::shared_ptr<const ShapeGroup> group, const Transform& toWorld)
+      : group_(std::move(group)), toWorld_(toWorld.matrix()), toGroup_(toWorld_.inverse()) {}
+  unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
+  // `hit.geomID` is the shape hit within the group (Embree's geomID under instID[0]).
+  SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
+  size_t primitiveCount() const override { return group_->primitiveCount(); }
+
+ private:
+  std::shared_ptr<const ShapeGroup> group_;
+  Transform toWorld_, toGroup_;
+};
+
+// Factory for <shape type="instance">: a <ref> to (or a nested) shapegroup, and to_world.
+std::shared_ptr<Object> makeInstanceShape(const Properties& props);
+
+}  // namespace columba

@@ -1,0 +1,59 @@
+#include "shapes/shape_group.h"
+
+#include <stdexcept>
+#include "emitters/emitter.h"
+#include "shapes/instance_shape.h"
+
+namespace columba {
+
+ShapeGroup::~ShapeGroup() {
+  if (embreeScene_) rtcReleaseScene(embreeScene_);
+  if (embreeDevice_) rtcReleaseDevice(embreeDevice_);
+}
+
+RTCScene ShapeGroup::embreeScene(RTCDevice device) const {
+  std::lock_guard<std::mutex> lock(embreeMutex_);
+  if (embreeDevice_ == device) return embreeScene_;
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  for (size_t i = 0; i < shapes_.size(); ++i)
+    if (shapes_[i]->addToEmbree(device, scene) != i) {
+      rtcReleaseScene(scene);
+      throw std::logic_error("Embree geometry IDs are expected in insertion order");
+    }
+  rtcCommitScene(scene);
+  // The instances that use a previous device's scene keep it alive themselves.
+  if (embreeScene_) rtcReleaseScene(embreeScene_);
+  if (embreeDevice_) rtcReleaseDevice(embreeDevice_);
+  rtcRetainDevice(device);
+  embreeDevice_ = device;
+  embreeScene_ = scene;
+  return scene;
+}
+
+size_t ShapeGroup::primitiveCount() const {
+  size_t n = 0;
+  for (const auto& s : shapes_) n += s->primitiveCount();
+  return n;
+}
+
+std::shared_ptr<Object> makeShapeGroup(const Properties& props) {
+  // Embree instances one level deep, as Mitsuba does.
+  if (auto nested = props.children<ShapeGroup>(); !nested.empty())
+    throw InputError(props.childLocation(*nested.front()), "a shapegroup cannot contain another shapegroup");
+  if (auto emitters = props.children<Emitter>(); !emitters.empty())
+    throw InputError(props.childLocation(*emitters.front()),
+                     "a shapegroup cannot contain emitters: Columba, like Mitsuba, does not instance emitters");
+  std::vector<std::shared_ptr<Shape>> shapes = props.children<Shape>();
+  for (const auto& shape : shapes) {
+    if (std::dynamic_pointer_cast<InstanceShape>(shape))
+      throw InputError(props.childLocation(*shape), "a shapegroup cannot contain an instance");
+    if (shape->emitter)
+      throw InputError(props.childLocation(*shape),
+                       "a shape in a shapegroup cannot carry an area emitter: Columba, like Mitsuba, does not "
+                       "instance emitters");
+  }
+  return std::make_shared<ShapeGroup>(std::move(shapes));
+}
+
+}  // namespace columba
