@@ -53,4 +53,25 @@ PrincipledParameters readPrincipledParameters(const Properties& props) {
   return p;
 }
 
+PrincipledThinParameters readPrincipledThinParameters(const Properties& props) {
+  PrincipledThinParameters p;
+  p.baseColor = props.getSpectrum("base_color", 0.5f, SpectrumUse::Reflectance);
+  p.roughness = readFraction(props, "roughness", 0.5f);
+  p.anisotropic = readFraction(props, "anisotropic", 0.0f);
+  p.specTrans = readFraction(props, "spec_trans", 0.0f);
+  p.diffTrans = props.getFloat("diff_trans", 0.0f);
+  if (!(p.diffTrans >= 0.0f && p.diffTrans <= 2.0f)) throw props.error("diff_trans", "must lie between 0 and 2");
+  p.eta = props.getFloat("eta", 1.5f);
+  if (!(p.eta > 0.0f)) throw props.error("eta", "the relative index of refraction must be positive");
+  p.specTint = readFraction(props, "spec_tint", 0.0f);
+  p.sheen = readFraction(props, "sheen", 0.0f);
+  p.sheenTint = readFraction(props, "sheen_tint", 0.0f);
+  p.flatness = readFraction(props, "flatness", 0.0f);
+  p.specularReflectionSamplingRate = readSamplingRate(props, "specular_reflectance_sampling_rate");
+  p.specularTransmissionSamplingRate = readSamplingRate(props, "specular_transmittance_sampling_rate");
+  p.diffuseReflectionSamplingRate = readSamplingRate(props, "diffuse_reflectance_sampling_rate");
+  p.diffuseTransmissionSamplingRate = readSamplingRate(props, "diffuse_transmittance_sampling_rate");
+  return p;
+}
+
 }  // namespace columba

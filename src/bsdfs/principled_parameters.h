@@ -1,6 +1,7 @@
 #pragma once
-// The scene parameters of Mitsuba 3's `principled` BSDF, with Mitsuba's names and defaults.
-// They are constants: every parameter is read here, the one place that would read textures.
+// The scene parameters of Mitsuba 3's `principled` and `principledthin` BSDFs, with Mitsuba's
+// names and defaults. They are constants: every parameter is read here, the one place that would
+// read textures.
 #include "core/properties.h"
 #include "core/spectrum.h"
 
@@ -16,10 +17,27 @@ struct PrincipledParameters {
   float diffuseSamplingRate = 1.0f, specularSamplingRate = 1.0f, clearcoatSamplingRate = 1.0f;
 };
 
+// `principledthin`'s parameters, with Mitsuba's defaults.
+struct PrincipledThinParameters {
+  SpectralDistribution baseColor = SpectralDistribution::constant(0.5f);
+  float roughness = 0.5f, anisotropic = 0.0f, specTrans = 0.0f;
+  float diffTrans = 0.0f;  // 0 to 2: half of it is the transmitted share of the diffuse part
+  float eta = 1.5f;        // of the sheet, relative to the medium around it
+  float specTint = 0.0f, sheen = 0.0f, sheenTint = 0.0f, flatness = 0.0f;
+  float specularReflectionSamplingRate = 1.0f, specularTransmissionSamplingRate = 1.0f;
+  float diffuseReflectionSamplingRate = 1.0f, diffuseTransmissionSamplingRate = 1.0f;
+};
+
 // Reads base_color (0.5), roughness (0.5), anisotropic, metallic, spec_trans, eta or specular
 // (0.5, i.e. eta 1.5; not both), spec_tint, sheen, sheen_tint, flatness, clearcoat,
 // clearcoat_gloss (all 0), main_specular_sampling_rate, diffuse_reflectance_sampling_rate and
 // clearcoat_sampling_rate (1). Fractions outside [0, 1] are errors.
 PrincipledParameters readPrincipledParameters(const Properties& props);
+
+// Reads base_color (0.5), roughness (0.5), anisotropic, spec_trans, diff_trans (0 to 2), eta
+// (1.5), spec_tint, sheen, sheen_tint, flatness (all 0), specular_reflectance_sampling_rate,
+// specular_transmittance_sampling_rate, diffuse_reflectance_sampling_rate and
+// diffuse_transmittance_sampling_rate (1).
+PrincipledThinParameters readPrincipledThinParameters(const Properties& props);
 
 }  // namespace columba

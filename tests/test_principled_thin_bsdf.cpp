@@ -1,0 +1,173 @@
+// Mitsuba 3's `principledthin` BSDF: sampling against the density, weights, energy, symmetry
+// between the sheet's sides, reciprocity, its Lambertian limit, and reading it from a scene.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include "bsdf_test_support.h"
+#include "bsdfs/principled_thin_bsdf.h"
+#include "builtin/builtin_plugins.h"
+#include "scene/scene_loader.h"
+
+using namespace columba;
+using namespace columba::testing;
+
+namespace {
+const BSDFContext kContext;
+
+struct NamedParameters {
+  const char* name;
+  PrincipledThinParameters parameters;
+};
+
+// Every lobe: the diffuse default, a glossy translucent sheet, a sheet that mostly transmits
+// diffusely, an anisotropic one with sheen and flatness.
+std::vector<NamedParameters> parameterSets() {
+  std::vector<NamedParameters> sets;
+  sets.push_back({"default", PrincipledThinParameters{}});
+  PrincipledThinParameters glossy;
+  glossy.specTrans = 0.8f;
+  glossy.roughness = 0.4f;
+  glossy.eta = 1.33f;
+  glossy.specTint = 0.3f;
+  sets.push_back({"glossy", glossy});
+  PrincipledThinParameters translucent;
+  translucent.diffTrans = 1.5f;
+  translucent.specTrans = 0.3f;
+  translucent.roughness = 0.6f;
+  sets.push_back({"translucent", translucent});
+  PrincipledThinParameters cloth;
+  cloth.specTrans = 0.5f;
+  cloth.diffTrans = 0.6f;
+  cloth.anisotropic = 0.7f;
+  cloth.roughness = 0.5f;
+  cloth.sheen = 1.0f;
+  cloth.sheenTint = 0.5f;
+  cloth.flatness = 0.6f;
+  sets.push_back({"cloth", cloth});
+  return sets;
+}
+
+const float kAngles[] = {10.0f, 50.0f, 80.0f, 140.0f};
+
+std::shared_ptr<Object> loadThin(const std::string& parameters) {
+  ParsedScene parsed =
+      loadSceneString("<scene version=\"3.0.0\">\n<bsdf type=\"principledthin\">\n" + parameters + "\n</bsdf></scene>",
+                      "principledthin.xml", ".", {}, builtinPlugins());
+  EXPECT_EQ(parsed.objects.size(), 1u);
+  return parsed.objects.at(0);
+}
+
+std::string loadError(const std::string& parameters) {
+  try {
+    loadThin(parameters);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(PrincipledThin, SamplingMatchesPdf) {
+  const double threshold = sidakThreshold(0.01, int(parameterSets().size() * std::size(kAngles)));
+  double minP = 1.0;
+  uint64_t seed = 1;
+  for (const auto& set : parameterSets()) {
+    PrincipledThinBSDF bsdf(set.parameters);
+    for (float theta : kAngles) {
+      ChiSquareResult r = chiSquareBSDF(bsdf, directionAt(theta, 35.0f), chiSquareGrid(0.1f), 300000, seed++);
+      std::cout << set.name << " theta " << theta << ": " << r.message << "\n";
+      EXPECT_GT(r.pValue, threshold) << set.name << " theta " << theta << ": " << r.message;
+      minP = std::min(minP, r.pValue);
+    }
+  }
+  std::cout << "principledthin: min p = " << minP << " (threshold " << threshold << ")\n";
+}
+
+TEST(PrincipledThin, WeightIsEvalOverPdf) {
+  for (auto set : parameterSets()) {
+    set.parameters.baseColor = SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.2f, 0.9f});
+    PrincipledThinBSDF bsdf(set.parameters);
+    for (float theta : kAngles)
+      EXPECT_LT(maxWeightError(bsdf, directionAt(theta, 60.0f)), 2e-3) << set.name << " theta " << theta;
+  }
+}
+
+TEST(PrincipledThin, AlbedoIsAtMostOne) {
+  // A sheet does not bend light, so nothing is compressed: reflected plus transmitted at most 1.
+  // Diffuse reflection is left out (Disney's diffuse lobe is not energy-conserving).
+  PrincipledThinParameters glossy;
+  glossy.baseColor = SpectralDistribution::constant(1.0f);
+  glossy.specTrans = 1.0f;
+  glossy.roughness = 0.3f;
+  PrincipledThinParameters translucent = glossy;
+  translucent.specTrans = 0.4f;
+  translucent.diffTrans = 2.0f;
+  for (const auto& p : {glossy, translucent}) {
+    PrincipledThinBSDF bsdf(p);
+    for (float theta : {0.0f, 45.0f, 80.0f, 150.0f}) {
+      float albedo = sampledAlbedo(bsdf, directionAt(theta, 20.0f), 100000)[0];
+      std::cout << "spec_trans " << p.specTrans << " theta " << theta << ": albedo " << albedo << "\n";
+      EXPECT_LE(albedo, 1.01f) << "spec_trans " << p.specTrans << " theta " << theta;
+      EXPECT_GT(albedo, 0.5f) << "spec_trans " << p.specTrans << " theta " << theta;
+    }
+  }
+}
+
+TEST(PrincipledThin, FullDiffuseTransmissionIsLambertian) {
+  // diff_trans 2 with no specular part: base / pi through the sheet, nothing reflected.
+  PrincipledThinParameters p;
+  p.diffTrans = 2.0f;
+  p.baseColor = SpectralDistribution::constant(0.7f);
+  PrincipledThinBSDF bsdf(p);
+  const Wavelengths wl = testWavelengths();
+  const Vec3 wi = directionAt(30.0f), through = directionAt(120.0f, 200.0f), back = directionAt(50.0f, 10.0f);
+  EXPECT_NEAR(bsdf.eval(kContext, wi, through, wl)[0], 0.7f * kInvPi * std::abs(through.z), 1e-6f);
+  EXPECT_EQ(bsdf.eval(kContext, wi, back, wl)[0], 0.0f);
+  EXPECT_NEAR(sampledAlbedo(bsdf, wi, 1000)[0], 0.7f, 1e-4f);
+}
+
+TEST(PrincipledThin, BothSidesAreTheSameAndReflectionIsReciprocal) {
+  // Transmission is not reciprocal: as in Mitsuba, a transmitted pair counts only where wo leaves
+  // through the back of the half vector of wi and wo's mirror image, which is not symmetric in
+  // the two directions.
+  PrincipledThinParameters p = parameterSets().back().parameters;
+  p.baseColor = SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.1f, 0.8f});
+  PrincipledThinBSDF bsdf(p);
+  const Wavelengths wl = testWavelengths();
+  PCG32 rng(8, 8);
+  for (int n = 0; n < 300; ++n) {
+    Vec3 a = directionAt(85.0f * rng.nextFloat(), 360.0f * rng.nextFloat());
+    Vec3 b = directionAt(175.0f * rng.nextFloat(), 360.0f * rng.nextFloat());
+    Vec3 aBelow(a.x, a.y, -a.z), bFlipped(b.x, b.y, -b.z);
+    Spectrum fab = bsdf.eval(kContext, a, b, wl), flipped = bsdf.eval(kContext, aBelow, bFlipped, wl);
+    for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(fab[i], flipped[i], 1e-5f * std::max(1.0f, fab[i]));
+    if (b.z < 0.0f) continue;
+    Spectrum fba = bsdf.eval(kContext, b, a, wl) / a.z;
+    for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(fab[i] / b.z, fba[i], 1e-4f * std::max(1.0f, fba[i]));
+  }
+}
+
+TEST(PrincipledThin, SceneDefaultsAndMistakes) {
+  const Wavelengths wl = testWavelengths();
+  auto defaults = std::dynamic_pointer_cast<BSDF>(loadThin(""));
+  auto explicitDefaults = std::dynamic_pointer_cast<BSDF>(loadThin(R"(
+    <float name="base_color" value="0.5"/> <float name="roughness" value="0.5"/> <float name="anisotropic" value="0"/>
+    <float name="spec_trans" value="0"/> <float name="diff_trans" value="0"/> <float name="eta" value="1.5"/>
+    <float name="spec_tint" value="0"/> <float name="sheen" value="0"/> <float name="sheen_tint" value="0"/>
+    <float name="flatness" value="0"/> <float name="specular_reflectance_sampling_rate" value="1"/>
+    <float name="specular_transmittance_sampling_rate" value="1"/>
+    <float name="diffuse_reflectance_sampling_rate" value="1"/>
+    <float name="diffuse_transmittance_sampling_rate" value="1"/>)"));
+  ASSERT_TRUE(defaults && explicitDefaults);
+  // Grazing, where the roughness-driven retro-reflection shows.
+  Vec3 wi = directionAt(70.0f), wo = directionAt(75.0f, 170.0f);
+  float a = defaults->eval(kContext, wi, wo, wl)[0];
+  EXPECT_GT(a, 0.0f);
+  EXPECT_FLOAT_EQ(a, explicitDefaults->eval(kContext, wi, wo, wl)[0]);
+  // By default the sheet is opaque and diffuse: nothing passes.
+  EXPECT_EQ(defaults->eval(kContext, wi, -wo, wl)[0], 0.0f);
+
+  EXPECT_NE(loadError(R"(<float name="diff_trans" value="2.5"/>)").find("diff_trans"), std::string::npos);
+  EXPECT_NE(loadError(R"(<float name="specular" value="0.5"/>)").find("specular"), std::string::npos);
+  EXPECT_NE(loadError(R"(<float name="spec_trans" value="-0.1"/>)").find("spec_trans"), std::string::npos);
+}
