@@ -126,6 +126,36 @@ TEST(PrincipledThin, FullDiffuseTransmissionIsLambertian) {
   EXPECT_NEAR(sampledAlbedo(bsdf, wi, 1000)[0], 0.7f, 1e-4f);
 }
 
+TEST(PrincipledThin, AgreesWithMitsubasReferenceValues) {
+  // Mitsuba 3's own regression values (src/bsdfs/tests/test_principledthin.py,
+  // test03_eval_pdf_thin), toward wo at theta = i / 19 * 90 degrees in the plane of the
+  // unnormalised wi = (1, 0, 1). Mitsuba's Fresnel term takes that pair's cos(theta) above 1 as
+  // given where Columba's clamps it: the source of up to 0.8 % in eval; imitating it, the values
+  // agree to 2e-7. The density has no Fresnel term and agrees as it is.
+  const double pdfs[] = {0.18230389, 0.17071931, 0.16046360, 0.15113641, 0.14242139, 0.13407253, 0.12590222,
+                         0.11777049, 0.10957616, 0.10124958, 0.09274674, 0.08404446, 0.07513650, 0.06603056,
+                         0.05674567, 0.04731012, 0.03775979, 0.02813668, 0.01848774, 0.00886382};
+  const double values[] = {0.04944334, 0.04872140, 0.04784624, 0.04680282, 0.04557877, 0.04416417, 0.04255125,
+                           0.04073422, 0.03870923, 0.03647450, 0.03403011, 0.03137692, 0.02851360, 0.02543111,
+                           0.02210502, 0.01848825, 0.01451063, 0.01009628, 0.00521620, 3.89942e-18};
+  PrincipledThinParameters p;  // base_color and roughness at their defaults
+  p.eta = 1.5f;
+  p.anisotropic = 0.5f;
+  p.sheen = 0.5f;
+  p.sheenTint = 0.2f;
+  p.specTrans = 0.5f;
+  p.flatness = 0.5f;
+  p.diffTrans = 0.6f;
+  PrincipledThinBSDF bsdf(p);
+  const Vec3 wi(1.0f, 0.0f, 1.0f);
+  for (int i = 0; i < 20; ++i) {
+    double theta = i / 19.0 * kPiDouble / 2.0;
+    Vec3 wo(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+    EXPECT_NEAR(bsdf.eval(kContext, wi, wo, testWavelengths())[0], values[i], 1e-2 * values[i]) << i;
+    EXPECT_NEAR(bsdf.pdf(kContext, wi, wo, testWavelengths()), pdfs[i], 1e-5 * pdfs[i]) << i;
+  }
+}
+
 TEST(PrincipledThin, BothSidesAreTheSameAndReflectionIsReciprocal) {
   // Transmission is not reciprocal: as in Mitsuba, a transmitted pair counts only where wo leaves
   // through the back of the half vector of wi and wo's mirror image, which is not symmetric in
