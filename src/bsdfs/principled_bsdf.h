@@ -6,12 +6,14 @@
 //   the base colour's Schlick term (metallic) and a base-tinted Schlick term (spec_tint);
 // - specular transmission (bsdf): rough refraction tinted by sqrt(base_color), both ways;
 // - diffuse (brdf): Disney's diffuse with retro-reflection, blended toward the subsurface
-//   approximation by flatness, plus sheen, sheen (1 - metallic) tinted by sheen_tint;
+//   approximation by flatness; with it, where brdf > 0, the sheen, weighted sheen (1 - metallic)
+//   and tinted by sheen_tint;
 // - clearcoat: GTR1 normals, Schlick Fresnel with R0 = 0.04, weight clearcoat / 4.
-// From below the surface (wi.z < 0) only the dielectric interface remains, weighted by bsdf.
-// Sampling picks diffuse, clearcoat or specular with weights brdf, clearcoat / 4 and 1 (each
-// times its sampling rate); within specular, reflection has the probability 1 - bsdf (1 - F)
-// (F from below), F the dielectric Fresnel term at the visible normal drawn.
+// The lobes add up: with a white base the diffuse and specular lobes together reflect more than
+// arrives (as in Mitsuba). From below (wi.z < 0) only the dielectric interface remains, weighted
+// by bsdf. Sampling picks diffuse, clearcoat or specular with weights brdf, clearcoat / 4 and 1,
+// each times its sampling rate; a specular sample reflects with probability 1 - bsdf (1 - F)
+// from above and F from below, F the dielectric Fresnel term at the visible normal drawn.
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"

@@ -1,7 +1,8 @@
 #pragma once
 // Terms of the Disney principled model (Burley 2012, "Physically Based Shading at Disney";
 // Burley 2015, "Extending the Disney BRDF to a BSDF with Integrated Subsurface Scattering") in
-// the form Mitsuba 3's `principled` BSDF uses them. Directions are in the local shading frame.
+// the form Mitsuba 3's `principled` and `principledthin` BSDFs use them. Directions are in the
+// local shading frame.
 #include "bsdfs/microfacet.h"
 #include "core/spectrum.h"
 #include "core/vector.h"
