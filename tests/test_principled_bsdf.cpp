@@ -27,7 +27,7 @@ PrincipledParameters withBase(float base) {
 }
 
 // Parameter sets exercising every lobe: the plastic-like default, an anisotropic metal, a clear
-// coat, a sheen, partly and fully transmissive glass.
+// coat, a sheen, partly and fully transmissive glass, and an interior less dense than outside.
 std::vector<NamedParameters> parameterSets() {
   std::vector<NamedParameters> sets;
   sets.push_back({"default", PrincipledParameters{}});
@@ -55,6 +55,14 @@ std::vector<NamedParameters> parameterSets() {
   glass.roughness = 0.5f;
   glass.anisotropic = 0.5f;
   sets.push_back({"glass", glass});
+  // An interior less dense than the exterior: total internal reflection from above.
+  PrincipledParameters lessDense;
+  lessDense.roughness = 0.8f;
+  lessDense.metallic = 0.2f;
+  lessDense.clearcoat = 1.0f;
+  lessDense.specTrans = 0.5f;
+  lessDense.eta = 0.5f;
+  sets.push_back({"eta 0.5", lessDense});
   return sets;
 }
 
