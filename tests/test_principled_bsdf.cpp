@@ -66,7 +66,7 @@ std::vector<NamedParameters> parameterSets() {
   return sets;
 }
 
-bool transmits(const PrincipledParameters& p) { return p.specTrans > 0.0f && p.metallic < 1.0f; }
+bool transmits(const PrincipledParameters& p) { return p.specTrans.mean() > 0.0f && p.metallic.mean() < 1.0f; }
 
 // wi above the surface, and below it for the sets that transmit.
 std::vector<float> anglesFor(const PrincipledParameters& p) {
@@ -102,7 +102,7 @@ TEST(Principled, SamplingMatchesPdf) {
     PrincipledBSDF bsdf(set.parameters);
     // The clearcoat's GTR1 lobe (alpha 0.07 here) and refraction need the finer grid.
     ChiSquareGrid grid =
-        set.parameters.clearcoat > 0.0f || transmits(set.parameters) ? chiSquareGrid(0.1f) : chiSquareGrid(0.3f);
+        set.parameters.clearcoat.mean() > 0.0f || transmits(set.parameters) ? chiSquareGrid(0.1f) : chiSquareGrid(0.3f);
     for (float theta : anglesFor(set.parameters)) {
       ChiSquareResult r = chiSquareBSDF(bsdf, directionAt(theta, 35.0f), grid, 300000, seed++);
       std::cout << set.name << " theta " << theta << ": " << r.message << "\n";
@@ -159,7 +159,7 @@ TEST(Principled, AlbedoIsAtMostOne) {
         energy += s->weight[0] * scale / n;
       }
       // From below only the dielectric interface remains, weighted by (1 - metallic) spec_trans.
-      double bound = inside ? (1.0 - set.parameters.metallic) * set.parameters.specTrans : 1.0;
+      double bound = inside ? (1.0 - set.parameters.metallic.mean()) * set.parameters.specTrans.mean() : 1.0;
       std::cout << set.name << " theta " << theta << ": albedo " << energy << " (at most " << bound << ")\n";
       EXPECT_LE(energy, bound + 0.01) << set.name << " theta " << theta;
       EXPECT_GT(energy, 0.3 * bound) << set.name << " theta " << theta;
@@ -169,14 +169,15 @@ TEST(Principled, AlbedoIsAtMostOne) {
 
 TEST(Principled, SmoothMetalReflectsItsBaseColourAtNormalIncidence) {
   // Schlick's F(0) = R0 = base_color, and a near-delta GGX lobe reflects all it gets.
+  const SpectralDistribution base = SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.9f, 0.3f});
   PrincipledParameters p;
-  p.baseColor = SpectralDistribution::piecewiseLinear({400.0f, 700.0f}, {0.9f, 0.3f});
+  p.baseColor = base;
   p.metallic = 1.0f;
   p.roughness = 0.05f;
   PrincipledBSDF bsdf(p);
   Spectrum albedo = sampledAlbedo(bsdf, directionAt(0.0f), 20000);
   const Wavelengths wl = testWavelengths();
-  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(albedo[i], p.baseColor.eval(wl[i]), 0.01f) << wl[i];
+  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(albedo[i], base.eval(wl[i]), 0.01f) << wl[i];
 }
 
 TEST(Principled, SmoothGlassSplitsAsFresnelSays) {
@@ -320,4 +321,33 @@ TEST(Principled, SceneMistakesAreErrors) {
   EXPECT_NE(loadError(R"(<float name="roughness" value="1.5"/>)").find("roughness"), std::string::npos);
   EXPECT_NE(loadError(R"(<float name="eta" value="-1"/>)").find("eta"), std::string::npos);
   EXPECT_EQ(loadError(R"(<float name="spec_trans" value="1"/> <float name="eta" value="1.33"/>)"), "");
+}
+
+TEST(Principled, TexturedParametersAreTakenAtTheShadingPoint) {
+  // A checkerboard of base colours and of roughnesses: at each point the BSDF is the one with
+  // that point's constants.
+  const std::string constants = R"(<float name="metallic" value="0.4"/> <float name="clearcoat" value="0.5"/>
+    <float name="spec_trans" value="0.3"/> <float name="sheen" value="0.6"/> <float name="sheen_tint" value="0.5"/>)";
+  auto textured = std::dynamic_pointer_cast<BSDF>(loadPrincipled(constants + R"(
+    <texture type="checkerboard" name="base_color"><rgb name="color0" value="0.8, 0.3, 0.1"/>
+      <rgb name="color1" value="0.1, 0.4, 0.7"/></texture>
+    <texture type="checkerboard" name="roughness"><float name="color0" value="0.3"/>
+      <float name="color1" value="0.7"/></texture>)"));
+  auto first = std::dynamic_pointer_cast<BSDF>(loadPrincipled(
+      constants + R"(<rgb name="base_color" value="0.8, 0.3, 0.1"/> <float name="roughness" value="0.3"/>)"));
+  auto second = std::dynamic_pointer_cast<BSDF>(loadPrincipled(
+      constants + R"(<rgb name="base_color" value="0.1, 0.4, 0.7"/> <float name="roughness" value="0.7"/>)"));
+  ASSERT_TRUE(textured && first && second);
+  const Wavelengths wl = testWavelengths();
+  const BSDFContext inFirst{nullptr, Vec2(0.25f, 0.25f)}, inSecond{nullptr, Vec2(0.75f, 0.25f)};
+  const Vec3 wi = directionAt(35.0f), wo = directionAt(50.0f, 160.0f), below = directionAt(150.0f, 200.0f);
+  for (const Vec3& out : {wo, below}) {
+    for (int i = 0; i < kSpectrumSamples; ++i) {
+      EXPECT_FLOAT_EQ(textured->eval(inFirst, wi, out, wl)[i], first->eval(inFirst, wi, out, wl)[i]);
+      EXPECT_FLOAT_EQ(textured->eval(inSecond, wi, out, wl)[i], second->eval(inSecond, wi, out, wl)[i]);
+    }
+    EXPECT_FLOAT_EQ(textured->pdf(inFirst, wi, out, wl), first->pdf(inFirst, wi, out, wl));
+    EXPECT_FLOAT_EQ(textured->pdf(inSecond, wi, out, wl), second->pdf(inSecond, wi, out, wl));
+  }
+  EXPECT_NE(textured->eval(inFirst, wi, wo, wl)[0], textured->eval(inSecond, wi, wo, wl)[0]);
 }

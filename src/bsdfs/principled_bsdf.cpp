@@ -7,17 +7,25 @@
 
 namespace columba {
 
-PrincipledBSDF::PrincipledBSDF(PrincipledParameters parameters)
-    : p_(std::move(parameters)), baseLuminance_(p_.baseColor.luminance()) {}
+PrincipledBSDF::PrincipledBSDF(PrincipledParameters parameters) : p_(std::move(parameters)) {}
 
-PrincipledBSDF::Material PrincipledBSDF::materialAt(const BSDFContext&, const Wavelengths& wl) const {
-  Spectrum base = p_.baseColor.sample(wl);
+PrincipledBSDF::Material PrincipledBSDF::materialAt(const BSDFContext& ctx, const Wavelengths& wl) const {
+  const Vec2 uv = ctx.uv;
+  const Spectrum base = p_.baseColor.eval(uv, wl);
+  const float metallic = p_.metallic.eval(uv), specTrans = p_.specTrans.eval(uv), roughness = p_.roughness.eval(uv);
   return Material{base,
-                  tintColour(base, baseLuminance_),
-                  (1.0f - p_.metallic) * (1.0f - p_.specTrans),
-                  (1.0f - p_.metallic) * p_.specTrans,
-                  principledDistribution(p_.roughness, p_.anisotropic),
-                  GTR1Distribution::fromGloss(p_.clearcoatGloss)};
+                  tintColour(base, p_.baseColor.evalFloat(uv)),
+                  roughness,
+                  metallic,
+                  p_.specTint.eval(uv),
+                  p_.sheen.eval(uv),
+                  p_.sheenTint.eval(uv),
+                  p_.flatness.eval(uv),
+                  p_.clearcoat.eval(uv),
+                  (1.0f - metallic) * (1.0f - specTrans),
+                  (1.0f - metallic) * specTrans,
+                  principledDistribution(roughness, p_.anisotropic.eval(uv)),
+                  GTR1Distribution::fromGloss(p_.clearcoatGloss.eval(uv))};
 }
 
 PrincipledBSDF::Strategies PrincipledBSDF::strategies(const Material& material, bool front) const {
@@ -28,7 +36,7 @@ PrincipledBSDF::Strategies PrincipledBSDF::strategies(const Material& material, 
   }
   s.diffuse = material.diffuseWeight * p_.diffuseSamplingRate;
   // The clearcoat carries about a quarter of the main specular lobe's energy.
-  s.clearcoat = 0.25f * p_.clearcoat * p_.clearcoatSamplingRate;
+  s.clearcoat = 0.25f * material.clearcoat * p_.clearcoatSamplingRate;
   s.specular = p_.specularSamplingRate;
   float total = s.diffuse + s.clearcoat + s.specular;
   if (!(total > 0.0f)) return Strategies{};
@@ -47,9 +55,9 @@ Spectrum PrincipledBSDF::frontFresnel(const Material& material, float cosI, floa
   float weight = schlickFresnelWeight(cosI, p_.eta);
   Spectrum metal = schlickFresnel(material.baseColor, weight);
   Spectrum tinted = schlickFresnel(material.tint * normalIncidenceReflectance(p_.eta), weight);
-  float dielectric = 1.0f - p_.metallic;
-  return Spectrum(dielectric * (1.0f - p_.specTint) * dielectricFresnel) + metal * p_.metallic +
-         tinted * (dielectric * p_.specTint);
+  float dielectric = 1.0f - material.metallic;
+  return Spectrum(dielectric * (1.0f - material.specTint) * dielectricFresnel) + metal * material.metallic +
+         tinted * (dielectric * material.specTint);
 }
 
 Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -67,9 +75,9 @@ Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3
     if (pair.reflection) {
       value += (front ? frontFresnel(material, cosI, fresnel) : Spectrum(material.transmissionWeight * fresnel)) *
                microfacet;
-      if (front && p_.clearcoat > 0.0f) {
+      if (front && material.clearcoat > 0.0f) {
         float coatFresnel = 0.04f + 0.96f * schlickFresnelWeight(cosI, p_.eta);  // Schlick, R0 = 0.04
-        value += Spectrum(0.25f * p_.clearcoat * coatFresnel * material.clearcoat.D(pair.m) *
+        value += Spectrum(0.25f * material.clearcoat * coatFresnel * material.coat.D(pair.m) *
                           clearcoatShadowing(pair.wi, pair.wo, pair.m) * cosTheta(wo));
       }
     } else if (material.transmissionWeight > 0.0f) {
@@ -82,11 +90,11 @@ Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3
   if (front && cosTheta(wo) > 0.0f && material.diffuseWeight > 0.0f) {
     // For a front-side reflection the pair is always valid: m is the half vector.
     float cosD = dot(pair.m, wo);
-    float diffuse = principledDiffuse(cosTheta(wi), cosTheta(wo), cosD, p_.roughness, p_.flatness);
+    float diffuse = principledDiffuse(cosTheta(wi), cosTheta(wo), cosD, material.roughness, material.flatness);
     value += material.baseColor * (material.diffuseWeight * diffuse * kInvPi * cosTheta(wo));
-    if (p_.sheen > 0.0f) {
-      value += sheenColour(material.tint, p_.sheenTint) *
-               (p_.sheen * (1.0f - p_.metallic) * schlickWeight(cosD) * cosTheta(wo));
+    if (material.sheen > 0.0f) {
+      value += sheenColour(material.tint, material.sheenTint) *
+               (material.sheen * (1.0f - material.metallic) * schlickWeight(cosD) * cosTheta(wo));
     }
   }
   return value;
@@ -107,7 +115,7 @@ float PrincipledBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo
     float share = pair.reflection ? reflectionShare : 1.0f - reflectionShare;
     density += strategy.specular * share * interfaceDensity(material.specular, pair);
     if (pair.reflection && strategy.clearcoat > 0.0f)
-      density += strategy.clearcoat * material.clearcoat.pdf(pair.m) / (4.0f * dot(pair.wo, pair.m));
+      density += strategy.clearcoat * material.coat.pdf(pair.m) / (4.0f * dot(pair.wo, pair.m));
   }
   if (front && cosTheta(wo) > 0.0f) density += strategy.diffuse * cosineHemispherePdf(cosTheta(wo));
   return density;
@@ -125,7 +133,7 @@ std::optional<BSDFSample> PrincipledBSDF::sample(const BSDFContext& ctx, const V
   if (uComponent < strategy.diffuse) {
     wo = sampleCosineHemisphere(u);
   } else if (uComponent < strategy.diffuse + strategy.clearcoat) {
-    Vec3 m = material.clearcoat.sample(u);
+    Vec3 m = material.coat.sample(u);
     wo = reflect(wi, m);
     if (!(dot(wi, m) > 0.0f && cosTheta(wo) > 0.0f)) return std::nullopt;
   } else {

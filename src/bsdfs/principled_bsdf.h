@@ -35,10 +35,11 @@ class PrincipledBSDF : public BSDF {
   // The parameters at one shading point and the quantities derived from them.
   struct Material {
     Spectrum baseColor;
-    Spectrum tint;                            // the base colour at unit luminance
+    Spectrum tint;  // the base colour at unit luminance
+    float roughness, metallic, specTint, sheen, sheenTint, flatness, clearcoat;
     float diffuseWeight, transmissionWeight;  // brdf and bsdf above
     MicrofacetDistribution specular;
-    GTR1Distribution clearcoat;
+    GTR1Distribution coat;
   };
   // Probabilities of the sampling strategies for light arriving on the given side.
   struct Strategies {
@@ -52,7 +53,6 @@ class PrincipledBSDF : public BSDF {
   Spectrum frontFresnel(const Material& material, float cosI, float dielectricFresnel) const;
 
   PrincipledParameters p_;
-  float baseLuminance_;
 };
 
 std::shared_ptr<Object> makePrincipledBSDF(const Properties& props);

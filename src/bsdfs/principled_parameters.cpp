@@ -5,11 +5,17 @@
 namespace columba {
 
 namespace {
-// A parameter meant to lie in [0, 1] (textures would be read here too).
-float readFraction(const Properties& props, const std::string& name, float def) {
-  float value = props.getFloat(name, def);
-  if (!(value >= 0.0f && value <= 1.0f)) throw props.error(name, "must lie between 0 and 1");
+// A value or texture meant to lie in [0, upper]; a constant outside it is an error.
+FloatParameter readBounded(const Properties& props, const std::string& name, float def, float upper,
+                           const std::string& range) {
+  FloatParameter value = readFloatParameter(props, name, def);
+  if (!value.isTextured() && !(value.mean() >= 0.0f && value.mean() <= upper))
+    throw props.error(name, "must lie between " + range);
   return value;
+}
+
+FloatParameter readFraction(const Properties& props, const std::string& name, float def) {
+  return readBounded(props, name, def, 1.0f, "0 and 1");
 }
 
 float readSamplingRate(const Properties& props, const std::string& name) {
@@ -21,7 +27,7 @@ float readSamplingRate(const Properties& props, const std::string& name) {
 
 PrincipledParameters readPrincipledParameters(const Properties& props) {
   PrincipledParameters p;
-  p.baseColor = props.getSpectrum("base_color", 0.5f, SpectrumUse::Reflectance);
+  p.baseColor = readSpectrumParameter(props, "base_color", 0.5f, SpectrumUse::Reflectance);
   p.roughness = readFraction(props, "roughness", 0.5f);
   p.anisotropic = readFraction(props, "anisotropic", 0.0f);
   p.metallic = readFraction(props, "metallic", 0.0f);
@@ -37,7 +43,7 @@ PrincipledParameters readPrincipledParameters(const Properties& props) {
   p.clearcoatSamplingRate = readSamplingRate(props, "clearcoat_sampling_rate");
 
   // An index of exactly 1 (specular 0) would make the transmission lobe a delta: Mitsuba nudges it.
-  const bool transmits = p.specTrans > 0.0f;
+  const bool transmits = p.specTrans.isTextured() || p.specTrans.mean() > 0.0f;
   if (props.has("eta")) {
     if (props.has("specular")) throw props.error("specular", "give either 'eta' or 'specular', not both");
     p.eta = props.getFloat("eta");
@@ -55,14 +61,14 @@ PrincipledParameters readPrincipledParameters(const Properties& props) {
 
 PrincipledThinParameters readPrincipledThinParameters(const Properties& props) {
   PrincipledThinParameters p;
-  p.baseColor = props.getSpectrum("base_color", 0.5f, SpectrumUse::Reflectance);
+  p.baseColor = readSpectrumParameter(props, "base_color", 0.5f, SpectrumUse::Reflectance);
   p.roughness = readFraction(props, "roughness", 0.5f);
   p.anisotropic = readFraction(props, "anisotropic", 0.0f);
   p.specTrans = readFraction(props, "spec_trans", 0.0f);
-  p.diffTrans = props.getFloat("diff_trans", 0.0f);
-  if (!(p.diffTrans >= 0.0f && p.diffTrans <= 2.0f)) throw props.error("diff_trans", "must lie between 0 and 2");
-  p.eta = props.getFloat("eta", 1.5f);
-  if (!(p.eta > 0.0f)) throw props.error("eta", "the relative index of refraction must be positive");
+  p.diffTrans = readBounded(props, "diff_trans", 0.0f, 2.0f, "0 and 2");
+  p.eta = readFloatParameter(props, "eta", 1.5f);
+  if (!p.eta.isTextured() && !(p.eta.mean() > 0.0f))
+    throw props.error("eta", "the relative index of refraction must be positive");
   p.specTint = readFraction(props, "spec_tint", 0.0f);
   p.sheen = readFraction(props, "sheen", 0.0f);
   p.sheenTint = readFraction(props, "sheen_tint", 0.0f);

@@ -26,22 +26,33 @@ SheetPair sheetPair(const Vec3& wi, const Vec3& wo) {
 }
 }  // namespace
 
-PrincipledThinBSDF::PrincipledThinBSDF(PrincipledThinParameters parameters)
-    : p_(std::move(parameters)), baseLuminance_(p_.baseColor.luminance()) {}
+PrincipledThinBSDF::PrincipledThinBSDF(PrincipledThinParameters parameters) : p_(std::move(parameters)) {}
 
-PrincipledThinBSDF::Material PrincipledThinBSDF::materialAt(const BSDFContext&, const Wavelengths& wl) const {
-  Spectrum base = p_.baseColor.sample(wl);
-  return Material{base, tintColour(base, baseLuminance_), principledDistribution(p_.roughness, p_.anisotropic),
-                  principledDistribution((0.65f * p_.eta - 0.35f) * p_.roughness, p_.anisotropic)};
+PrincipledThinBSDF::Material PrincipledThinBSDF::materialAt(const BSDFContext& ctx, const Wavelengths& wl) const {
+  const Vec2 uv = ctx.uv;
+  const Spectrum base = p_.baseColor.eval(uv, wl);
+  const float roughness = p_.roughness.eval(uv), anisotropic = p_.anisotropic.eval(uv), eta = p_.eta.eval(uv);
+  return Material{base,
+                  tintColour(base, p_.baseColor.evalFloat(uv)),
+                  roughness,
+                  p_.specTrans.eval(uv),
+                  0.5f * p_.diffTrans.eval(uv),
+                  eta,
+                  p_.specTint.eval(uv),
+                  p_.sheen.eval(uv),
+                  p_.sheenTint.eval(uv),
+                  p_.flatness.eval(uv),
+                  principledDistribution(roughness, anisotropic),
+                  principledDistribution((0.65f * eta - 0.35f) * roughness, anisotropic)};
 }
 
-PrincipledThinBSDF::Strategies PrincipledThinBSDF::strategies() const {
+PrincipledThinBSDF::Strategies PrincipledThinBSDF::strategies(const Material& material) const {
   Strategies s;
-  float diffTrans = 0.5f * p_.diffTrans;
-  s.specularReflection = 0.5f * p_.specTrans * p_.specularReflectionSamplingRate;
-  s.specularTransmission = 0.5f * p_.specTrans * p_.specularTransmissionSamplingRate;
-  s.diffuseReflection = (1.0f - p_.specTrans) * (1.0f - diffTrans) * p_.diffuseReflectionSamplingRate;
-  s.diffuseTransmission = (1.0f - p_.specTrans) * diffTrans * p_.diffuseTransmissionSamplingRate;
+  const float diffTrans = material.diffTrans;
+  s.specularReflection = 0.5f * material.specTrans * p_.specularReflectionSamplingRate;
+  s.specularTransmission = 0.5f * material.specTrans * p_.specularTransmissionSamplingRate;
+  s.diffuseReflection = (1.0f - material.specTrans) * (1.0f - diffTrans) * p_.diffuseReflectionSamplingRate;
+  s.diffuseTransmission = (1.0f - material.specTrans) * diffTrans * p_.diffuseTransmissionSamplingRate;
   float total = s.specularReflection + s.specularTransmission + s.diffuseReflection + s.diffuseTransmission;
   if (!(total > 0.0f)) return Strategies{};
   s.specularReflection /= total;
@@ -57,32 +68,33 @@ Spectrum PrincipledThinBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const 
   const SheetPair pair = sheetPair(wi, wo);
   const Vec3 m = normalize(pair.wi + pair.woAbove);
   const float cosI = cosTheta(pair.wi), cosO = std::abs(cosTheta(pair.wo));
-  const float diffTrans = 0.5f * p_.diffTrans, diffuseWeight = 1.0f - p_.specTrans;
+  const float diffTrans = material.diffTrans, diffuseWeight = 1.0f - material.specTrans;
 
   Spectrum value(0.0f);
   // wi meets the front of m, and wo leaves on m's side (reflection) or through it (transmission).
   bool compatible = dot(pair.wi, m) > 0.0f && (dot(pair.wo, m) > 0.0f) == pair.reflection;
-  if (p_.specTrans > 0.0f && compatible) {
+  if (material.specTrans > 0.0f && compatible) {
     float cosIm = dot(pair.wi, m);
-    float fresnel = fresnelDielectric(cosIm, p_.eta);
+    float fresnel = fresnelDielectric(cosIm, material.eta);
     if (pair.reflection) {
-      Spectrum tinted =
-          schlickFresnel(material.tint * normalIncidenceReflectance(p_.eta), schlickFresnelWeight(cosIm, p_.eta));
-      Spectrum sheetFresnel = Spectrum((1.0f - p_.specTint) * fresnel) + tinted * p_.specTint;
+      Spectrum tinted = schlickFresnel(material.tint * normalIncidenceReflectance(material.eta),
+                                       schlickFresnelWeight(cosIm, material.eta));
+      Spectrum sheetFresnel = Spectrum((1.0f - material.specTint) * fresnel) + tinted * material.specTint;
       const MicrofacetDistribution& d = material.reflection;
-      value += sheetFresnel * (p_.specTrans * d.D(m) * d.G(pair.wi, pair.wo, m) / (4.0f * cosI));
+      value += sheetFresnel * (material.specTrans * d.D(m) * d.G(pair.wi, pair.wo, m) / (4.0f * cosI));
     } else {
       const MicrofacetDistribution& d = material.transmission;
-      value +=
-          material.baseColor * (p_.specTrans * (1.0f - fresnel) * d.D(m) * d.G(pair.wi, pair.wo, m) / (4.0f * cosI));
+      value += material.baseColor *
+               (material.specTrans * (1.0f - fresnel) * d.D(m) * d.G(pair.wi, pair.wo, m) / (4.0f * cosI));
     }
   }
   if (pair.reflection && diffTrans < 1.0f) {
     float cosD = dot(m, pair.wo);
-    float diffuse = principledDiffuse(cosI, cosO, cosD, p_.roughness, p_.flatness);
+    float diffuse = principledDiffuse(cosI, cosO, cosD, material.roughness, material.flatness);
     float weight = diffuseWeight * (1.0f - diffTrans) * cosO;
     value += material.baseColor * (weight * diffuse * kInvPi);
-    if (p_.sheen > 0.0f) value += sheenColour(material.tint, p_.sheenTint) * (weight * p_.sheen * schlickWeight(cosD));
+    if (material.sheen > 0.0f)
+      value += sheenColour(material.tint, material.sheenTint) * (weight * material.sheen * schlickWeight(cosD));
   } else if (!pair.reflection && diffTrans > 0.0f) {
     value += material.baseColor * (diffuseWeight * diffTrans * kInvPi * cosO);
   }
@@ -91,12 +103,12 @@ Spectrum PrincipledThinBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const 
 
 float PrincipledThinBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return 0.0f;
-  const Strategies strategy = strategies();
+  const Material material = materialAt(ctx, wl);
+  const Strategies strategy = strategies(material);
   const SheetPair pair = sheetPair(wi, wo);
   float density = pair.reflection ? strategy.diffuseReflection * cosineHemispherePdf(cosTheta(pair.wo))
                                   : strategy.diffuseTransmission * cosineHemispherePdf(-cosTheta(pair.wo));
-  if (p_.specTrans > 0.0f) {
-    const Material material = materialAt(ctx, wl);
+  if (material.specTrans > 0.0f) {
     const Vec3 m = normalize(pair.wi + pair.woAbove);
     bool compatible = dot(pair.wi, m) > 0.0f && (dot(pair.wo, m) > 0.0f) == pair.reflection;
     if (compatible) {
@@ -115,8 +127,8 @@ std::optional<BSDFSample> PrincipledThinBSDF::sample(const BSDFContext& ctx, con
   if (cosTheta(wi) == 0.0f) return std::nullopt;
   const bool flip = cosTheta(wi) < 0.0f;
   const Vec3 above = flip ? mirroredThroughSurface(wi) : wi;
-  const Strategies strategy = strategies();
   const Material material = materialAt(ctx, wl);
+  const Strategies strategy = strategies(material);
 
   Vec3 wo;  // seen from wi's side
   float specular = strategy.specularReflection + strategy.specularTransmission;

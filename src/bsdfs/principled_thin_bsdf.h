@@ -32,6 +32,9 @@ class PrincipledThinBSDF : public BSDF {
   struct Material {
     Spectrum baseColor;
     Spectrum tint;  // the base colour at unit luminance
+    float roughness, specTrans;
+    float diffTrans;  // halved: the transmitted share of the diffuse part
+    float eta, specTint, sheen, sheenTint, flatness;
     MicrofacetDistribution reflection, transmission;
   };
   // Probabilities of the four sampling strategies.
@@ -40,10 +43,9 @@ class PrincipledThinBSDF : public BSDF {
     float diffuseReflection = 0.0f, diffuseTransmission = 0.0f;
   };
   Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const;
-  Strategies strategies() const;
+  Strategies strategies(const Material& material) const;
 
   PrincipledThinParameters p_;
-  float baseLuminance_;
 };
 
 std::shared_ptr<Object> makePrincipledThinBSDF(const Properties& props);
