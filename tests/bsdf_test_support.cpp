@@ -1,7 +1,11 @@
 #include "bsdf_test_support.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include "builtin/builtin_plugins.h"
 #include "core/sampling.h"
+#include "scene/scene.h"
 
 namespace columba::testing {
 
@@ -116,6 +120,23 @@ void addNested(Properties& props, std::shared_ptr<Object> object) {
   child.location = SourceLocation{"test.xml", 2};
   child.tag = "bsdf";
   props.addChild(std::move(child));
+}
+
+std::shared_ptr<BSDF> loadBSDF(const std::string& type, const std::string& parameters) {
+  ParsedScene parsed =
+      loadSceneString("<scene version=\"3.0.0\">\n<bsdf type=\"" + type + "\">\n" + parameters + "\n</bsdf></scene>",
+                      type + ".xml", ".", {}, builtinPlugins());
+  EXPECT_EQ(parsed.objects.size(), 1u);
+  return std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
+}
+
+std::string loadBSDFError(const std::string& type, const std::string& parameters) {
+  try {
+    loadBSDF(type, parameters);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace columba::testing

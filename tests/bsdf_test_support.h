@@ -40,6 +40,11 @@ Spectrum sampledAlbedo(const BSDF& bsdf, const Vec3& wi, int sampleCount, uint64
 // independent of the BSDF's own sampler (non-delta components only).
 Spectrum integratedAlbedo(const BSDF& bsdf, const Vec3& wi, int sampleCount, uint64_t seed = 11);
 
+// The BSDF plug-in `type` as a scene file builds it from `parameters` (XML elements), and the
+// message of the InputError that building it throws ("" when none).
+std::shared_ptr<BSDF> loadBSDF(const std::string& type, const std::string& parameters);
+std::string loadBSDFError(const std::string& type, const std::string& parameters);
+
 // Parameters of a plug-in as a scene file would give them.
 void setFloat(Properties& props, const std::string& name, float value);
 void setString(Properties& props, const std::string& name, const std::string& value);

@@ -395,7 +395,7 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
   SurfaceAttributes point;
   point.set(kBarbuleSpacingAttribute, 1.6f);
   point.set(kBarbuleTiltAttribute, -0.2f);
-  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point}})
+  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point, Vec2(), Vec3(), Vec3()}})
     for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(reference(0.58f), role);
       PCG32 rng(37);
@@ -472,7 +472,7 @@ TEST(BarbuleBSDF, PerPointOverridesActLikeTheParameters) {
   point.set(kBarbuleSpacingAttribute, 1.6f);
   point.set(kBarbuleTiltAttribute, -0.2f);
   point.set(kCortexThicknessAttribute, 0.63f);
-  const BSDFContext ctx{&point};
+  const BSDFContext ctx{&point, Vec2(), Vec3(), Vec3()};
   BarbuleParameters changed = base;
   changed.H = 1.6f;
   changed.mu = -0.2f;

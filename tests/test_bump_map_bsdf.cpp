@@ -94,7 +94,8 @@ TEST_F(BumpMap, ARampTiltsTheNormalAsTheDisplacedSurfaceDoes) {
   for (Vec3 wo : {directionAt(40, 180), directionAt(30, 90), directionAt(20, 0)})
     EXPECT_NEAR(bumped.eval(ctx, wi, wo, wl)[0], 0.5f * kInvPi * std::max(0.0f, dot(wo, n)), 1e-6f);
   // Without position derivatives (a shape that gives none) the frame is left as it is.
-  expectNear(bumped.perturbedFrame(BSDFContext{nullptr, Vec2(0.5f, 0.5f)}).n, Vec3(0, 0, 1), 0.0f, "no derivatives");
+  expectNear(bumped.perturbedFrame(BSDFContext{nullptr, Vec2(0.5f, 0.5f), Vec3(), Vec3()}).n, Vec3(0, 0, 1), 0.0f,
+             "no derivatives");
 }
 
 TEST_F(BumpMap, SamplingMatchesThePdf) {

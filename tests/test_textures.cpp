@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "bsdf_test_support.h"
 #include "bsdfs/bsdf.h"
 #include "builtin/builtin_plugins.h"
 #include "core/illuminant.h"
@@ -249,7 +250,7 @@ TEST_F(Textures, MaskOpacityAndBlendWeightTakeTextures) {
   ASSERT_TRUE(mask && blend);
   const Wavelengths wl = someWavelengths();
   const Vec3 up(0, 0, 1);
-  auto at = [](float u) { return BSDFContext{nullptr, Vec2(u, 0.5f)}; };
+  auto at = [](float u) { return BSDFContext{nullptr, Vec2(u, 0.5f), Vec3(), Vec3()}; };
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.25f), up, wl)[0], 1.0f);
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.75f), up, wl)[0], 0.0f);
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.5f), up, wl)[0], 0.5f);
@@ -287,13 +288,10 @@ TEST_F(Textures, MistakesAreNamedWithTheirLine) {
 TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
   // A checkerboard of roughness 0.4 and 0.05: at each point the BSDF equals the one with that
   // roughness everywhere.
-  auto bsdfOf = [&](const std::string& type, const std::string& alpha) {
-    ParsedScene parsed =
-        loadSceneString("<scene version=\"3.0.0\"><bsdf type=\"" + type + "\">" +
-                            "<string name=\"distribution\" value=\"ggx\"/>" + alpha + "</bsdf></scene>",
-                        (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
-    return std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
+  auto bsdfOf = [](const std::string& type, const std::string& alpha) {
+    return loadBSDF(type, "<string name=\"distribution\" value=\"ggx\"/>" + alpha);
   };
+
   const std::string checks =
       R"(<texture type="checkerboard" name="alpha"><float name="color0" value="0.4"/>
          <float name="color1" value="0.05"/></texture>)";
@@ -305,7 +303,8 @@ TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
     auto rough = bsdfOf(type, "<float name=\"alpha\" value=\"0.4\"/>");
     auto smooth = bsdfOf(type, "<float name=\"alpha\" value=\"0.05\"/>");
     ASSERT_TRUE(textured && rough && smooth) << type;
-    const BSDFContext inColor0{nullptr, Vec2(0.25f, 0.25f)}, inColor1{nullptr, Vec2(0.75f, 0.25f)};
+    const BSDFContext inColor0{nullptr, Vec2(0.25f, 0.25f), Vec3(), Vec3()},
+        inColor1{nullptr, Vec2(0.75f, 0.25f), Vec3(), Vec3()};
     for (const Vec3& out : {wo, below}) {
       EXPECT_FLOAT_EQ(textured->eval(inColor0, wi, out, wl)[0], rough->eval(inColor0, wi, out, wl)[0]) << type;
       EXPECT_FLOAT_EQ(textured->eval(inColor1, wi, out, wl)[0], smooth->eval(inColor1, wi, out, wl)[0]) << type;

@@ -23,20 +23,6 @@ class RoughDielectricBSDF : public BSDF {
                                    Vec2 u) const override;
 
  private:
-  // The pair (wi, wo) seen from wi's side: both mirrored through the surface when wi is inside,
-  // with the relative index eta from wi's side to the other.
-  struct Pair {
-    Vec3 wi, wo;
-    float eta = 1.0f;
-    bool reflection = false;
-    Vec3 m;  // the (generalised) half vector, toward wi's side
-    bool valid = false;
-  };
-  Pair pairOf(const Vec3& wi, const Vec3& wo) const;
-  // f |cos wo| and the density, for a valid pair.
-  static float value(const MicrofacetDistribution& distribution, const Pair& p, float fresnel);
-  static float density(const MicrofacetDistribution& distribution, const Pair& p, float fresnel);
-
   MicrofacetRoughness roughness_;
   float eta_;
   SpectrumParameter specularReflectance_, specularTransmittance_;

@@ -10,6 +10,8 @@
 #include "bsdfs/normal_map_bsdf.h"
 #include "bsdfs/null_bsdf.h"
 #include "bsdfs/plastic.h"
+#include "bsdfs/principled_bsdf.h"
+#include "bsdfs/principled_thin_bsdf.h"
 #include "bsdfs/rough_dielectric.h"
 #include "bsdfs/roughconductor.h"
 #include "bsdfs/roughplastic.h"
@@ -83,6 +85,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "twosided", makeTwoSidedBSDF);
     r.add("bsdf", "thindielectric", makeThinDielectricBSDF);
     r.add("bsdf", "roughdielectric", makeRoughDielectricBSDF);
+    r.add("bsdf", "principled", makePrincipledBSDF);
+    r.add("bsdf", "principledthin", makePrincipledThinBSDF);
     r.add("bsdf", "null", makeNullBSDF);
     r.add("bsdf", "mask", makeMaskBSDF);
     r.add("bsdf", "blendbsdf", makeBlendBSDF);

@@ -36,8 +36,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"phase", "blendphase"}, kMedia},
       {{"texture", "mesh_attribute"}, kTextures},
       {{"texture", "volume"}, kTextures},
-      {{"bsdf", "principled"}, "the principled BSDF is not supported yet"},
-      {{"bsdf", "principledthin"}, "the thin principled BSDF is not supported yet"},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},
       {{"bsdf", "pplastic"}, kPolarisation},
