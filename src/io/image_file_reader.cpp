@@ -1,6 +1,9 @@
 #include "io/image_file_reader.h"
 
-#include <OpenImageIO/imageio.h>
+#include <stb_image.h>
+
+#include <cstdio>
+#include <memory>
 
 #include "core/error.h"
 
@@ -10,45 +13,71 @@ namespace {
 // Larger images are refused rather than allocated: a corrupt header must not exhaust memory.
 constexpr size_t kMaxPixels = size_t(1) << 28;
 
-bool storedWithSRGBCurve(const OIIO::ImageSpec& spec) {
-  const std::string space = spec.get_string_attribute("oiio:ColorSpace");
-  if (space == "Linear" || space == "linear" || space == "lin_srgb" || space == "scene_linear") return false;
-  return !spec.format.is_floating_point();
+bool isOpenEXR(const std::string& path) {
+  unsigned char magic[4] = {};
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  return file && std::fread(magic, 1, 4, file.get()) == 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 &&
+         magic[3] == 0x01;
+}
+
+PixelGrid fromRGB(const Image& image) {
+  PixelGrid grid;
+  grid.width = image.width;
+  grid.height = image.height;
+  grid.channels = 3;
+  grid.values = image.rgb;
+  return grid;
+}
+
+// Reads through stb_image: floats for Radiance HDR files, 8- or 16-bit integers otherwise
+// (scaled to [0, 1] and decoded from sRGB when asked).
+PixelGrid readWithStb(const std::string& path, bool decodeSRGB) {
+  const SourceLocation where{path, 0};
+  int width = 0, height = 0, stored = 0;
+  if (!stbi_info(path.c_str(), &width, &height, &stored))
+    throw InputError(where, std::string("cannot read the image: ") + stbi_failure_reason());
+  if (width <= 0 || height <= 0) throw InputError(where, "the image is empty");
+  if (size_t(width) * size_t(height) > kMaxPixels)
+    throw InputError(where,
+                     "the image is too large (" + std::to_string(width) + " x " + std::to_string(height) + " pixels)");
+  if (stored < 1 || stored > 4)
+    throw InputError(where, "the image has " + std::to_string(stored) +
+                                " channels; grey, grey and alpha, RGB or RGBA are supported");
+  PixelGrid grid;
+  grid.width = width;
+  grid.height = height;
+  grid.channels = stored <= 2 ? 1 : 3;
+  const size_t pixels = size_t(width) * size_t(height);
+  grid.values.resize(pixels * size_t(grid.channels));
+  // Keeps channel c of pixel i, mapped by `value`, and drops alpha.
+  auto keep = [&](auto* data, auto value) {
+    if (!data) throw InputError(where, std::string("cannot read the image's pixels: ") + stbi_failure_reason());
+    for (size_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < grid.channels; ++c)
+        grid.values[i * size_t(grid.channels) + size_t(c)] = value(data[i * size_t(stored) + size_t(c)]);
+    stbi_image_free(data);
+  };
+  int w = 0, h = 0, n = 0;
+  if (stbi_is_hdr(path.c_str())) {
+    keep(stbi_loadf(path.c_str(), &w, &h, &n, stored), [](float v) { return v; });
+  } else if (stbi_is_16_bit(path.c_str())) {
+    keep(stbi_load_16(path.c_str(), &w, &h, &n, stored), [&](stbi_us v) {
+      const float encoded = float(v) / 65535.0f;
+      return decodeSRGB ? srgbToLinear(encoded) : encoded;
+    });
+  } else {
+    keep(stbi_load(path.c_str(), &w, &h, &n, stored), [&](stbi_uc v) {
+      const float encoded = float(v) / 255.0f;
+      return decodeSRGB ? srgbToLinear(encoded) : encoded;
+    });
+  }
+  return grid;
 }
 }  // namespace
 
 PixelGrid readImagePixels(const std::string& path, bool decodeSRGB) {
-  const SourceLocation where{path, 0};
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) throw InputError(where, "cannot read the image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
-  const int stored = spec.nchannels;
-  if (spec.width <= 0 || spec.height <= 0) throw InputError(where, "the image is empty");
-  if (size_t(spec.width) * size_t(spec.height) > kMaxPixels)
-    throw InputError(where, "the image is too large (" + std::to_string(spec.width) + " x " +
-                                std::to_string(spec.height) + " pixels)");
-  // More channels are read when the first three are R, G and B (an EXR with further layers).
-  const bool rgbFirst = stored >= 3 && spec.channelnames.size() >= 3 && spec.channelnames[0] == "R" &&
-                        spec.channelnames[1] == "G" && spec.channelnames[2] == "B";
-  if (stored < 1 || (stored > 4 && !rgbFirst))
-    throw InputError(where, "the image has " + std::to_string(stored) +
-                                " channels; grey, grey and alpha, RGB or RGBA are supported");
-  PixelGrid grid;
-  grid.width = spec.width;
-  grid.height = spec.height;
-  grid.channels = stored <= 2 ? 1 : 3;
-  std::vector<float> all(size_t(grid.width) * size_t(grid.height) * size_t(stored));
-  if (!input->read_image(0, 0, 0, stored, OIIO::TypeDesc::FLOAT, all.data()))
-    throw InputError(where, "cannot read the image's pixels: " + input->geterror());
-  const bool decode = decodeSRGB && storedWithSRGBCurve(spec);
-  const size_t pixels = size_t(grid.width) * size_t(grid.height);
-  grid.values.resize(pixels * size_t(grid.channels));
-  for (size_t i = 0; i < pixels; ++i)
-    for (int c = 0; c < grid.channels; ++c) {
-      float v = all[i * size_t(stored) + size_t(c)];
-      grid.values[i * size_t(grid.channels) + size_t(c)] = decode ? srgbToLinear(v) : v;
-    }
-  return grid;
+  if (isOpenEXR(path)) return fromRGB(readEXR(path));
+  return readWithStb(path, decodeSRGB);
 }
 
 Image readLinearRGBImage(const std::string& path) {

@@ -1,6 +1,7 @@
 #pragma once
-// Reading image files of any format OpenImageIO knows (OpenEXR, Radiance HDR, PNG, JPEG, TIFF,
-// TGA, BMP, ...): what textures and environment maps are made of.
+// Reading the image files textures and environment maps are made of, in the formats Mitsuba's
+// bitmap reads: OpenEXR (through OpenEXR), and PNG, JPEG, Radiance HDR, TGA, BMP, PNM, PSD and GIF
+// (through stb_image).
 #include <string>
 #include <vector>
 #include "io/image.h"
@@ -16,11 +17,11 @@ struct PixelGrid {
   float at(int x, int y, int c) const { return values[(size_t(y) * size_t(width) + size_t(x)) * channels + c]; }
 };
 
-// The pixels of the image file at `path`. With `decodeSRGB`, files stored with the sRGB transfer
-// curve (integer formats such as 8- and 16-bit PNG and JPEG, unless the file declares itself linear)
-// are decoded to linear values, as Mitsuba does; floating-point files (EXR, HDR) are linear as
-// stored. InputError, naming the file, for a file that cannot be read, an empty image or a channel
-// layout other than grey, grey+alpha, RGB or RGBA.
+// The pixels of the image file at `path`. With `decodeSRGB`, files of 8 or 16 bits per channel
+// (PNG, JPEG, ...) are decoded from the sRGB transfer curve to linear values, as Mitsuba does;
+// OpenEXR and Radiance HDR files are linear as stored. InputError, naming the file, for a file
+// that cannot be read, an empty or oversized image, or a channel layout other than grey,
+// grey+alpha, RGB or RGBA.
 PixelGrid readImagePixels(const std::string& path, bool decodeSRGB);
 
 // The same file as a linear RGB image (a grey image's value in all three channels), decoded from

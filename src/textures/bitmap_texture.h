@@ -1,5 +1,5 @@
 #pragma once
-// Mitsuba's `bitmap` texture: an image file (read through OpenImageIO) looked up at (u, v), with
+// Mitsuba's `bitmap` texture: an image file (io/image_file_reader.h) looked up at (u, v), with
 // u across the image and v down it from the top row, as in Mitsuba (its OBJ loader flips v).
 //
 // As Mitsuba does in its spectral modes, a colour image is turned into one smooth spectrum per
