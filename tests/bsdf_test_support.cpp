@@ -139,4 +139,15 @@ std::string loadBSDFError(const std::string& type, const std::string& parameters
   return "";
 }
 
+void expectValuesAlongMitsubasTestArc(const BSDF& bsdf, const double (&values)[20], const double (&pdfs)[20],
+                                      double valueTolerance, double pdfTolerance) {
+  const Vec3 wi(1.0f, 0.0f, 1.0f);
+  for (int i = 0; i < 20; ++i) {
+    double theta = i / 19.0 * kPiDouble / 2.0;
+    Vec3 wo(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+    EXPECT_NEAR(bsdf.eval({}, wi, wo, testWavelengths())[0], values[i], valueTolerance * values[i]) << i;
+    EXPECT_NEAR(bsdf.pdf({}, wi, wo, testWavelengths()), pdfs[i], pdfTolerance * pdfs[i]) << i;
+  }
+}
+
 }  // namespace columba::testing

@@ -40,6 +40,12 @@ Spectrum sampledAlbedo(const BSDF& bsdf, const Vec3& wi, int sampleCount, uint64
 // independent of the BSDF's own sampler (non-delta components only).
 Spectrum integratedAlbedo(const BSDF& bsdf, const Vec3& wi, int sampleCount, uint64_t seed = 11);
 
+// eval and pdf from the unnormalised wi = (1, 0, 1) toward wo at theta = i / 19 * 90 degrees,
+// i = 0 ... 19, in the x-z plane (the arc of Mitsuba's BSDF regression tests), against tabulated
+// `values` and `pdfs` within the relative tolerances (first wavelength).
+void expectValuesAlongMitsubasTestArc(const BSDF& bsdf, const double (&values)[20], const double (&pdfs)[20],
+                                      double valueTolerance, double pdfTolerance);
+
 // The BSDF plug-in `type` as a scene file builds it from `parameters` (XML elements), and the
 // message of the InputError that building it throws ("" when none).
 std::shared_ptr<BSDF> loadBSDF(const std::string& type, const std::string& parameters);

@@ -228,14 +228,7 @@ TEST(Principled, AgreesWithMitsubasReferenceValues) {
   p.sheenTint = 0.9f;
   p.specTrans = 0.5f;
   p.flatness = 0.5f;
-  PrincipledBSDF bsdf(p);
-  const Vec3 wi(1.0f, 0.0f, 1.0f);
-  for (int i = 0; i < 20; ++i) {
-    double theta = i / 19.0 * kPiDouble / 2.0;
-    Vec3 wo(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
-    EXPECT_NEAR(bsdf.eval(kContext, wi, wo, testWavelengths())[0], values[i], 3e-3 * values[i]) << i;
-    EXPECT_NEAR(bsdf.pdf(kContext, wi, wo, testWavelengths()), pdfs[i], 3e-3 * pdfs[i]) << i;
-  }
+  expectValuesAlongMitsubasTestArc(PrincipledBSDF(p), values, pdfs, 3e-3, 3e-3);
 }
 
 TEST(Principled, ReflectionIsReciprocal) {

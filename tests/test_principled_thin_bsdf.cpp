@@ -132,14 +132,7 @@ TEST(PrincipledThin, AgreesWithMitsubasReferenceValues) {
   p.specTrans = 0.5f;
   p.flatness = 0.5f;
   p.diffTrans = 0.6f;
-  PrincipledThinBSDF bsdf(p);
-  const Vec3 wi(1.0f, 0.0f, 1.0f);
-  for (int i = 0; i < 20; ++i) {
-    double theta = i / 19.0 * kPiDouble / 2.0;
-    Vec3 wo(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
-    EXPECT_NEAR(bsdf.eval(kContext, wi, wo, testWavelengths())[0], values[i], 1e-2 * values[i]) << i;
-    EXPECT_NEAR(bsdf.pdf(kContext, wi, wo, testWavelengths()), pdfs[i], 1e-5 * pdfs[i]) << i;
-  }
+  expectValuesAlongMitsubasTestArc(PrincipledThinBSDF(p), values, pdfs, 1e-2, 1e-5);
 }
 
 TEST(PrincipledThin, BothSidesAreTheSameAndReflectionIsReciprocal) {

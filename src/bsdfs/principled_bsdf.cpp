@@ -61,9 +61,12 @@ Spectrum PrincipledBSDF::frontFresnel(const Material& material, float cosI, floa
 }
 
 Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return valueFor(materialAt(ctx, wl), wi, wo);
+}
+
+Spectrum PrincipledBSDF::valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return Spectrum(0.0f);
   const bool front = cosTheta(wi) > 0.0f;
-  const Material material = materialAt(ctx, wl);
   if (!front && !(material.transmissionWeight > 0.0f)) return Spectrum(0.0f);
 
   Spectrum value(0.0f);
@@ -101,9 +104,12 @@ Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3
 }
 
 float PrincipledBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return densityFor(materialAt(ctx, wl), wi, wo);
+}
+
+float PrincipledBSDF::densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return 0.0f;
   const bool front = cosTheta(wi) > 0.0f;
-  const Material material = materialAt(ctx, wl);
   if (!front && !(material.transmissionWeight > 0.0f)) return 0.0f;
   const Strategies strategy = strategies(material, front);
 
@@ -159,9 +165,9 @@ std::optional<BSDFSample> PrincipledBSDF::sample(const BSDFContext& ctx, const V
   // Several strategies reach most directions: weight by the mixture density (one-sample MIS).
   BSDFSample s;
   s.wo = wo;
-  s.pdf = pdf(ctx, wi, wo, wl);
+  s.pdf = densityFor(material, wi, wo);
   if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = eval(ctx, wi, wo, wl) / s.pdf;
+  s.weight = valueFor(material, wi, wo) / s.pdf;
   return s;
 }
 

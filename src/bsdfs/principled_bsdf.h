@@ -46,6 +46,9 @@ class PrincipledBSDF : public BSDF {
     float diffuse = 0.0f, clearcoat = 0.0f, specular = 0.0f;
   };
   Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const;
+  // eval and pdf for the material at the shading point, worked out once per call of sample.
+  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
+  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
   Strategies strategies(const Material& material, bool front) const;
   // Probability that the specular strategy reflects, given the dielectric Fresnel term.
   static float specularReflectionShare(const Material& material, bool front, float fresnel);

@@ -63,8 +63,11 @@ PrincipledThinBSDF::Strategies PrincipledThinBSDF::strategies(const Material& ma
 }
 
 Spectrum PrincipledThinBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return valueFor(materialAt(ctx, wl), wi, wo);
+}
+
+Spectrum PrincipledThinBSDF::valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return Spectrum(0.0f);
-  const Material material = materialAt(ctx, wl);
   const SheetPair pair = sheetPair(wi, wo);
   const Vec3 m = normalize(pair.wi + pair.woAbove);
   const float cosI = cosTheta(pair.wi), cosO = std::abs(cosTheta(pair.wo));
@@ -102,8 +105,11 @@ Spectrum PrincipledThinBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const 
 }
 
 float PrincipledThinBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
+  return densityFor(materialAt(ctx, wl), wi, wo);
+}
+
+float PrincipledThinBSDF::densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return 0.0f;
-  const Material material = materialAt(ctx, wl);
   const Strategies strategy = strategies(material);
   const SheetPair pair = sheetPair(wi, wo);
   float density = pair.reflection ? strategy.diffuseReflection * cosineHemispherePdf(cosTheta(pair.wo))
@@ -152,9 +158,9 @@ std::optional<BSDFSample> PrincipledThinBSDF::sample(const BSDFContext& ctx, con
   // Several strategies reach most directions: weight by the mixture density (one-sample MIS).
   BSDFSample s;
   s.wo = wo;
-  s.pdf = pdf(ctx, wi, wo, wl);
+  s.pdf = densityFor(material, wi, wo);
   if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = eval(ctx, wi, wo, wl) / s.pdf;
+  s.weight = valueFor(material, wi, wo) / s.pdf;
   return s;
 }
 

@@ -43,6 +43,9 @@ class PrincipledThinBSDF : public BSDF {
     float diffuseReflection = 0.0f, diffuseTransmission = 0.0f;
   };
   Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const;
+  // eval and pdf for the material at the shading point, worked out once per call of sample.
+  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
+  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
   Strategies strategies(const Material& material) const;
 
   PrincipledThinParameters p_;

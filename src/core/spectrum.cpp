@@ -295,11 +295,21 @@ float SpectralDistribution::evalShape(float lambda) const {
   return 0.0f;
 }
 
+namespace {
+// The mean of `spectrum` over the visible range, at 1 nm steps.
+template <typename Distribution>
+float meanOverVisible(const Distribution& spectrum) {
+  double s = 0;
+  for (int i = 0; i < CieTable::kCount; ++i) s += spectrum.eval(kLambdaMin + float(i));
+  return float(s / CieTable::kCount);
+}
+}  // namespace
+
+float RGBSpectrum::meanValue() const { return meanOverVisible(*this); }
+
 float SpectralDistribution::meanValue() const {
   if (kind_ == Kind::Constant && !timesD65_) return value_;
-  double s = 0;
-  for (int i = 0; i < CieTable::kCount; ++i) s += eval(kLambdaMin + float(i));
-  return float(s / CieTable::kCount);
+  return meanOverVisible(*this);
 }
 
 float SpectralDistribution::luminance() const {

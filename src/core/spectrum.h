@@ -99,6 +99,8 @@ struct RGBSpectrum {
   std::array<float, 3> coeffs{};
   float scale = 0.0f;
   float eval(float lambda) const;
+  // Mean over the visible range, as SpectralDistribution::meanValue.
+  float meanValue() const;
 };
 // The spectrum whose colour under D65 is `rgb`, fitted here. `unbounded` allows values above 1
 // (fitted at half the largest component and scaled back, as pbrt-v4 does); otherwise rgb is clamped

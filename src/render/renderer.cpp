@@ -199,8 +199,10 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     std::vector<PixelSums> sums(pixelCount);
     std::vector<double> binSums(pixelCount * size_t(bins.count), 0.0);
     std::vector<PilotPixel> pilotPixels(pixelCount);
+    // A film pixel's place in the window's arrays.
+    auto windowIndex = [&](int x, int y) { return size_t(y - window.y0) * width + size_t(x - window.x0); };
     auto addRange = [&](Sampler& sampler, int x, int y, int begin, int end, const auto& stop) {
-      size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
+      size_t i = windowIndex(x, y);
       uint64_t pixelRays = 0, pixelNonFinite = 0;
       bool finished = pixels.add(sampler, x, y, begin, end, sums[i], binSums.data() + i * bins.count, pixelRays,
                                  pixelNonFinite, stop);
@@ -210,7 +212,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     };
     forEachTile(window, settings, sensor.sampler(), 0, 0, 2 * tileCount, cancelled,
                 [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
-                  size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
+                  size_t i = windowIndex(x, y);
                   pilotPixels[i].seen = pixels.sees(x, y);
                   return !pilotPixels[i].seen || addRange(sampler, x, y, 0, pilot, stop);
                 });
@@ -223,7 +225,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
       plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
       forEachTile(window, settings, sensor.sampler(), 0, tileCount, 2 * tileCount, cancelled,
                   [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
-                    size_t i = size_t(y - window.y0) * width + (x - window.x0);  // in the window
+                    size_t i = windowIndex(x, y);
                     return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);
                   });
       stats.pilotSamples = pilot;

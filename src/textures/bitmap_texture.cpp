@@ -31,13 +31,6 @@ ColourKey keyOf(const Vec3& c) {
   return k;
 }
 
-float spectrumMean(const RGBSpectrum& s) {
-  double sum = 0;
-  const int count = int(kLambdaMax - kLambdaMin) + 1;
-  for (int i = 0; i < count; ++i) sum += s.eval(kLambdaMin + float(i));
-  return float(sum / count);
-}
-
 TextureFilter readFilter(const Properties& props) {
   const std::string name = props.getString("filter_type", "bilinear");
   if (name == "bilinear") return TextureFilter::Bilinear;
@@ -112,7 +105,7 @@ BitmapTexture::BitmapTexture(const PixelGrid& pixels, bool raw, TextureFilter fi
   tbb::parallel_for(size_t(0), distinct.size(), [&](size_t i) {
     const Vec3& c = distinct[i];
     fitted[i] = fitRGBSpectrum(c, std::max(c.x, std::max(c.y, c.z)) > 1.0f);
-    fittedMean[i] = spectrumMean(fitted[i]);
+    fittedMean[i] = fitted[i].meanValue();
   });
   spectra_.resize(count);
   for (size_t i = 0; i < count; ++i) {
