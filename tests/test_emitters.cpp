@@ -4,8 +4,10 @@
 
 #include "builtin/builtin_plugins.h"
 #include "chi_square.h"
+#include "core/illuminant.h"
 #include "core/sampling.h"
 #include "emitters/envmap_emitter.h"
+#include "io/image.h"
 #include "render_test_support.h"
 #include "scene/scene.h"
 
@@ -160,4 +162,76 @@ TEST(Emitter, SpotFallsOffLinearlyInAngleAsMitsubas) {
   load("<float name=\"cutoff_angle\" value=\"30\"/>");                          // beam width 22.5 by default
   EXPECT_THROW(load("<float name=\"beam_width\" value=\"25\"/>"), InputError);  // wider than the 20-degree cutoff
   EXPECT_THROW(load("<float name=\"cutoff_angle\" value=\"0\"/>"), InputError);
+}
+
+namespace {
+// A projector of the scene body `params`, loaded from a scene file in `dir`.
+std::shared_ptr<Emitter> projector(const std::string& params, const std::string& dir = ".") {
+  ParsedScene parsed =
+      loadSceneString(R"(<scene version="3.0.0"><emitter type="projector">)" + params + "</emitter></scene>",
+                      dir + "/t.xml", dir, {}, builtinPlugins());
+  return std::dynamic_pointer_cast<Emitter>(parsed.objects.at(0));
+}
+}  // namespace
+
+TEST(Emitter, AProjectorLightsAsMitsubasWritesIt) {
+  // Irradiance 0.5 through a 90-degree field of view (image half extents tan 45 = 1): a point at
+  // (x, y, z) in the projector's frame receives pi * 0.5 * D65 / (z^2 cos theta) along the
+  // direction from the projector, so that a plane facing it at z = 1 is lit evenly.
+  auto light = projector(R"(<float name="fov" value="90"/><float name="irradiance" value="0.5"/>)");
+  ASSERT_TRUE(light);
+  EXPECT_TRUE(light->isDelta());
+  const Wavelengths wl = someWavelengths();
+  for (Vec3 p : {Vec3(0, 0, 1), Vec3(0.3f, -0.2f, 2.0f), Vec3(-0.9f, 0.9f, 1.0f)}) {
+    auto s = light->sample(p, Vec2(0.5f, 0.5f), wl);
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(s->distance, length(p), 1e-5f);
+    const float cosTheta = p.z / length(p);
+    for (int i = 0; i < kSpectrumSamples; ++i)
+      EXPECT_NEAR(s->radiance[i] * p.z * p.z * cosTheta, kPi * 0.5f * d65(wl[i]), 1e-4f * d65(wl[i]));
+  }
+  // Outside the field of view, and behind the projector: nothing.
+  EXPECT_FALSE(light->sample(Vec3(3.0f, 0.0f, 2.0f), Vec2(0.5f, 0.5f), wl));
+  EXPECT_FALSE(light->sample(Vec3(0.0f, 0.0f, -1.0f), Vec2(0.5f, 0.5f), wl));
+  // `scale` multiplies it.
+  auto brighter = projector(R"(<float name="fov" value="90"/><float name="irradiance" value="0.5"/>
+    <float name="scale" value="3"/>)");
+  EXPECT_NEAR(
+      brighter->sample(Vec3(0, 0, 1), Vec2(), wl)->radiance[0] / light->sample(Vec3(0, 0, 1), Vec2(), wl)->radiance[0],
+      3.0f, 1e-5f);
+}
+
+TEST(Emitter, AProjectorShowsItsImageTheWayTheCameraSeesIt) {
+  // Texels 0.25 (left) and 1 (right) of a 2 x 1 image, so the image plane's half extents are 1 in
+  // x and 1/2 in y at fov 90. As the perspective camera maps its film, the image's left lies on the
+  // projector's +x side: (1/2, 0, 1) meets the left texel's centre and (-1/2, 0, 1) the right's.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "columba_projector_test";
+  std::filesystem::create_directories(dir);
+  Image slide(2, 1);
+  for (int c = 0; c < 3; ++c) {
+    slide.rgb[c] = 0.25f;
+    slide.rgb[3 + c] = 1.0f;
+  }
+  writeEXR((dir / "slide.exr").string(), slide);
+  auto light = projector(R"(<float name="fov" value="90"/>
+    <texture type="bitmap" name="irradiance"><string name="filename" value="slide.exr"/>
+      <string name="filter_type" value="nearest"/></texture>)",
+                         dir.string());
+  const Wavelengths wl = someWavelengths();
+  auto left = light->sample(Vec3(0.5f, 0, 1), Vec2(), wl), right = light->sample(Vec3(-0.5f, 0, 1), Vec2(), wl);
+  ASSERT_TRUE(left && right);
+  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(right->radiance[i] / left->radiance[i], 4.0f, 1e-4f);
+  // The image's aspect is the texture's: at fov 90 its half height is 1/2.
+  EXPECT_TRUE(light->sample(Vec3(0, 0.45f, 1), Vec2(), wl));
+  EXPECT_FALSE(light->sample(Vec3(0, 0.55f, 1), Vec2(), wl));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Emitter, AProjectorNeedsItsImage) {
+  try {
+    projector("");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs its 'irradiance'"), std::string::npos) << e.what();
+  }
 }

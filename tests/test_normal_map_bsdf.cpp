@@ -10,6 +10,8 @@
 #include "io/image.h"
 #include "scene/scene.h"
 #include "temp_dir_test.h"
+#include "textures/bitmap_texture.h"
+#include "textures/raw_constant_texture.h"
 
 using namespace columba;
 using namespace columba::testing;
@@ -60,6 +62,15 @@ TEST_F(NormalMap, ATiltedNormalShadesAsTheDiffuseClosedForm) {
   EXPECT_EQ(tilted.pdf({}, wi, leak, wl), 0.0f);
 }
 
+TEST_F(NormalMap, ARawConstantTripleIsAMapToo) {
+  // Mitsuba's rawconstant with three values gives them as they are: (n + 1) / 2 is the normal n.
+  NormalMapBSDF tilted(diffuse(), std::make_shared<RawConstantTexture>((kTilted + Vec3(1, 1, 1)) * 0.5f));
+  const Wavelengths wl = testWavelengths();
+  const Vec3 wi = directionAt(10, 0);
+  for (Vec3 wo : {directionAt(40, 0), directionAt(60, 90), directionAt(20, 180)})
+    EXPECT_NEAR(tilted.eval({}, wi, wo, wl)[0], 0.5f * kInvPi * std::max(0.0f, dot(wo, kTilted)), 1e-6f);
+}
+
 TEST_F(NormalMap, SamplingMatchesThePdf) {
   NormalMapBSDF tilted(diffuse(), mapOf(kTilted));
   const double threshold = sidakThreshold(0.01, 3);
@@ -70,7 +81,7 @@ TEST_F(NormalMap, SamplingMatchesThePdf) {
   EXPECT_LT(maxWeightError(tilted, directionAt(45, 30)), 1e-4);
 }
 
-TEST_F(NormalMap, TheMapMustBeARawColourBitmap) {
+TEST_F(NormalMap, TheMapMustGiveRawTriples) {
   Image texel(1, 1);
   texel.rgb = {0.5f, 0.5f, 1.0f};
   writeEXR((dir_ / "n.exr").string(), texel);
@@ -87,4 +98,12 @@ TEST_F(NormalMap, TheMapMustBeARawColourBitmap) {
   };
   EXPECT_EQ(errorOf("<boolean name=\"raw\" value=\"true\"/>"), "");
   expectContains(errorOf(""), {"t.xml:2", "read with raw=true"});
+  try {
+    loadSceneString(R"(<scene version="3.0.0">
+<bsdf type="normalmap"><texture type="checkerboard" name="normalmap"/><bsdf type="diffuse"/></bsdf></scene>)",
+                    (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
+    ADD_FAILURE() << "a checkerboard was taken as a normal map";
+  } catch (const InputError& e) {
+    expectContains(e.what(), {"t.xml:2", "must give raw triples"});
+  }
 }

@@ -16,10 +16,11 @@ const MicrofacetType kTypes[] = {MicrofacetType::Beckmann, MicrofacetType::GGX};
 const char* name(MicrofacetType t) { return t == MicrofacetType::GGX ? "ggx" : "beckmann"; }
 
 // A copper-like conductor, to exercise the spectral Fresnel term.
-ConductorIndex copperLike() {
-  return {SpectralDistribution::piecewiseLinear({400.0f, 550.0f, 700.0f}, {1.2f, 1.0f, 0.2f}),
-          SpectralDistribution::piecewiseLinear({400.0f, 550.0f, 700.0f}, {2.2f, 2.6f, 4.0f})};
-}
+const SpectralDistribution kCopperEta =
+    SpectralDistribution::piecewiseLinear({400.0f, 550.0f, 700.0f}, {1.2f, 1.0f, 0.2f});
+const SpectralDistribution kCopperK =
+    SpectralDistribution::piecewiseLinear({400.0f, 550.0f, 700.0f}, {2.2f, 2.6f, 4.0f});
+ConductorIndexParameter copperLike() { return {kCopperEta, kCopperK}; }
 
 RoughConductorBSDF mirror(MicrofacetType type, float alphaX, float alphaY) {
   return RoughConductorBSDF(MicrofacetDistribution(type, alphaX, alphaY), std::nullopt,
@@ -107,9 +108,9 @@ TEST(RoughConductor, SmoothLimitReflectsTheFresnelTerm) {
                           SpectralDistribution::constant(1.0f));
   const Wavelengths wl = testWavelengths();
   Spectrum albedo = sampledAlbedo(bsdf, directionAt(30.0f), 2000);
-  ConductorIndex ior = copperLike();
   for (int i = 0; i < kSpectrumSamples; ++i)
-    EXPECT_NEAR(albedo[i], fresnelConductor(std::cos(degToRad(30.0f)), ior.eta.eval(wl[i]), ior.k.eval(wl[i])), 3e-3f);
+    EXPECT_NEAR(albedo[i], fresnelConductor(std::cos(degToRad(30.0f)), kCopperEta.eval(wl[i]), kCopperK.eval(wl[i])),
+                3e-3f);
 }
 
 TEST(RoughConductor, IsReciprocal) {
@@ -156,7 +157,7 @@ TEST(RoughConductor, FactoryReadsMitsubaParameters) {
   EXPECT_NO_THROW(props.checkAllUsed());
   RoughConductorBSDF reference(
       MicrofacetDistribution(MicrofacetType::GGX, 0.2f, 0.3f),
-      ConductorIndex{SpectralDistribution::constant(0.2f), SpectralDistribution::constant(3.0f)},
+      ConductorIndexParameter{SpectralDistribution::constant(0.2f), SpectralDistribution::constant(3.0f)},
       SpectralDistribution::constant(1.0f));
   EXPECT_NEAR(metal->eval({}, wi, wo, wl)[1], reference.eval({}, wi, wo, wl)[1], 1e-5f);
 }

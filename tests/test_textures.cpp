@@ -12,6 +12,7 @@
 #include "bsdfs/bsdf.h"
 #include "builtin/builtin_plugins.h"
 #include "core/illuminant.h"
+#include "core/rng.h"
 #include "emitters/envmap_emitter.h"
 #include "error_test_support.h"
 #include "io/image.h"
@@ -361,4 +362,92 @@ TEST_F(Textures, ASpotLightProjectsItsTexture) {
        left = spot->sample(Vec3(-x, 0, 1), Vec2(0.5f, 0.5f), wl);
   ASSERT_TRUE(right && left);
   for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(right->radiance[i] / left->radiance[i], 4.0f, 1e-4f);
+}
+
+TEST_F(Textures, ARawConstantIsItsNumberEverywhere) {
+  ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0"><bsdf type="diffuse">
+      <texture type="rawconstant" name="reflectance"><float name="value" value="0.3"/></texture></bsdf></scene>)",
+                                       (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
+  auto bsdf = std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
+  ASSERT_TRUE(bsdf);
+  const Vec3 up(0, 0, 1);
+  const Spectrum f = bsdf->eval({}, up, up, someWavelengths());
+  for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_FLOAT_EQ(f[i], 0.3f * kInvPi);
+  // Three numbers are not a colour, nor one number.
+  expectContains(errorOfScene(R"(<bsdf type="diffuse"><texture type="rawconstant" name="reflectance">
+  <vector name="value" value="0.1, 0.2, 0.3"/></texture></bsdf>)"),
+                 {"t.xml:2", "raw numbers, not colours"});
+  expectContains(errorOfScene(R"(<bsdf type="roughconductor"><texture type="rawconstant" name="alpha">
+  <vector name="value" value="0.1, 0.2, 0.3"/></texture></bsdf>)"),
+                 {"t.xml:2", "holds three numbers"});
+  expectContains(errorOfScene(R"(<texture type="rawconstant" id="t"/>)"), {"t.xml:2", "needs its 'value'"});
+}
+
+TEST_F(Textures, AConductorsIndexMayBeATexture) {
+  // k is 2 on the left half of the image and 4 on the right (nearest lookups); eta is 0.5. At
+  // normal incidence the mirror reflects ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) on each half.
+  Image k(2, 1);
+  for (int c = 0; c < 3; ++c) {
+    k.rgb[c] = 2.0f;
+    k.rgb[3 + c] = 4.0f;
+  }
+  writeEXR((dir_ / "k.exr").string(), k);
+  for (const char* type : {"conductor", "roughconductor"}) {
+    ParsedScene parsed =
+        loadSceneString(std::string(R"(<scene version="3.0.0"><bsdf type=")") + type + R"(">
+        <float name="eta" value="0.5"/>)" +
+                            (std::string(type) == "roughconductor" ? R"(<float name="alpha" value="0.001"/>)" : "") +
+                            R"(<texture type="bitmap" name="k"><string name="filename" value="k.exr"/>
+          <string name="filter_type" value="nearest"/></texture></bsdf></scene>)",
+                        (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
+    auto bsdf = std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
+    ASSERT_TRUE(bsdf);
+    for (auto [u, kValue] : {std::pair{0.25f, 2.0f}, std::pair{0.75f, 4.0f}}) {
+      BSDFContext ctx{nullptr, Vec2(u, 0.5f), Vec3(), Vec3()};
+      const float expected = (0.25f + kValue * kValue) / (2.25f + kValue * kValue);
+      // The rough metal at alpha 0.001: its albedo, the mean weight of its samples.
+      double sum = 0;
+      const int n = 2000;
+      PCG32 rng(3, 5);
+      for (int s = 0; s < n; ++s) {
+        auto sample = bsdf->sample(ctx, Vec3(0, 0, 1), someWavelengths(), rng.nextFloat(),
+                                   Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (sample) sum += sample->weight[1];
+      }
+      EXPECT_NEAR(sum / n, expected, 2e-3) << type << " at u = " << u;
+    }
+  }
+}
+
+TEST_F(Textures, AnAreaLightsRadianceMayBeATexture) {
+  // A 2 x 2 rectangle whose radiance is the default checkerboard (0.4 where u and v are both below
+  // 1/2 or both above, 0.2 elsewhere), each colour an illuminant: its value times D65. Seen
+  // directly and sampled from a point above, each quadrant sends its own radiance.
+  ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0">
+      <shape type="rectangle"><emitter type="area"><texture type="checkerboard" name="radiance"/></emitter></shape>
+    </scene>)",
+                                       (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
+  Scene scene(parsed, {"t.xml", 0});
+  const Emitter& light = *scene.emitters().front();
+  const Wavelengths wl = someWavelengths();
+  // uv = ((x + 1) / 2, (y + 1) / 2) on Mitsuba's rectangle.
+  auto expected = [&](float x, float y, int i) { return ((x < 0) == (y < 0) ? 0.4f : 0.2f) * d65(wl[i]); };
+  for (auto [x, y] : {std::pair{-0.5f, -0.5f}, std::pair{0.5f, -0.5f}, std::pair{0.5f, 0.5f}, std::pair{-0.5f, 0.5f}}) {
+    auto hit = scene.intersect(Ray{Vec3(x, y, 2), Vec3(0, 0, -1)});
+    ASSERT_TRUE(hit);
+    const Spectrum seen = light.radianceAt(*hit, Vec3(0, 0, 1), wl);
+    for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(seen[i], expected(x, y, i), 1e-5f * d65(wl[i]));
+  }
+  PCG32 rng(7, 1);
+  const Vec3 ref(0.1f, -0.2f, 1.0f);
+  int quadrants[4] = {0, 0, 0, 0};
+  for (int n = 0; n < 200; ++n) {
+    auto s = light.sample(ref, Vec2(rng.nextFloat(), rng.nextFloat()), wl);
+    ASSERT_TRUE(s);
+    const Vec3 p = ref + s->direction * s->distance;
+    if (std::abs(p.x) < 1e-3f || std::abs(p.y) < 1e-3f) continue;  // on a border
+    ++quadrants[(p.x > 0 ? 1 : 0) + (p.y > 0 ? 2 : 0)];
+    for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(s->radiance[i], expected(p.x, p.y, i), 1e-5f * d65(wl[i]));
+  }
+  for (int q : quadrants) EXPECT_GT(q, 20);
 }

@@ -270,10 +270,10 @@ TEST(XmlLoader, MitsubaPluginsColumbaLacksAreNamedWithWhy) {
                   "participating media are not supported"});
   expectContains(errorOf(R"(<scene version="3.0.0">
   <shape type="mesh">
-    <bsdf type="diffuse"><texture name="reflectance" type="mesh_attribute"/></bsdf>
+    <bsdf type="diffuse"><texture name="reflectance" type="volume"/></bsdf>
   </shape>
 </scene>)"),
-                 {"test.xml:3", "<texture type='mesh_attribute'>", "Columba has 'bitmap' and 'checkerboard'"});
+                 {"test.xml:3", "<texture type='volume'>", "Columba has 'bitmap', 'checkerboard', 'mesh_attribute'"});
 }
 
 TEST(XmlLoader, BadNumbersAreErrors) {

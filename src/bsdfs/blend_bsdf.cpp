@@ -4,7 +4,7 @@
 
 namespace columba {
 
-float BlendBSDF::weightAt(const BSDFContext& ctx) const { return std::clamp(weight_.eval(ctx.uv), 0.0f, 1.0f); }
+float BlendBSDF::weightAt(const BSDFContext& ctx) const { return std::clamp(weight_.eval(ctx.point), 0.0f, 1.0f); }
 
 Spectrum BlendBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   const float weight = weightAt(ctx);

@@ -9,16 +9,18 @@
 #include "core/spectrum.h"
 #include "core/surface_attributes.h"
 #include "core/vector.h"
+#include "textures/texture_point.h"
 
 namespace columba {
 
 // Per-call inputs besides the directions: the shading point's attributes, the values of BSDF
-// parameters its shape gives per point (none by default), its surface coordinates, where
-// textured parameters are looked up, and the derivatives of the position in them (in the local
-// shading frame; zero where the shape gives none), which bump maps perturb.
+// parameters its shape gives per point (none by default), where textured parameters are looked up
+// (its surface coordinates, and on meshes with per-vertex or per-face values the triangle and
+// barycentric coordinates), and the derivatives of the position in u and v (in the local shading
+// frame; zero where the shape gives none), which bump maps perturb.
 struct BSDFContext {
   const SurfaceAttributes* attributes = nullptr;
-  Vec2 uv;
+  TexturePoint point;
   Vec3 dpdu, dpdv;
 
   std::optional<float> attribute(SurfaceAttributeKey key) const {

@@ -60,26 +60,29 @@ MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool 
   return roughness.at(Vec2());
 }
 
-std::optional<ConductorIndex> readConductorIndex(const Properties& props) {
+std::optional<ConductorIndexParameter> readConductorIndex(const Properties& props) {
   std::string material = props.getString("material", "none");
-  if (props.has("eta") || props.has("k")) {
+  const bool textured = props.namedChild<Texture>("eta") || props.namedChild<Texture>("k");
+  if (props.has("eta") || props.has("k") || textured) {
     if (material != "none") throw props.error("material", "give either a material or eta and k, not both");
-    return ConductorIndex{props.getSpectrum("eta", 0.0f, SpectrumUse::Unbounded),
-                          props.getSpectrum("k", 1.0f, SpectrumUse::Unbounded)};
+    return ConductorIndexParameter{readSpectrumParameter(props, "eta", 0.0f, SpectrumUse::Unbounded),
+                                   readSpectrumParameter(props, "k", 1.0f, SpectrumUse::Unbounded)};
   }
   if (material == "none") return std::nullopt;
   std::optional<ConductorIndex> measured = conductorIndex(material);
   if (!measured)
     throw props.error("material", "no measured data for conductor '" + material + "' (known: none, " +
                                       conductorNames() + "); give its eta and k spectra");
-  return measured;
+  return ConductorIndexParameter{measured->eta, measured->k};
 }
 
-Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const Spectrum& specular, float cosI,
-                              const Wavelengths& wl) {
+Spectrum conductorReflectance(const std::optional<ConductorIndexParameter>& ior, const Spectrum& specular, float cosI,
+                              const TexturePoint& p, const Wavelengths& wl) {
   Spectrum r = specular;
-  if (ior)
-    for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, ior->eta.eval(wl[i]), ior->k.eval(wl[i]));
+  if (ior) {
+    const Spectrum eta = ior->eta.eval(p, wl), k = ior->k.eval(p, wl);
+    for (int i = 0; i < kSpectrumSamples; ++i) r[i] *= fresnelConductor(cosI, eta[i], k[i]);
+  }
   return r;
 }
 

@@ -7,6 +7,7 @@
 #include "core/properties.h"
 #include "core/spectrum.h"
 #include "optics/conductor_materials.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
@@ -22,13 +23,19 @@ MicrofacetRoughness readMicrofacetRoughness(const Properties& props, bool allowA
 // The same for a BSDF whose roughness must be constant (InputError for a texture).
 MicrofacetDistribution readMicrofacetDistribution(const Properties& props, bool allowAnisotropic);
 
-// A conductor's complex index: `material` (a measured metal, or "none", the default: a perfect
-// mirror, returned as nullopt) or the spectra `eta` (default 0) and `k` (default 1); not both.
-std::optional<ConductorIndex> readConductorIndex(const Properties& props);
+// A conductor's complex index at each point: a measured metal's, or `eta` and `k` given as
+// values or textures (as Mitsuba allows).
+struct ConductorIndexParameter {
+  SpectrumParameter eta, k;
+};
+
+// `material` (a measured metal, or "none", the default: a perfect mirror, returned as nullopt) or
+// `eta` (default 0) and `k` (default 1), each a spectrum or a texture; not both.
+std::optional<ConductorIndexParameter> readConductorIndex(const Properties& props);
 
 // `specular` (specular_reflectance at the path's wavelengths) times the conductor's Fresnel
-// reflectance at incidence cosine cosI (1 without an index).
-Spectrum conductorReflectance(const std::optional<ConductorIndex>& ior, const Spectrum& specular, float cosI,
-                              const Wavelengths& wl);
+// reflectance at incidence cosine cosI (1 without an index), the index taken at `p`.
+Spectrum conductorReflectance(const std::optional<ConductorIndexParameter>& ior, const Spectrum& specular, float cosI,
+                              const TexturePoint& p, const Wavelengths& wl);
 
 }  // namespace columba

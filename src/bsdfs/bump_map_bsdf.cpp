@@ -4,7 +4,7 @@ namespace columba {
 
 Frame BumpMapBSDF::perturbedFrame(const BSDFContext& ctx) const {
   if (!(lengthSquared(cross(ctx.dpdu, ctx.dpdv)) > 0.0f)) return Frame();
-  const Vec2 slope = height_->evalFloatGradient(ctx.uv) * scale_;
+  const Vec2 slope = height_->evalFloatGradient(ctx.point) * scale_;
   // In the local frame the normal is +z: the displaced surface's derivatives have z = the slopes.
   const Vec3 du(ctx.dpdu.x, ctx.dpdu.y, slope.x), dv(ctx.dpdv.x, ctx.dpdv.y, slope.y);
   Vec3 n = normalize(cross(du, dv));

@@ -11,12 +11,12 @@ std::optional<BSDFSample> ConductorBSDF::sample(const BSDFContext& ctx, const Ve
   s.wo = mirrorDirection(wi);
   s.pdf = 1.0f;
   s.delta = true;
-  s.weight = conductorReflectance(ior_, specularReflectance_.eval(ctx.uv, wl), cosTheta(wi), wl);
+  s.weight = conductorReflectance(ior_, specularReflectance_.eval(ctx.point, wl), cosTheta(wi), ctx.point, wl);
   return s;
 }
 
 std::shared_ptr<Object> makeConductorBSDF(const Properties& props) {
-  std::optional<ConductorIndex> ior = readConductorIndex(props);
+  std::optional<ConductorIndexParameter> ior = readConductorIndex(props);
   return std::make_shared<ConductorBSDF>(
       std::move(ior), readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance));
 }

@@ -3,9 +3,9 @@
 // reflectance at each wavelength. One-sided.
 #include <memory>
 #include <optional>
+#include "bsdfs/bsdf_parameters.h"
 #include "bsdfs/delta_bsdf.h"
 #include "core/properties.h"
-#include "optics/conductor_materials.h"
 #include "textures/textured_parameter.h"
 
 namespace columba {
@@ -13,13 +13,13 @@ namespace columba {
 class ConductorBSDF : public DeltaBSDF {
  public:
   // Without `ior` the mirror reflects everything (Fresnel = 1).
-  ConductorBSDF(std::optional<ConductorIndex> ior, SpectrumParameter specularReflectance)
+  ConductorBSDF(std::optional<ConductorIndexParameter> ior, SpectrumParameter specularReflectance)
       : ior_(std::move(ior)), specularReflectance_(std::move(specularReflectance)) {}
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
 
  private:
-  std::optional<ConductorIndex> ior_;
+  std::optional<ConductorIndexParameter> ior_;
   SpectrumParameter specularReflectance_;
 };
 

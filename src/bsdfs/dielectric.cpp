@@ -18,11 +18,11 @@ std::optional<BSDFSample> DielectricBSDF::sample(const BSDFContext& ctx, const V
   if (uComponent < reflectance) {
     s.wo = mirrorDirection(wi);
     s.pdf = reflectance;
-    s.weight = specularReflectance_.eval(ctx.uv, wl);
+    s.weight = specularReflectance_.eval(ctx.point, wl);
   } else {
     s.wo = Vec3(-wi.x / etaTI, -wi.y / etaTI, std::copysign(a.cosT, -cosI));
     s.pdf = 1.0f - reflectance;
-    s.weight = specularTransmittance_.eval(ctx.uv, wl) / (etaTI * etaTI);
+    s.weight = specularTransmittance_.eval(ctx.point, wl) / (etaTI * etaTI);
   }
   return s;
 }

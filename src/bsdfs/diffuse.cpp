@@ -6,7 +6,7 @@ namespace columba {
 
 Spectrum DiffuseBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
-  return reflectance_.eval(ctx.uv, wl) * (kInvPi * cosTheta(wo));
+  return reflectance_.eval(ctx.point, wl) * (kInvPi * cosTheta(wo));
 }
 
 float DiffuseBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
@@ -21,7 +21,7 @@ std::optional<BSDFSample> DiffuseBSDF::sample(const BSDFContext& ctx, const Vec3
   s.wo = sampleCosineHemisphere(u);
   s.pdf = cosineHemispherePdf(cosTheta(s.wo));
   if (s.pdf <= 0.0f) return std::nullopt;
-  s.weight = reflectance_.eval(ctx.uv, wl);
+  s.weight = reflectance_.eval(ctx.point, wl);
   return s;
 }
 

@@ -4,7 +4,7 @@
 
 namespace columba {
 
-float MaskBSDF::opacityAt(const BSDFContext& ctx) const { return std::clamp(opacity_.eval(ctx.uv), 0.0f, 1.0f); }
+float MaskBSDF::opacityAt(const BSDFContext& ctx) const { return std::clamp(opacity_.eval(ctx.point), 0.0f, 1.0f); }
 
 Spectrum MaskBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   return opacityAt(ctx) * nested_->eval(ctx, wi, wo, wl);

@@ -14,7 +14,9 @@ class MicrofacetRoughness {
   MicrofacetRoughness(MicrofacetType type, FloatParameter alphaU, FloatParameter alphaV)
       : type_(type), alphaU_(std::move(alphaU)), alphaV_(std::move(alphaV)) {}
 
-  MicrofacetDistribution at(Vec2 uv) const { return MicrofacetDistribution(type_, alphaU_.eval(uv), alphaV_.eval(uv)); }
+  MicrofacetDistribution at(const TexturePoint& p) const {
+    return MicrofacetDistribution(type_, alphaU_.eval(p), alphaV_.eval(p));
+  }
   bool isTextured() const { return alphaU_.isTextured() || alphaV_.isTextured(); }
 
  private:

@@ -26,7 +26,7 @@ float PlasticBSDF::specularProbability(float fresnelI) const {
 
 Spectrum PlasticBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   if (cosTheta(wi) <= 0.0f || cosTheta(wo) <= 0.0f) return Spectrum(0.0f);
-  Spectrum kd = diffuseReflectance_.eval(ctx.uv, wl);
+  Spectrum kd = diffuseReflectance_.eval(ctx.point, wl);
   Spectrum base =
       kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   // 1/eta^2: radiance leaving the coat spreads into the larger solid angle outside.
@@ -50,7 +50,7 @@ std::optional<BSDFSample> PlasticBSDF::sample(const BSDFContext& ctx, const Vec3
     s.wo = mirrorDirection(wi);
     s.pdf = pSpecular;
     s.delta = true;
-    s.weight = specularReflectance_.eval(ctx.uv, wl) * (fresnelI / pSpecular);
+    s.weight = specularReflectance_.eval(ctx.point, wl) * (fresnelI / pSpecular);
     return s;
   }
   s.wo = sampleCosineHemisphere(u);

@@ -10,22 +10,22 @@ namespace columba {
 PrincipledBSDF::PrincipledBSDF(PrincipledParameters parameters) : p_(std::move(parameters)) {}
 
 PrincipledBSDF::Material PrincipledBSDF::materialAt(const BSDFContext& ctx, const Wavelengths& wl) const {
-  const Vec2 uv = ctx.uv;
-  const Spectrum base = p_.baseColor.eval(uv, wl);
-  const float metallic = p_.metallic.eval(uv), specTrans = p_.specTrans.eval(uv), roughness = p_.roughness.eval(uv);
+  const TexturePoint& at = ctx.point;
+  const Spectrum base = p_.baseColor.eval(at, wl);
+  const float metallic = p_.metallic.eval(at), specTrans = p_.specTrans.eval(at), roughness = p_.roughness.eval(at);
   return Material{base,
-                  tintColour(base, p_.baseColor.evalFloat(uv)),
+                  tintColour(base, p_.baseColor.evalFloat(at)),
                   roughness,
                   metallic,
-                  p_.specTint.eval(uv),
-                  p_.sheen.eval(uv),
-                  p_.sheenTint.eval(uv),
-                  p_.flatness.eval(uv),
-                  p_.clearcoat.eval(uv),
+                  p_.specTint.eval(at),
+                  p_.sheen.eval(at),
+                  p_.sheenTint.eval(at),
+                  p_.flatness.eval(at),
+                  p_.clearcoat.eval(at),
                   (1.0f - metallic) * (1.0f - specTrans),
                   (1.0f - metallic) * specTrans,
-                  principledDistribution(roughness, p_.anisotropic.eval(uv)),
-                  GTR1Distribution::fromGloss(p_.clearcoatGloss.eval(uv))};
+                  principledDistribution(roughness, p_.anisotropic.eval(at)),
+                  GTR1Distribution::fromGloss(p_.clearcoatGloss.eval(at))};
 }
 
 PrincipledBSDF::Strategies PrincipledBSDF::strategies(const Material& material, bool front) const {

@@ -29,19 +29,19 @@ SheetPair sheetPair(const Vec3& wi, const Vec3& wo) {
 PrincipledThinBSDF::PrincipledThinBSDF(PrincipledThinParameters parameters) : p_(std::move(parameters)) {}
 
 PrincipledThinBSDF::Material PrincipledThinBSDF::materialAt(const BSDFContext& ctx, const Wavelengths& wl) const {
-  const Vec2 uv = ctx.uv;
-  const Spectrum base = p_.baseColor.eval(uv, wl);
-  const float roughness = p_.roughness.eval(uv), anisotropic = p_.anisotropic.eval(uv), eta = p_.eta.eval(uv);
+  const TexturePoint& at = ctx.point;
+  const Spectrum base = p_.baseColor.eval(at, wl);
+  const float roughness = p_.roughness.eval(at), anisotropic = p_.anisotropic.eval(at), eta = p_.eta.eval(at);
   return Material{base,
-                  tintColour(base, p_.baseColor.evalFloat(uv)),
+                  tintColour(base, p_.baseColor.evalFloat(at)),
                   roughness,
-                  p_.specTrans.eval(uv),
-                  0.5f * p_.diffTrans.eval(uv),
+                  p_.specTrans.eval(at),
+                  0.5f * p_.diffTrans.eval(at),
                   eta,
-                  p_.specTint.eval(uv),
-                  p_.sheen.eval(uv),
-                  p_.sheenTint.eval(uv),
-                  p_.flatness.eval(uv),
+                  p_.specTint.eval(at),
+                  p_.sheen.eval(at),
+                  p_.sheenTint.eval(at),
+                  p_.flatness.eval(at),
                   principledDistribution(roughness, anisotropic),
                   principledDistribution((0.65f * eta - 0.35f) * roughness, anisotropic)};
 }

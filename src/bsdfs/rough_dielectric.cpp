@@ -22,14 +22,14 @@ Spectrum RoughDielectricBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const
                                    const Wavelengths& wl) const {
   InterfacePair p = interfacePair(wi, wo, eta_);
   if (!p.valid) return Spectrum(0.0f);
-  float f = componentFresnel(p, fresnelDielectric(dot(p.wi, p.m), p.eta)) * interfaceValue(roughness_.at(ctx.uv), p);
-  return (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.uv, wl) * f;
+  float f = componentFresnel(p, fresnelDielectric(dot(p.wi, p.m), p.eta)) * interfaceValue(roughness_.at(ctx.point), p);
+  return (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.point, wl) * f;
 }
 
 float RoughDielectricBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths&) const {
   InterfacePair p = interfacePair(wi, wo, eta_);
   if (!p.valid) return 0.0f;
-  return componentFresnel(p, fresnelDielectric(dot(p.wi, p.m), p.eta)) * interfaceDensity(roughness_.at(ctx.uv), p);
+  return componentFresnel(p, fresnelDielectric(dot(p.wi, p.m), p.eta)) * interfaceDensity(roughness_.at(ctx.point), p);
 }
 
 std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
@@ -38,7 +38,7 @@ std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext& ctx, co
   bool inside = cosTheta(wi) < 0.0f;
   Vec3 front = inside ? mirroredThroughSurface(wi) : wi;
   float eta = inside ? 1.0f / eta_ : eta_;
-  const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+  const MicrofacetDistribution distribution = roughness_.at(ctx.point);
   Vec3 m = distribution.sampleVisible(front, u);
   float cosI = dot(front, m);
   if (!(cosI > 0.0f)) return std::nullopt;
@@ -58,7 +58,7 @@ std::optional<BSDFSample> RoughDielectricBSDF::sample(const BSDFContext& ctx, co
   s.wo = wo;
   s.pdf = chosen * interfaceDensity(distribution, p);
   if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.uv, wl) *
+  s.weight = (p.reflection ? specularReflectance_ : specularTransmittance_).eval(ctx.point, wl) *
              (chosen * interfaceValue(distribution, p) / s.pdf);
   return s;
 }

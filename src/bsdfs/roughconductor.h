@@ -4,9 +4,9 @@
 #include <memory>
 #include <optional>
 #include "bsdfs/bsdf.h"
+#include "bsdfs/bsdf_parameters.h"
 #include "bsdfs/microfacet_roughness.h"
 #include "core/properties.h"
-#include "optics/conductor_materials.h"
 #include "textures/textured_parameter.h"
 
 namespace columba {
@@ -15,7 +15,7 @@ class RoughConductorBSDF : public BSDF {
  public:
   // `ior`: the metal's complex index relative to the outside; without it every microfacet is a
   // perfect mirror (Fresnel = 1).
-  RoughConductorBSDF(MicrofacetRoughness roughness, std::optional<ConductorIndex> ior,
+  RoughConductorBSDF(MicrofacetRoughness roughness, std::optional<ConductorIndexParameter> ior,
                      SpectrumParameter specularReflectance);
   Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
@@ -24,10 +24,10 @@ class RoughConductorBSDF : public BSDF {
 
  private:
   // Specular reflectance times the Fresnel reflectance at cos(wi, m) = cosI.
-  Spectrum reflectance(Vec2 uv, float cosI, const Wavelengths& wl) const;
+  Spectrum reflectance(const TexturePoint& p, float cosI, const Wavelengths& wl) const;
 
   MicrofacetRoughness roughness_;
-  std::optional<ConductorIndex> ior_;
+  std::optional<ConductorIndexParameter> ior_;
   SpectrumParameter specularReflectance_;
 };
 

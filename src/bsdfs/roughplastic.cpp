@@ -61,11 +61,11 @@ Spectrum RoughPlasticBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Ve
   Vec3 m = normalize(wi + wo);
   float specular =
       fresnelDielectric(dot(wi, m), eta_) * distribution_.D(m) * distribution_.G(wi, wo, m) / (4.0f * cosTheta(wi));
-  Spectrum kd = diffuseReflectance_.eval(ctx.uv, wl);
+  Spectrum kd = diffuseReflectance_.eval(ctx.point, wl);
   Spectrum base =
       kd / (nonlinear_ ? Spectrum(1.0f) - kd * internalReflectance_ : Spectrum(1.0f - internalReflectance_));
   float transmission = externalTransmittance(cosTheta(wi)) * externalTransmittance(cosTheta(wo));
-  return specularReflectance_.eval(ctx.uv, wl) * specular +
+  return specularReflectance_.eval(ctx.point, wl) * specular +
          base * (transmission / (eta_ * eta_) * kInvPi * cosTheta(wo));
 }
 

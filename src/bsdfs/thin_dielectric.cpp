@@ -19,18 +19,18 @@ std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext& ctx, con
   if (uComponent < R) {
     s.wo = mirrorDirection(wi);
     s.pdf = R;
-    s.weight = specularReflectance_.eval(ctx.uv, wl);
+    s.weight = specularReflectance_.eval(ctx.point, wl);
   } else {
     s.wo = -wi;
     s.pdf = 1.0f - R;
-    s.weight = specularTransmittance_.eval(ctx.uv, wl);
+    s.weight = specularTransmittance_.eval(ctx.point, wl);
     s.passThrough = true;
   }
   return s;
 }
 
 Spectrum ThinDielectricBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
-  return specularTransmittance_.eval(ctx.uv, wl) * (1.0f - sheetReflectance(cosTheta(wi)));
+  return specularTransmittance_.eval(ctx.point, wl) * (1.0f - sheetReflectance(cosTheta(wi)));
 }
 
 std::shared_ptr<Object> makeThinDielectricBSDF(const Properties& props) {

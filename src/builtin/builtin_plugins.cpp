@@ -22,6 +22,7 @@
 #include "emitters/directional_emitter.h"
 #include "emitters/envmap_emitter.h"
 #include "emitters/point_emitter.h"
+#include "emitters/projector_emitter.h"
 #include "emitters/spot_emitter.h"
 #include "film/box_filter.h"
 #include "film/film.h"
@@ -50,6 +51,8 @@
 #include "shapes/triangle_mesh.h"
 #include "textures/bitmap_texture.h"
 #include "textures/checkerboard_texture.h"
+#include "textures/mesh_attribute_texture.h"
+#include "textures/raw_constant_texture.h"
 
 namespace columba {
 
@@ -74,6 +77,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("emitter", "constant", makeConstantEmitter);
     r.add("emitter", "point", makePointEmitter);
     r.add("emitter", "spot", makeSpotEmitter);
+    r.add("emitter", "projector", makeProjectorEmitter);
     r.add("emitter", "directional", makeDirectionalEmitter);
     r.add("emitter", "envmap", makeEnvmapEmitter);
     r.add("bsdf", "diffuse", makeDiffuseBSDF);
@@ -105,6 +109,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "feather", makeFeatherShape);
     r.add("texture", "bitmap", makeBitmapTexture);
     r.add("texture", "checkerboard", makeCheckerboardTexture);
+    r.add("texture", "mesh_attribute", makeMeshAttributeTexture);
+    r.add("texture", "rawconstant", makeRawConstantTexture);
     r.add("shape", "shapegroup", makeShapeGroup);
     r.add("shape", "instance", makeInstanceShape);
     return r;

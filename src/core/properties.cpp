@@ -64,6 +64,11 @@ bool Properties::isString(const std::string& name) const {
   return it != values_.end() && it->second.kind == ValueKind::String;
 }
 
+bool Properties::isVector(const std::string& name) const {
+  auto it = values_.find(name);
+  return it != values_.end() && it->second.kind == ValueKind::Vector;
+}
+
 namespace {
 
 float toFloat(const Properties::Value& v, const std::string& name) {

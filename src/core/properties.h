@@ -30,6 +30,8 @@ class Properties {
   bool has(const std::string& name) const;
   // True when `name` was given as a <string> (e.g. a named IOR rather than a number).
   bool isString(const std::string& name) const;
+  // True when `name` was given as a <vector> or <point>.
+  bool isVector(const std::string& name) const;
   // Typed getters: a missing optional value returns `def`; a missing required value or one of
   // the wrong type throws InputError naming the file, line and parameter.
   float getFloat(const std::string& name) const;

@@ -16,7 +16,7 @@ std::optional<EmitterSample> AreaEmitter::sample(const Vec3& ref, Vec2 u, const 
   Vec3 d = rs->p - ref;
   s.distance = length(d);
   s.direction = d / s.distance;
-  s.radiance = radiance_.sample(wl);
+  s.radiance = radiance_.eval(rs->point, wl);
   s.pdf = rs->pdf;
   return s;
 }
@@ -24,11 +24,11 @@ std::optional<EmitterSample> AreaEmitter::sample(const Vec3& ref, Vec2 u, const 
 float AreaEmitter::pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const { return shape_->pdfFrom(ref, hit); }
 
 Spectrum AreaEmitter::radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const {
-  return dot(hit.ng, toViewer) > 0.0f ? radiance_.sample(wl) : Spectrum(0.0f);
+  return dot(hit.ng, toViewer) > 0.0f ? radiance_.eval(hit.texturePoint(), wl) : Spectrum(0.0f);
 }
 
 std::shared_ptr<Object> makeAreaEmitter(const Properties& props) {
-  return std::make_shared<AreaEmitter>(props.getSpectrum("radiance", 1.0f, SpectrumUse::Emission));
+  return std::make_shared<AreaEmitter>(readSpectrumParameter(props, "radiance", 1.0f, SpectrumUse::Emission));
 }
 
 }  // namespace columba

@@ -1,20 +1,22 @@
 #pragma once
-// `area`: uniform radiance leaving the front side of a shape.
+// `area`: radiance leaving the front side of a shape: the same everywhere, or a texture looked up
+// at each point of the shape (its uv, or a mesh's attributes there), as in Mitsuba.
 #include "core/properties.h"
 #include "emitters/emitter.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
 class AreaEmitter : public Emitter {
  public:
-  explicit AreaEmitter(SpectralDistribution radiance) : radiance_(std::move(radiance)) {}
+  explicit AreaEmitter(SpectrumParameter radiance) : radiance_(std::move(radiance)) {}
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   float pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const override;
   Spectrum radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const override;
   void attachTo(const Shape* shape) override;
 
  private:
-  SpectralDistribution radiance_;
+  SpectrumParameter radiance_;
   const Shape* shape_ = nullptr;
 };
 

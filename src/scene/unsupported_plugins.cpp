@@ -7,7 +7,8 @@ namespace columba {
 
 namespace {
 const char* kMedia = "participating media are not supported; Columba renders surfaces only";
-const char* kTextures = "of Mitsuba's textures, Columba has 'bitmap' and 'checkerboard'";
+const char* kTextures =
+    "of Mitsuba's textures, Columba has 'bitmap', 'checkerboard', 'mesh_attribute' and 'rawconstant'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
 const char* kPolarisation = "polarised rendering is not supported";
 }  // namespace
@@ -34,7 +35,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"phase", "sggx"}, kMedia},
       {{"phase", "tabphase"}, kMedia},
       {{"phase", "blendphase"}, kMedia},
-      {{"texture", "mesh_attribute"}, kTextures},
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},
@@ -46,7 +46,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"shape", "bsplinecurve"}, "curves are not supported"},
       {{"shape", "linearcurve"}, "curves are not supported"},
       {{"shape", "ellipsoids"}, "ellipsoid clouds are not supported"},
-      {{"emitter", "projector"}, "the projector emitter is not supported yet"},
       {{"emitter", "sunsky"}, "the sun and sky model is not supported; use 'envmap' or 'directional'"},
       {{"sensor", "irradiancemeter"}, "only cameras are supported as sensors"},
       {{"sensor", "radiancemeter"}, "only cameras are supported as sensors"},

@@ -1,29 +1,15 @@
 #include "sensors/perspective_sensor.h"
 
 #include <cmath>
-#include <cstdlib>
 
 namespace columba {
 
 PerspectiveSensor::PerspectiveSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler,
                                      const PerspectiveParameters& view)
     : Sensor(std::move(film), std::move(sampler)), toWorld_(view.toWorld), clip_(view.clip) {
-  float aspect = float(this->film().width()) / float(this->film().height());
-  float t = std::tan(0.5f * degToRad(view.fovDegrees));
-  std::string axis = view.fovAxis;
-  if (axis == "smaller") axis = aspect > 1.0f ? "y" : "x";
-  if (axis == "larger") axis = aspect > 1.0f ? "x" : "y";
-  if (axis == "x") {
-    tanHalfX_ = t;
-    tanHalfY_ = t / aspect;
-  } else if (axis == "y") {
-    tanHalfY_ = t;
-    tanHalfX_ = t * aspect;
-  } else {  // diagonal
-    float d = std::sqrt(aspect * aspect + 1.0f);
-    tanHalfX_ = t * aspect / d;
-    tanHalfY_ = t / d;
-  }
+  const Vec2 tanHalf = tanHalfAngles(view.fov, float(this->film().width()) / float(this->film().height()));
+  tanHalfX_ = tanHalf.x;
+  tanHalfY_ = tanHalf.y;
 }
 
 Vec3 PerspectiveSensor::imagePlanePoint(Vec2 filmPosition) const {
@@ -43,49 +29,8 @@ std::optional<Ray> PerspectiveSensor::generateRay(Vec2 filmPosition, Vec2 /*aper
   return ray;
 }
 
-float diagonalFovOfFocalLength(float focalLengthMm) {
-  // The diagonal of a 36 x 24 mm film seen from the lens.
-  return radToDeg(2.0f * std::atan(std::sqrt(36.0f * 36.0f + 24.0f * 24.0f) / (2.0f * focalLengthMm)));
-}
-
-namespace {
-
-// `focal_length` as Mitsuba reads it: "<x>mm" or "<x>" as a string, or a number, in mm.
-float focalLengthMm(const Properties& props) {
-  if (!props.isString("focal_length")) return props.getFloat("focal_length", kDefaultFocalLengthMm);
-  std::string text = props.getString("focal_length");
-  if (text.size() > 2 && text.compare(text.size() - 2, 2, "mm") == 0) text.erase(text.size() - 2);
-  char* end = nullptr;
-  const float value = std::strtof(text.c_str(), &end);
-  if (text.empty() || *end != '\0')
-    throw props.error("focal_length", "cannot read focal_length '" + props.getString("focal_length") +
-                                          "' (write it as <x>mm, e.g. 50mm)");
-  return value;
-}
-
-}  // namespace
-
 PerspectiveParameters readPerspectiveParameters(const Properties& props) {
-  if (props.has("fov") && props.has("focal_length"))
-    throw props.error("focal_length", "give either fov or focal_length, not both");
-  float fov;
-  std::string axis;
-  if (props.has("fov")) {
-    fov = props.getFloat("fov");
-    if (!(fov > 0.0f && fov < 180.0f))
-      throw props.error("fov", "fov must be in (0, 180) degrees, not " + std::to_string(fov));
-    axis = props.getString("fov_axis", "x");
-    if (axis != "x" && axis != "y" && axis != "diagonal" && axis != "smaller" && axis != "larger")
-      throw props.error("fov_axis", "fov_axis must be x, y, diagonal, smaller or larger, not '" + axis + "'");
-  } else {
-    // Mitsuba's default lens: a focal length (50 mm unless given) on 36 x 24 mm film, on the diagonal.
-    const float focalLength = focalLengthMm(props);
-    if (!(focalLength > 0.0f && std::isfinite(focalLength)))
-      throw props.error("focal_length", "focal_length must be positive, not " + std::to_string(focalLength));
-    fov = diagonalFovOfFocalLength(focalLength);
-    axis = "diagonal";
-  }
-  return {props.getTransform("to_world"), fov, axis, sensorClipRange(props)};
+  return {props.getTransform("to_world"), readFieldOfView(props), sensorClipRange(props)};
 }
 
 std::shared_ptr<Object> makePerspectiveSensor(const Properties& props) {

@@ -1,21 +1,19 @@
 #pragma once
 // `perspective`: a pinhole camera looking along its local +z, with +y up and +x to the left
 // (Mitsuba's camera frame, so `lookat` transforms place it the same way). Its field of view is
-// `fov` (degrees, along `fov_axis`, x by default) or, as in Mitsuba, that of a lens of
-// `focal_length` (50mm by default) on 36 x 24 mm film, measured on the diagonal and fitted to the
-// image's aspect.
+// Mitsuba's (core/field_of_view.h): `fov` along `fov_axis`, or that of a lens of `focal_length`.
+#include "core/field_of_view.h"
 #include "core/properties.h"
 #include "core/transform.h"
 #include "sensors/sensor.h"
 
 namespace columba {
 
-// What the perspective and thin-lens cameras share: where they are, their field of view (degrees,
-// along fovAxis) and their clip range.
+// What the perspective and thin-lens cameras share: where they are, their field of view and their
+// clip range.
 struct PerspectiveParameters {
   Transform toWorld;
-  float fovDegrees;
-  std::string fovAxis;
+  FieldOfView fov;
   ClipRange clip;
 };
 // fov and fov_axis or focal_length, near_clip, far_clip and to_world, checked.
@@ -41,10 +39,6 @@ class PerspectiveSensor : public Sensor {
   float tanHalfX_, tanHalfY_;  // image-plane half extents at unit distance
   ClipRange clip_;
 };
-
-inline constexpr float kDefaultFocalLengthMm = 50.0f;
-// Diagonal field of view, degrees, of a lens of `focalLengthMm` on 36 x 24 mm film.
-float diagonalFovOfFocalLength(float focalLengthMm);
 
 std::shared_ptr<Object> makePerspectiveSensor(const Properties& props);
 

@@ -54,6 +54,7 @@ PositionSample CylinderShape::samplePosition(Vec2 u) const {
   PositionSample ps;
   ps.p = toWorldPoint(local);
   ps.n = toWorldNormal(localNormal(local));
+  ps.point = Vec2(u.y, u.x);  // (phi / 2 pi, height), as hits give it
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

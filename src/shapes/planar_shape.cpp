@@ -57,8 +57,10 @@ SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit
 
 PositionSample PlanarShape::samplePosition(Vec2 u) const {
   PositionSample ps;
-  ps.p = worldPoint(sampleLocal(u));
+  const Vec2 local = sampleLocal(u);
+  ps.p = worldPoint(local);
   ps.n = frame_.n;
+  ps.point = uvAt(local);
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <unordered_set>
 
+#include "shapes/ply_attributes.h"
 #include "shapes/ply_file.h"
 
 namespace columba {
@@ -40,8 +43,38 @@ VertexLayout vertexLayout(const PlyReader& ply, const PlyElement& e) {
   return layout;
 }
 
+// The values of attribute groups, one vector per group, filled record by record.
+struct AttributeValues {
+  std::vector<PlyAttributeGroup> groups;
+  std::vector<std::vector<float>> values;
+
+  AttributeValues(const PlyElement& e, const std::string& prefix, const std::unordered_set<std::string>& reserved)
+      : groups(plyAttributeGroups(e, prefix, reserved)), values(groups.size()) {
+    for (size_t g = 0; g < groups.size(); ++g) values[g].reserve(e.count * groups[g].properties.size());
+  }
+  void read(const PlyReader& ply, const PlyElement& e) {
+    for (size_t g = 0; g < groups.size(); ++g)
+      for (int property : groups[g].properties) {
+        const float v = plyAttributeValue(ply.scalar(size_t(property)), e.properties[size_t(property)].type);
+        if (!std::isfinite(v)) ply.fail("property '" + e.properties[size_t(property)].name + "' is not a finite float");
+        values[g].push_back(v);
+      }
+  }
+  void addTo(MeshAttributes& attributes) {
+    for (size_t g = 0; g < groups.size(); ++g)
+      attributes.add(groups[g].name, int(groups[g].properties.size()), std::move(values[g]));
+  }
+};
+
 void readVertices(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
   const VertexLayout layout = vertexLayout(ply, e);
+  std::unordered_set<std::string> reserved;
+  for (int property : layout.position) reserved.insert(e.properties[size_t(property)].name);
+  if (layout.hasNormals())
+    for (int property : layout.normal) reserved.insert(e.properties[size_t(property)].name);
+  if (layout.hasUVs())
+    for (int property : layout.uv) reserved.insert(e.properties[size_t(property)].name);
+  AttributeValues attributes(e, "vertex_", reserved);
   mesh.positions.reserve(e.count);
   if (layout.hasNormals()) mesh.normals.reserve(e.count);
   if (layout.hasUVs()) mesh.uvs.reserve(e.count);
@@ -56,15 +89,20 @@ void readVertices(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
     if (layout.hasNormals())
       mesh.normals.push_back(Vec3(value(layout.normal[0]), value(layout.normal[1]), value(layout.normal[2])));
     if (layout.hasUVs()) mesh.uvs.push_back(Vec2(value(layout.uv[0]), value(layout.uv[1])));
+    attributes.read(ply, e);
   }
+  attributes.addTo(mesh.attributes);
 }
 
 void readFaces(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
   const int list = ply.vertexIndexList(e);
   const size_t vertexCount = mesh.positions.size();
   mesh.indices.reserve(3 * e.count);
+  AttributeValues attributes(e, "face_", {});
+  std::vector<uint32_t> triangleFace;  // the face each triangle comes from
   for (size_t i = 0; i < e.count; ++i) {
     ply.next();
+    attributes.read(ply, e);
     const std::vector<double>& face = ply.list(size_t(list));
     if (face.size() < 3) ply.fail("has " + std::to_string(face.size()) + " vertex indices; a face needs at least 3");
     const uint32_t first = ply.vertexIndex(face[0], vertexCount);
@@ -72,9 +110,13 @@ void readFaces(PlyReader& ply, const PlyElement& e, MeshData& mesh) {
     for (size_t k = 2; k < face.size(); ++k) {
       const uint32_t current = ply.vertexIndex(face[k], vertexCount);
       mesh.indices.insert(mesh.indices.end(), {first, previous, current});
+      if (!attributes.groups.empty()) triangleFace.push_back(uint32_t(i));
       previous = current;
     }
   }
+  if (attributes.groups.empty()) return;
+  attributes.addTo(mesh.attributes);
+  mesh.attributes.expandFacesToTriangles(triangleFace);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ std::optional<ReferenceSample> Shape::sampleFrom(const Vec3& ref, Vec2 u) const 
   float dist2 = lengthSquared(d);
   float cosLight = -dot(ps.n, d) / std::sqrt(dist2);
   if (dist2 == 0.0f || cosLight <= 0.0f) return std::nullopt;  // the point faces away
-  return ReferenceSample{ps.p, ps.n, ps.pdfArea * dist2 / cosLight};
+  return ReferenceSample{ps.p, ps.n, ps.point, ps.pdfArea * dist2 / cosLight};
 }
 
 float Shape::pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const {

@@ -36,16 +36,34 @@ struct SurfaceInteraction {
   float t = 0.0f;  // ray distance
   const Shape* shape = nullptr;
   SurfaceAttributes attributes;  // per-point values of the BSDF's parameters (a feather's barbules)
+  // On a mesh whose file carries per-vertex or per-face values: them, the triangle hit and the
+  // barycentric coordinates there (what mesh_attribute textures read); null elsewhere.
+  const MeshAttributes* meshAttributes = nullptr;
+  uint32_t triangle = 0;
+  Vec2 barycentric;
 
-  BSDFContext bsdfContext() const { return BSDFContext{&attributes, uv, shading.toLocal(dpdu), shading.toLocal(dpdv)}; }
+  // Where textures are looked up at this point.
+  TexturePoint texturePoint() const {
+    TexturePoint p(uv);
+    p.mesh = meshAttributes;
+    p.triangle = triangle;
+    p.barycentric = barycentric;
+    return p;
+  }
+  BSDFContext bsdfContext() const {
+    return BSDFContext{&attributes, texturePoint(), shading.toLocal(dpdu), shading.toLocal(dpdv)};
+  }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
   Ray spawnRay(const Vec3& d) const;
   Ray spawnRayTo(const Vec3& target) const;  // tmax stops just short of `target`
 };
 
+// A point chosen on a shape, with where textures are looked up there (a textured area light's
+// radiance).
 struct PositionSample {
   Vec3 p, n;
+  TexturePoint point;
   float pdfArea = 0.0f;
 };
 
@@ -53,6 +71,7 @@ struct PositionSample {
 // the direction toward it.
 struct ReferenceSample {
   Vec3 p, n;
+  TexturePoint point;
   float pdf = 0.0f;
 };
 

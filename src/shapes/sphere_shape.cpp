@@ -21,6 +21,12 @@ std::optional<float> SphereShape::coneCosine(const Vec3& ref) const {
   return safeSqrt(1.0f - radius_ * radius_ / dist2);
 }
 
+Vec2 SphereShape::uvOf(const Vec3& local) {
+  // u = phi / (2 pi), v = theta / pi.
+  const float phi = std::atan2(local.y, local.x);
+  return Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
+}
+
 std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u) const {
   std::optional<float> cosMax = coneCosine(ref);
   if (!cosMax) return Shape::sampleFrom(ref, u);
@@ -33,6 +39,7 @@ std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u) 
   ReferenceSample rs;
   rs.p = ref + d * t;
   rs.n = normalize(rs.p - center_);
+  rs.point = uvOf(normalize(toLocalPoint(rs.p)));
   rs.pdf = uniformConePdf(*cosMax);
   return rs;
 }
@@ -68,9 +75,7 @@ SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit
   Vec3 local = normalize(toLocalPoint(ray.at(hit.t)));
   si.p = toWorldPoint(local);  // re-projected onto the surface
   si.ng = toWorldNormal(localNormal(local));
-  float phi = std::atan2(local.y, local.x);
-  si.uv = Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
-  // u = phi / (2 pi), v = theta / pi.
+  si.uv = uvOf(local);
   si.dpdu = toWorld_.vector(Vec3(-local.y, local.x, 0) * kTwoPi);
   const float r = std::sqrt(local.x * local.x + local.y * local.y);
   if (r > 0.0f) si.dpdv = toWorld_.vector(Vec3(local.z * local.x / r, local.z * local.y / r, -r) * kPi);
@@ -83,6 +88,7 @@ PositionSample SphereShape::samplePosition(Vec2 u) const {
   PositionSample ps;
   ps.p = toWorldPoint(local);
   ps.n = toWorldNormal(localNormal(local));
+  ps.point = uvOf(local);
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

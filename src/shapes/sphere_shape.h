@@ -25,6 +25,8 @@ class SphereShape : public AnalyticShape {
   // Cosine of the half-angle of the cone the sphere subtends from `ref`; nullopt when `ref`
   // is inside or the sphere is not round (then area sampling is used).
   std::optional<float> coneCosine(const Vec3& ref) const;
+  // (u, v) = (phi / 2 pi, theta / pi) of a point of the unit sphere in the shape's own space.
+  static Vec2 uvOf(const Vec3& local);
   bool flip_;
   bool round_;  // to_world scales uniformly
   Vec3 center_;

@@ -46,6 +46,7 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
   }
   if (!std::isfinite(area_)) throw InputError(where, "the mesh's total area overflows single precision");
   if (area_ > 0.0f) triangleByArea_ = Distribution1D(std::move(areas));
+  if (!mesh_.attributes.empty()) mesh_.attributes.setTriangles(mesh_.indices);
   faceFrames_.resize(primitiveCount());
   for (size_t t = 0; t < faceFrames_.size(); ++t)
     faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), positionDerivatives(t).first);
@@ -103,10 +104,11 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
     // dp/du lies in the face's plane, so the face frame's s has its direction.
     si.shading = Frame::fromNormalAndS(ns, face.s);
   }
-  if (!mesh_.uvs.empty())
-    si.uv = mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2;
-  else
-    si.uv = Vec2(b1, b2);
+  const TexturePoint where = texturePointAt(hit.primID, b1, b2);
+  si.uv = where.uv;
+  si.meshAttributes = where.mesh;
+  si.triangle = where.triangle;
+  si.barycentric = where.barycentric;
   std::tie(si.dpdu, si.dpdv) = positionDerivatives(hit.primID);
   return si;
 }
@@ -119,8 +121,22 @@ PositionSample TriangleMesh::samplePosition(Vec2 u) const {
   PositionSample ps;
   ps.p = mesh_.positions[idx[0]] * (1.0f - b.x - b.y) + mesh_.positions[idx[1]] * b.x + mesh_.positions[idx[2]] * b.y;
   ps.n = faceFrames_[tri].n;
+  ps.point = texturePointAt(tri, b.x, b.y);
   ps.pdfArea = 1.0f / area_;
   return ps;
+}
+
+TexturePoint TriangleMesh::texturePointAt(size_t tri, float b1, float b2) const {
+  const uint32_t* idx = &mesh_.indices[3 * tri];
+  const float b0 = 1.0f - b1 - b2;
+  TexturePoint p(mesh_.uvs.empty() ? Vec2(b1, b2)
+                                   : mesh_.uvs[idx[0]] * b0 + mesh_.uvs[idx[1]] * b1 + mesh_.uvs[idx[2]] * b2);
+  if (!mesh_.attributes.empty()) {
+    p.mesh = &mesh_.attributes;
+    p.triangle = uint32_t(tri);
+    p.barycentric = Vec2(b1, b2);
+  }
+  return p;
 }
 
 void attachMaterial(const Properties& props, Shape& shape) {

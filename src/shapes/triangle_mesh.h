@@ -6,6 +6,7 @@
 #include "core/properties.h"
 #include "core/transform.h"
 #include "shapes/shape.h"
+#include "textures/mesh_attributes.h"
 
 namespace columba {
 
@@ -14,6 +15,8 @@ struct MeshData {
   std::vector<Vec3> normals;      // per vertex, or empty
   std::vector<Vec2> uvs;          // per vertex, or empty
   std::vector<uint32_t> indices;  // 3 per triangle
+  // Further per-vertex and per-triangle values of the file (PLY), for mesh_attribute textures.
+  MeshAttributes attributes;
 };
 
 class TriangleMesh : public Shape {
@@ -35,6 +38,9 @@ class TriangleMesh : public Shape {
   // dp/du and dp/dv of a triangle: from its uvs where they are usable, else from the barycentric
   // coordinates that stand in for them (p1 - p0 and p2 - p0).
   std::pair<Vec3, Vec3> positionDerivatives(size_t tri) const;
+  // Where textures are looked up at barycentric coordinates (b1, b2) of triangle `tri`: the
+  // interpolated uvs (or (b1, b2) without them) and the mesh's attributes there.
+  TexturePoint texturePointAt(size_t tri, float b1, float b2) const;
   MeshData mesh_;
   bool flip_;
   float area_ = 0.0f;

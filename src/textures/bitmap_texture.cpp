@@ -1,36 +1,14 @@
 #include "textures/bitmap_texture.h"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "core/error.h"
+#include "textures/fitted_colours.h"
 
 namespace columba {
 
 namespace {
-// A colour's bits, to fit each distinct colour of an image once: photographs and 8-bit images
-// repeat colours a great deal, and each fit is an iterative solve.
-struct ColourKey {
-  uint32_t bits[3];
-  bool operator==(const ColourKey& o) const { return std::memcmp(bits, o.bits, sizeof bits) == 0; }
-};
-struct ColourKeyHash {
-  size_t operator()(const ColourKey& k) const {
-    return (size_t(k.bits[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.bits[1]) * 0xC2B2AE3D27D4EB4Full) ^ k.bits[2];
-  }
-};
-ColourKey keyOf(const Vec3& c) {
-  ColourKey k;
-  std::memcpy(&k.bits[0], &c.x, 4);
-  std::memcpy(&k.bits[1], &c.y, 4);
-  std::memcpy(&k.bits[2], &c.z, 4);
-  return k;
-}
-
 TextureFilter readFilter(const Properties& props) {
   const std::string name = props.getString("filter_type", "bilinear");
   if (name == "bilinear") return TextureFilter::Bilinear;
@@ -91,28 +69,9 @@ BitmapTexture::BitmapTexture(const PixelGrid& pixels, bool raw, TextureFilter fi
     mean_ = float(sum / double(count));
     return;
   }
-  // One fit per distinct colour, in parallel; the result does not depend on the order.
-  std::unordered_map<ColourKey, uint32_t, ColourKeyHash> indexOf;
-  std::vector<Vec3> distinct;
-  std::vector<uint32_t> texelColour(count);
-  for (size_t i = 0; i < count; ++i) {
-    auto [it, added] = indexOf.emplace(keyOf(colours[i]), uint32_t(distinct.size()));
-    if (added) distinct.push_back(colours[i]);
-    texelColour[i] = it->second;
-  }
-  std::vector<RGBSpectrum> fitted(distinct.size());
-  std::vector<float> fittedMean(distinct.size());
-  tbb::parallel_for(size_t(0), distinct.size(), [&](size_t i) {
-    const Vec3& c = distinct[i];
-    fitted[i] = fitRGBSpectrum(c, std::max(c.x, std::max(c.y, c.z)) > 1.0f);
-    fittedMean[i] = fitted[i].meanValue();
-  });
-  spectra_.resize(count);
-  for (size_t i = 0; i < count; ++i) {
-    spectra_[i] = fitted[texelColour[i]];
-    sum += fittedMean[texelColour[i]];
-  }
-  mean_ = float(sum / double(count));
+  FittedColours fitted = fitColourSpectra(colours);
+  spectra_ = std::move(fitted.spectra);
+  mean_ = fitted.mean;
 }
 
 BitmapTexture::Footprint BitmapTexture::footprint(Vec2 uvIn) const {
@@ -145,9 +104,9 @@ BitmapTexture::Footprint BitmapTexture::footprint(Vec2 uvIn) const {
   return f;
 }
 
-Spectrum BitmapTexture::evalSpectrum(Vec2 uv, const Wavelengths& wl) const {
-  if (spectra_.empty()) return Spectrum(evalFloat(uv));  // a grey image
-  const Footprint f = footprint(uv);
+Spectrum BitmapTexture::evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const {
+  if (spectra_.empty()) return Spectrum(evalFloat(p));  // a grey image
+  const Footprint f = footprint(p.uv);
   Spectrum result(0.0f);
   for (int k = 0; k < f.count; ++k) {
     const RGBSpectrum& s = spectra_[f.texel[k]];
@@ -158,16 +117,16 @@ Spectrum BitmapTexture::evalSpectrum(Vec2 uv, const Wavelengths& wl) const {
   return result;
 }
 
-float BitmapTexture::evalFloat(Vec2 uv) const {
-  const Footprint f = footprint(uv);
+float BitmapTexture::evalFloat(const TexturePoint& p) const {
+  const Footprint f = footprint(p.uv);
   float result = 0.0f;
   for (int k = 0; k < f.count; ++k) result += values_[f.texel[k]] * f.weight[k];
   return result;
 }
 
-Vec2 BitmapTexture::evalFloatGradient(Vec2 uv) const {
+Vec2 BitmapTexture::evalFloatGradient(const TexturePoint& p) const {
   if (filter_ == TextureFilter::Nearest) return Vec2(0, 0);
-  const Footprint f = footprint(uv);
+  const Footprint f = footprint(p.uv);
   const float v00 = values_[f.texel[0]], v10 = values_[f.texel[1]], v01 = values_[f.texel[2]],
               v11 = values_[f.texel[3]];
   // Slopes per unit of the looked-up coordinates, then through to_uv's linear part (its transpose).
@@ -177,9 +136,9 @@ Vec2 BitmapTexture::evalFloatGradient(Vec2 uv) const {
   return Vec2(float(m[0][0] * dx + m[1][0] * dy), float(m[0][1] * dx + m[1][1] * dy));
 }
 
-Vec3 BitmapTexture::evalRGB(Vec2 uv) const {
-  if (rawRGB_.empty()) throw std::logic_error("evalRGB: the texture holds no raw colours");
-  const Footprint f = footprint(uv);
+Vec3 BitmapTexture::evalTriple(const TexturePoint& p) const {
+  if (rawRGB_.empty()) throw std::logic_error("evalTriple: the texture holds no raw colours");
+  const Footprint f = footprint(p.uv);
   Vec3 result(0, 0, 0);
   for (int k = 0; k < f.count; ++k) result += rawRGB_[f.texel[k]] * f.weight[k];
   return result;

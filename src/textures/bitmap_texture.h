@@ -25,17 +25,16 @@ class BitmapTexture : public Texture {
  public:
   // `raw`: keep the file's numbers (no sRGB decoding was applied by the caller, no spectra).
   BitmapTexture(const PixelGrid& pixels, bool raw, TextureFilter filter, TextureWrap wrap, Transform toUV);
-  Spectrum evalSpectrum(Vec2 uv, const Wavelengths& wl) const override;
-  float evalFloat(Vec2 uv) const override;
-  Vec2 evalFloatGradient(Vec2 uv) const override;
+  Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
+  float evalFloat(const TexturePoint& p) const override;
+  Vec2 evalFloatGradient(const TexturePoint& p) const override;
   float mean() const override { return mean_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
-  // The colour at `uv` as stored, for a colour image read with `raw` (a normal map); InputError-free
-  // std::logic_error otherwise.
-  Vec3 evalRGB(Vec2 uv) const;
-  bool hasRawRGB() const { return !rawRGB_.empty(); }
+  // The colour as stored, for a colour image read with `raw` (a normal map).
+  bool givesTriples() const override { return !rawRGB_.empty(); }
+  Vec3 evalTriple(const TexturePoint& p) const override;
 
   // A grey image, or a colour image read without `raw`.
   bool givesSpectra() const override { return !spectra_.empty() || channels_ == 1; }

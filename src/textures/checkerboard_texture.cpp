@@ -10,12 +10,12 @@ bool CheckerboardTexture::inFirstColour(Vec2 uv) const {
   return upperU == upperV;
 }
 
-Spectrum CheckerboardTexture::evalSpectrum(Vec2 uv, const Wavelengths& wl) const {
-  return inFirstColour(uv) ? color0_.eval(uv, wl) : color1_.eval(uv, wl);
+Spectrum CheckerboardTexture::evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const {
+  return inFirstColour(p.uv) ? color0_.eval(p, wl) : color1_.eval(p, wl);
 }
 
-float CheckerboardTexture::evalFloat(Vec2 uv) const {
-  return inFirstColour(uv) ? color0_.evalFloat(uv) : color1_.evalFloat(uv);
+float CheckerboardTexture::evalFloat(const TexturePoint& p) const {
+  return inFirstColour(p.uv) ? color0_.evalFloat(p) : color1_.evalFloat(p);
 }
 
 float CheckerboardTexture::mean() const { return 0.5f * (color0_.meanValue() + color1_.meanValue()); }

@@ -10,8 +10,8 @@ class CheckerboardTexture : public Texture {
  public:
   CheckerboardTexture(SpectrumParameter color0, SpectrumParameter color1, Transform toUV)
       : color0_(std::move(color0)), color1_(std::move(color1)), toUV_(toUV) {}
-  Spectrum evalSpectrum(Vec2 uv, const Wavelengths& wl) const override;
-  float evalFloat(Vec2 uv) const override;
+  Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
+  float evalFloat(const TexturePoint& p) const override;
   float mean() const override;
 
   // Whether `uv` (after to_uv) lies in a square of color0: the fractional parts of u and v are

@@ -1,6 +1,12 @@
 #include "textures/texture.h"
 
+#include <stdexcept>
+
 namespace columba {
+
+Vec3 Texture::evalTriple(const TexturePoint&) const {
+  throw std::logic_error("evalTriple: this texture holds no raw triples (check givesTriples first)");
+}
 
 Vec2 applyToUV(const Transform& toUV, Vec2 uv) {
   const Matrix4& m = toUV.matrix();

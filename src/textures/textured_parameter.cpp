@@ -16,13 +16,17 @@ SpectrumParameter readSpectrumParameter(const Properties& props, const std::stri
       throw props.error(name, "the texture for '" + name +
                                   "' holds raw numbers, not colours (it was read with raw=true): it cannot give a "
                                   "spectrum");
-    return SpectrumParameter(texture);
+    return SpectrumParameter(texture, use == SpectrumUse::Emission);
   }
   return SpectrumParameter(props.getSpectrum(name, def, use));
 }
 
 FloatParameter readFloatParameter(const Properties& props, const std::string& name, float def) {
-  if (auto texture = textureOf(props, name)) return FloatParameter(texture);
+  if (auto texture = textureOf(props, name)) {
+    if (!texture->givesNumbers())
+      throw props.error(name, "the texture for '" + name + "' holds three numbers (a vector), not one");
+    return FloatParameter(texture);
+  }
   return FloatParameter(props.getFloat(name, def));
 }
 

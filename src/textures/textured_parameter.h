@@ -1,8 +1,9 @@
 #pragma once
-// BSDF parameters that Mitsuba lets a scene texture: each holds either a constant (<float>,
-// <rgb>, <spectrum>) or a texture, evaluated at the shading point's (u, v).
+// BSDF and emitter parameters that Mitsuba lets a scene texture: each holds either a constant
+// (<float>, <rgb>, <spectrum>) or a texture, evaluated at the shading point.
 #include <memory>
 #include <string>
+#include "core/illuminant.h"
 #include "core/properties.h"
 #include "core/spectrum.h"
 #include "textures/texture.h"
@@ -13,13 +14,20 @@ class SpectrumParameter {
  public:
   SpectrumParameter(SpectralDistribution constant)  // NOLINT: a constant is the common case
       : constant_(std::move(constant)), constantLuminance_(constant_.luminance()) {}
-  explicit SpectrumParameter(std::shared_ptr<const Texture> texture) : texture_(std::move(texture)) {}
+  // `illuminant`: the texture gives an emitter's colours, each an illuminant: its spectrum times
+  // CIE D65, as Mitsuba reads a textured radiance and as constants given to emitters are read.
+  explicit SpectrumParameter(std::shared_ptr<const Texture> texture, bool illuminant = false)
+      : texture_(std::move(texture)), illuminant_(illuminant) {}
 
-  Spectrum eval(Vec2 uv, const Wavelengths& wl) const {
-    return texture_ ? texture_->evalSpectrum(uv, wl) : constant_.sample(wl);
+  Spectrum eval(const TexturePoint& p, const Wavelengths& wl) const {
+    if (!texture_) return constant_.sample(wl);
+    Spectrum s = texture_->evalSpectrum(p, wl);
+    if (illuminant_)
+      for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= d65(wl[i]);
+    return s;
   }
   // As a single number: the constant's luminance, or the texture's value as a number.
-  float evalFloat(Vec2 uv) const { return texture_ ? texture_->evalFloat(uv) : constantLuminance_; }
+  float evalFloat(const TexturePoint& p) const { return texture_ ? texture_->evalFloat(p) : constantLuminance_; }
   // Mean over the visible range (constant) or over the texture (its mean as a number).
   float meanValue() const { return texture_ ? texture_->mean() : constant_.meanValue(); }
 
@@ -27,6 +35,7 @@ class SpectrumParameter {
   SpectralDistribution constant_;
   float constantLuminance_ = 0.0f;
   std::shared_ptr<const Texture> texture_;
+  bool illuminant_ = false;
 };
 
 class FloatParameter {
@@ -34,7 +43,7 @@ class FloatParameter {
   FloatParameter(float constant) : constant_(constant) {}  // NOLINT: a constant is the common case
   explicit FloatParameter(std::shared_ptr<const Texture> texture) : texture_(std::move(texture)) {}
 
-  float eval(Vec2 uv) const { return texture_ ? texture_->evalFloat(uv) : constant_; }
+  float eval(const TexturePoint& p) const { return texture_ ? texture_->evalFloat(p) : constant_; }
   float mean() const { return texture_ ? texture_->mean() : constant_; }
   bool isTextured() const { return texture_ != nullptr; }
 
@@ -45,7 +54,8 @@ class FloatParameter {
 
 // Parameter `name` of `props`: a nested or referenced <texture name="..."> if there is one, else
 // the constant as Properties::getSpectrum / getFloat read it (`def` when absent). InputError when
-// both a value and a texture are given.
+// both a value and a texture are given. For SpectrumUse::Emission a texture's colours are
+// illuminants (times D65).
 SpectrumParameter readSpectrumParameter(const Properties& props, const std::string& name, float def, SpectrumUse use);
 FloatParameter readFloatParameter(const Properties& props, const std::string& name, float def);
 

@@ -1,0 +1,36 @@
+#include "textures/mesh_attribute_texture.h"
+
+#include "core/error.h"
+
+namespace columba {
+
+const MeshAttributes::Attribute& MeshAttributeTexture::attributeAt(const TexturePoint& p) const {
+  const MeshAttributes::Attribute* a = p.mesh ? p.mesh->find(name_) : nullptr;
+  if (!a)
+    throw InputError(where_, "mesh_attribute '" + name_ + "' was looked up on a shape without it (" +
+                                 (p.mesh ? "its attributes: " + p.mesh->names()
+                                         : std::string("not a mesh with per-vertex or per-face values")) +
+                                 ")");
+  return *a;
+}
+
+Spectrum MeshAttributeTexture::evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const {
+  return p.mesh->evalSpectrum(attributeAt(p), p.triangle, p.barycentric, wl) * scale_;
+}
+
+float MeshAttributeTexture::evalFloat(const TexturePoint& p) const {
+  return p.mesh->evalFloat(attributeAt(p), p.triangle, p.barycentric) * scale_;
+}
+
+Vec3 MeshAttributeTexture::evalTriple(const TexturePoint& p) const {
+  return p.mesh->evalTriple(attributeAt(p), p.triangle, p.barycentric) * scale_;
+}
+
+std::shared_ptr<Object> makeMeshAttributeTexture(const Properties& props) {
+  const std::string name = props.getString("name");
+  if (name.rfind("vertex_", 0) != 0 && name.rfind("face_", 0) != 0)
+    throw props.error("name", "a mesh attribute's name starts with vertex_ or face_, not '" + name + "'");
+  return std::make_shared<MeshAttributeTexture>(name, props.getFloat("scale", 1.0f), props.location);
+}
+
+}  // namespace columba

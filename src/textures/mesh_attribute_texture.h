@@ -1,0 +1,39 @@
+#pragma once
+// Mitsuba's `mesh_attribute`: the values a mesh file carries per vertex ("vertex_<name>",
+// interpolated across each triangle) or per face ("face_<name>"), times `scale`. A 3-channel
+// attribute is a colour: each vertex's or face's colour becomes a smooth spectrum when the mesh is
+// loaded, and a lookup blends the spectra of the triangle's vertices, as bitmaps blend texels'.
+// Looked up on a shape that does not have the attribute, it stops the render with an error that
+// names the texture's line and the attributes the mesh has, as Mitsuba does.
+#include <memory>
+#include <string>
+#include "core/properties.h"
+#include "textures/mesh_attributes.h"
+#include "textures/texture.h"
+
+namespace columba {
+
+class MeshAttributeTexture : public Texture {
+ public:
+  MeshAttributeTexture(std::string name, float scale, SourceLocation where)
+      : name_(std::move(name)), scale_(scale), where_(std::move(where)) {}
+  Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
+  float evalFloat(const TexturePoint& p) const override;
+  bool givesTriples() const override { return true; }
+  Vec3 evalTriple(const TexturePoint& p) const override;
+  // The mean is the mesh's, which a texture shared between shapes does not know when it is built;
+  // half the scale stands in for it where a BSDF weighs its lobes by it (that changes noise only).
+  float mean() const override { return 0.5f * scale_; }
+
+ private:
+  const MeshAttributes::Attribute& attributeAt(const TexturePoint& p) const;
+
+  std::string name_;
+  float scale_;
+  SourceLocation where_;
+};
+
+// Parameters: name ("vertex_..." or "face_..."), scale (1).
+std::shared_ptr<Object> makeMeshAttributeTexture(const Properties& props);
+
+}  // namespace columba
