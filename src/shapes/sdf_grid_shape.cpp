@@ -195,7 +195,9 @@ Vec3 SDFGridShape::primitiveNormal(unsigned primID, const Vec3& worldPoint) cons
 
 Vec3 SDFGridShape::smoothGradient(const CellPoint& p) const {
   // The eight voxels around the sample nearest to p: along each axis the voxels below and above
-  // it, blended by p's position between their centres. A voxel outside the grid gets no weight.
+  // it, blended by p's position between their centres. A voxel outside the grid gets no weight
+  // (Mitsuba gives one beyond the upper boundary weight, with that axis's component zero: within
+  // half a voxel of that boundary its normals lean away from it).
   // Each voxel's gradient component along an axis is the difference across the voxel of the
   // field's bilinear interpolant on the sample planes, at p's position along the other two axes.
   int nearest[3], cellIndex[3];
