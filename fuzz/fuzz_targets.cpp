@@ -12,12 +12,14 @@
 #include "core/transform.h"
 #include "emitters/envmap_emitter.h"
 #include "io/image.h"
+#include "io/volume_grid_file.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "shapes/feather_ply.h"
 #include "shapes/feather_shape.h"
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
+#include "shapes/sdf_grid_shape.h"
 #include "shapes/serialized_mesh.h"
 #include "shapes/triangle_mesh.h"
 
@@ -85,6 +87,21 @@ void serializedMeshFromBytes(const uint8_t* data, size_t size) {
   for (int index : {0, 1}) {
     SerializedMesh s = parseSerializedMesh(bytes, index, "<fuzz>");
     TriangleMesh mesh(std::move(s.mesh), Transform(), s.faceNormals, false, {"<fuzz>", 0});
+  }
+}
+
+void sdfGridFromBytes(const uint8_t* data, size_t size) {
+  SDFGridShape shape(parseVolumeGrid(std::string(reinterpret_cast<const char*>(data), size), "<fuzz>"),
+                     Transform::scale(Vec3(2, 1, 0.5f)), SDFGridShape::Normals::Smooth, false, "<fuzz>");
+  const Vec3 origins[] = {Vec3(-1, 0.3f, 0.2f), Vec3(1, 0.5f, 0.25f), Vec3(3, 2, 1)};
+  for (unsigned voxel = 0; voxel < std::min<size_t>(shape.primitiveCount(), 64); ++voxel) {
+    Vec3 lo, hi;
+    shape.primitiveBounds(voxel, lo, hi);
+    for (const Vec3& o : origins) {
+      const Vec3 d = normalize(shape.toWorldPoint((lo + hi) * 0.5f) - o);
+      float t;
+      if (shape.intersectPrimitive(voxel, o, d, 0.0f, INFINITY, t)) (void)shape.primitiveNormal(voxel, o + d * t);
+    }
   }
 }
 

@@ -23,6 +23,9 @@ void featherPlyFromBytes(const uint8_t* data, size_t size);
 void objMeshFromBytes(const uint8_t* data, size_t size);
 // Mitsuba serialized mesh (parseSerializedMesh of its first and second mesh, then a TriangleMesh).
 void serializedMeshFromBytes(const uint8_t* data, size_t size);
+// Mitsuba grid volume (parseVolumeGrid, then an SDF grid shape, its voxels' bounds and a few rays
+// through them).
+void sdfGridFromBytes(const uint8_t* data, size_t size);
 // OpenEXR image (readEXR, then an environment map and a few lookups).
 void exrEnvmapFromBytes(const uint8_t* data, size_t size);
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built in BUILD_DIR, one after another, each for SECONDS:
-#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh exr_envmap)
+#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap)
 # Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET (small
 # scenes, meshes, feathers written by `columba feather`, EXR images of every compression), the
 # project's scenes and examples, the inputs of tests/fuzz-regressions/TARGET, and feathers that
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 build=$1 seconds=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh exr_envmap)
+[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap)
 work="$build/fuzz"
 columba=${COLUMBA:-build/columba}
 mkdir -p "$work/logs"

@@ -36,6 +36,7 @@ const std::map<std::string, Reader>& readers() {
       {"feather_ply", columba::fuzz::featherPlyFromBytes},
       {"obj_mesh", columba::fuzz::objMeshFromBytes},
       {"serialized_mesh", columba::fuzz::serializedMeshFromBytes},
+      {"sdf_grid", columba::fuzz::sdfGridFromBytes},
       {"exr_envmap", columba::fuzz::exrEnvmapFromBytes},
   };
   return r;
@@ -151,6 +152,19 @@ TEST(FuzzRegressions, ExrDeclaringMorePixelsThanTheFileCanHoldIsAnError) {
     EXPECT_NE(std::string(e.what()).find("declares 2400000 x 66 pixels, more than a file of"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(FuzzRegressions, SDFGridSeedsAreValidGrids) {
+  // The fuzz target's starting inputs must be valid grids, or the fuzzer starts from nothing.
+  int seeds = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/sdf_grid")) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NO_THROW(columba::fuzz::sdfGridFromBytes(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()))
+        << entry.path();
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 2);
 }
 
 }  // namespace

@@ -45,6 +45,7 @@
 #include "shapes/obj_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/rectangle_shape.h"
+#include "shapes/sdf_grid_shape.h"
 #include "shapes/serialized_mesh.h"
 #include "shapes/shape_group.h"
 #include "shapes/sphere_shape.h"
@@ -105,6 +106,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("shape", "disk", makeDiskShape);
     r.add("shape", "sphere", makeSphereShape);
     r.add("shape", "cylinder", makeCylinderShape);
+    r.add("shape", "sdfgrid", makeSDFGridShape);
     r.add("shape", "cube", makeCubeShape);
     r.add("shape", "feather", makeFeatherShape);
     r.add("texture", "bitmap", makeBitmapTexture);

@@ -42,7 +42,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"bsdf", "polarizer"}, kPolarisation},
       {{"bsdf", "retarder"}, kPolarisation},
       {{"bsdf", "circular"}, kPolarisation},
-      {{"shape", "sdfgrid"}, "signed distance field grids are not supported"},
       {{"shape", "bsplinecurve"}, "curves are not supported"},
       {{"shape", "linearcurve"}, "curves are not supported"},
       {{"shape", "ellipsoids"}, "ellipsoid clouds are not supported"},

@@ -23,6 +23,11 @@ class AnalyticShape : public Shape {
   virtual Vec3 worldNormal(const Vec3& worldPoint) const {
     return toWorldNormal(localNormal(toLocalPoint(worldPoint)));
   }
+  // The one primitive's hit and normal, as userGeometryIntersect asks for them.
+  bool intersectPrimitive(unsigned, const Vec3& o, const Vec3& d, float tmin, float tmax, float& t) const {
+    return intersectWorld(o, d, tmin, tmax, t);
+  }
+  Vec3 primitiveNormal(unsigned, const Vec3& worldPoint) const { return worldNormal(worldPoint); }
   // Bounds of the shape in local coordinates.
   virtual void localBounds(Vec3& lo, Vec3& hi) const = 0;
 
