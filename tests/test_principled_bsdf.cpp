@@ -331,3 +331,39 @@ TEST(Principled, TexturedParametersAreTakenAtTheShadingPoint) {
   }
   EXPECT_NE(textured->eval(inFirst, wi, wo, wl)[0], textured->eval(inSecond, wi, wo, wl)[0]);
 }
+
+TEST(Principled, AVertexsQueriesAreTheSeparateCalls) {
+  // queryVertex works the textured material out once; its answers must be those of eval, pdf and
+  // sample, for both principled BSDFs, on either side.
+  const std::string textures =
+      R"(<texture type="checkerboard" name="base_color"><rgb name="color0" value="0.8, 0.3, 0.1"/>
+      <rgb name="color1" value="0.1, 0.4, 0.7"/></texture>
+    <texture type="checkerboard" name="roughness"><float name="color0" value="0.3"/>
+      <float name="color1" value="0.7"/></texture> <float name="spec_trans" value="0.4"/>)";
+  const Wavelengths wl = testWavelengths();
+  for (const char* type : {"principled", "principledthin"}) {
+    auto bsdf = loadBSDF(type, textures);
+    ASSERT_TRUE(bsdf) << type;
+    for (Vec2 uv : {Vec2(0.25f, 0.25f), Vec2(0.75f, 0.25f)}) {
+      const BSDFContext ctx{nullptr, uv, Vec3(), Vec3()};
+      for (const Vec3& wi : {directionAt(35.0f), directionAt(140.0f, 20.0f)}) {
+        const Vec3 wo = directionAt(50.0f, 160.0f);
+        BSDFVertexRequest request;
+        request.woLight = &wo;
+        request.lightPdf = true;
+        request.sample = true;
+        request.uComponent = 0.6f;
+        request.u = Vec2(0.3f, 0.7f);
+        const BSDFVertexQueries q = bsdf->queryVertex(ctx, wi, wl, request);
+        const std::optional<BSDFSample> separate = bsdf->sample(ctx, wi, wl, 0.6f, Vec2(0.3f, 0.7f));
+        for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_EQ(q.toLight.value[i], bsdf->eval(ctx, wi, wo, wl)[i]);
+        EXPECT_EQ(q.toLight.pdf, bsdf->pdf(ctx, wi, wo, wl));
+        ASSERT_EQ(q.sampled.has_value(), separate.has_value()) << type;
+        if (!separate) continue;
+        EXPECT_EQ(q.sampled->wo.x, separate->wo.x);
+        EXPECT_EQ(q.sampled->pdf, separate->pdf);
+        EXPECT_EQ(q.sampled->weight[0], separate->weight[0]);
+      }
+    }
+  }
+}

@@ -129,9 +129,25 @@ float PrincipledBSDF::densityFor(const Material& material, const Vec3& wi, const
 
 std::optional<BSDFSample> PrincipledBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                  float uComponent, Vec2 u) const {
+  return sampleFor(materialAt(ctx, wl), wi, uComponent, u);
+}
+
+BSDFVertexQueries PrincipledBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                              const BSDFVertexRequest& request) const {
+  // One material for every query: working it out looks up every textured parameter.
+  const Material material = materialAt(ctx, wl);
+  BSDFVertexQueries q;
+  if (request.woLight)
+    q.toLight = {valueFor(material, wi, *request.woLight),
+                 request.lightPdf ? densityFor(material, wi, *request.woLight) : 0.0f};
+  if (request.sample) q.sampled = sampleFor(material, wi, request.uComponent, request.u);
+  return q;
+}
+
+std::optional<BSDFSample> PrincipledBSDF::sampleFor(const Material& material, const Vec3& wi, float uComponent,
+                                                    Vec2 u) const {
   if (cosTheta(wi) == 0.0f) return std::nullopt;
   const bool front = cosTheta(wi) > 0.0f;
-  const Material material = materialAt(ctx, wl);
   if (!front && !(material.transmissionWeight > 0.0f)) return std::nullopt;
   const Strategies strategy = strategies(material, front);
 

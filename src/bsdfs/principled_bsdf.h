@@ -30,6 +30,8 @@ class PrincipledBSDF : public BSDF {
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
+  BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                const BSDFVertexRequest& request) const override;
 
  private:
   // The parameters at one shading point and the quantities derived from them.
@@ -49,6 +51,7 @@ class PrincipledBSDF : public BSDF {
   // eval and pdf for the material at the shading point, worked out once per call of sample.
   Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
   float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
+  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent, Vec2 u) const;
   Strategies strategies(const Material& material, bool front) const;
   // Probability that the specular strategy reflects, given the dielectric Fresnel term.
   static float specularReflectionShare(const Material& material, bool front, float fresnel);

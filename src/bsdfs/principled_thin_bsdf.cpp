@@ -130,10 +130,26 @@ float PrincipledThinBSDF::densityFor(const Material& material, const Vec3& wi, c
 
 std::optional<BSDFSample> PrincipledThinBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                      float uComponent, Vec2 u) const {
+  return sampleFor(materialAt(ctx, wl), wi, uComponent, u);
+}
+
+BSDFVertexQueries PrincipledThinBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                                  const BSDFVertexRequest& request) const {
+  // One material for every query: working it out looks up every textured parameter.
+  const Material material = materialAt(ctx, wl);
+  BSDFVertexQueries q;
+  if (request.woLight)
+    q.toLight = {valueFor(material, wi, *request.woLight),
+                 request.lightPdf ? densityFor(material, wi, *request.woLight) : 0.0f};
+  if (request.sample) q.sampled = sampleFor(material, wi, request.uComponent, request.u);
+  return q;
+}
+
+std::optional<BSDFSample> PrincipledThinBSDF::sampleFor(const Material& material, const Vec3& wi, float uComponent,
+                                                        Vec2 u) const {
   if (cosTheta(wi) == 0.0f) return std::nullopt;
   const bool flip = cosTheta(wi) < 0.0f;
   const Vec3 above = flip ? mirroredThroughSurface(wi) : wi;
-  const Material material = materialAt(ctx, wl);
   const Strategies strategy = strategies(material);
 
   Vec3 wo;  // seen from wi's side

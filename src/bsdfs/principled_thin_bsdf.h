@@ -26,6 +26,8 @@ class PrincipledThinBSDF : public BSDF {
   float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
   std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
                                    Vec2 u) const override;
+  BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                const BSDFVertexRequest& request) const override;
 
  private:
   // The parameters at one shading point and the quantities derived from them.
@@ -46,6 +48,7 @@ class PrincipledThinBSDF : public BSDF {
   // eval and pdf for the material at the shading point, worked out once per call of sample.
   Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
   float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
+  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent, Vec2 u) const;
   Strategies strategies(const Material& material) const;
 
   PrincipledThinParameters p_;
