@@ -47,6 +47,14 @@ struct SurfaceInteraction {
 struct PositionSample {
   Vec3 p, n;
   float pdfArea = 0.0f;
+  // The point as an interaction to spawn rays from (position and normal only).
+  SurfaceInteraction interaction() const {
+    SurfaceInteraction si;
+    si.p = p;
+    si.ng = n;
+    si.shading = Frame::fromNormal(n);
+    return si;
+  }
 };
 
 // A point on a shape chosen as seen from a reference point, with the solid-angle density of
