@@ -14,6 +14,7 @@
 #include "sensors/orthographic_sensor.h"
 #include "sensors/perspective_sensor.h"
 #include "sensors/thin_lens_sensor.h"
+#include "temp_dir_test.h"
 
 using namespace columba;
 using namespace columba::testing;
@@ -185,6 +186,45 @@ TEST(ParticleTracer, MatchesThePathTracerForEveryKindOfEmitterAndSensor) {
       SCOPED_TRACE(q);
       EXPECT_NEAR(meanLuminance(light, x0, y0, x0 + 12, y0 + 10), expected, 0.04 * expected + 0.001);
     }
+  }
+}
+
+class ParticleTracerWithFiles : public TempDirTest {};
+
+TEST_F(ParticleTracerWithFiles, MatchesThePathTracerUnderAnEnvironmentMap) {
+  // A sky brighter toward its top, with a small bright patch: light from infinity, seen directly
+  // above the plate's horizon and scattered by the plate and the sphere.
+  Image sky(32, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x) {
+      float* p = sky.pixel(x, y);
+      const float patch = (x >= 4 && x < 6 && y >= 4 && y < 6) ? 20.0f : 0.0f;
+      p[0] = 0.2f + 0.05f * float(16 - y) + patch;
+      p[1] = 0.3f + 0.03f * float(16 - y) + patch;
+      p[2] = 0.5f + patch;
+    }
+  writeEXR((dir_ / "sky.exr").string(), sky);
+  auto render = [&](const char* integrator) {
+    return renderSceneString(
+        scene(integrator, R"(<sensor type="perspective"><float name="fov" value="70"/>
+      <transform name="to_world"><lookat origin="1, -4, 2" target="0, 0, 0.3" up="0, 0, 1"/></transform>
+      <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="20"/></film>
+      <sampler type="independent"><integer name="sample_count" value="1024"/></sampler></sensor>)" +
+                              std::string(kDiffusePlane) +
+                              R"(<shape type="sphere"><point name="center" x="0.3" y="0.2" z="0.5"/>
+        <float name="radius" value="0.5"/><bsdf type="roughconductor"><float name="alpha" value="0.3"/></bsdf></shape>
+      <emitter type="envmap"><string name="filename" value=")" +
+                              (dir_ / "sky.exr").string() +
+                              R"("/><transform name="to_world"><rotate x="1" angle="90"/></transform></emitter>)"));
+  };
+  Image path = render("path"), light = render("ptracer");
+  const double whole = meanLuminance(path, 0, 0, 24, 20);
+  EXPECT_NEAR(meanLuminance(light, 0, 0, 24, 20), whole, 0.02 * whole);
+  for (int q = 0; q < 4; ++q) {
+    const int x0 = (q % 2) * 12, y0 = (q / 2) * 10;
+    const double expected = meanLuminance(path, x0, y0, x0 + 12, y0 + 10);
+    SCOPED_TRACE(q);
+    EXPECT_NEAR(meanLuminance(light, x0, y0, x0 + 12, y0 + 10), expected, 0.04 * expected + 0.001);
   }
 }
 
