@@ -234,4 +234,10 @@ TEST(Emitter, AProjectorNeedsItsImage) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("needs its 'irradiance'"), std::string::npos) << e.what();
   }
+  try {
+    projector(R"(<float name="irradiance" value="1"/><transform name="to_world"><scale value="2"/></transform>)");
+    ADD_FAILURE() << "a scaling to_world was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("must not scale"), std::string::npos) << e.what();
+  }
 }

@@ -29,6 +29,7 @@
 #include "film/gaussian_filter.h"
 #include "film/tent_filter.h"
 #include "integrators/direct_integrator.h"
+#include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
@@ -62,6 +63,7 @@ const PluginRegistry& builtinPlugins() {
     PluginRegistry r;
     r.add("integrator", "path", makePathIntegrator);
     r.add("integrator", "direct", makeDirectIntegrator);
+    r.add("integrator", "ptracer", makeParticleTracerIntegrator);
     r.add("sensor", "perspective", makePerspectiveSensor);
     r.add("sensor", "thinlens", makeThinLensSensor);
     r.add("sensor", "orthographic", makeOrthographicSensor);

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/sampling.h"
+
 namespace columba {
 
 void AreaEmitter::attachTo(const Shape* shape) {
@@ -25,6 +27,26 @@ float AreaEmitter::pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const 
 
 Spectrum AreaEmitter::radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const {
   return dot(hit.ng, toViewer) > 0.0f ? radiance_.eval(hit.texturePoint(), wl) : Spectrum(0.0f);
+}
+
+std::optional<PositionSample> AreaEmitter::samplePosition(Vec2 u) const {
+  PositionSample ps = shape_->samplePosition(u);
+  if (!(ps.pdfArea > 0.0f)) return std::nullopt;
+  return ps;
+}
+
+// A point by area, then a direction by the cosine about the front's normal: the weight is
+// L pi / pdfArea.
+std::optional<EmitterRaySample> AreaEmitter::sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                                       const SceneSphere&) const {
+  std::optional<PositionSample> ps = samplePosition(uPosition);
+  if (!ps) return std::nullopt;
+  const Vec3 local = sampleCosineHemisphere(uDirection);
+  if (!(local.z > 0.0f)) return std::nullopt;
+  EmitterRaySample s;
+  s.ray = ps->interaction().spawnRay(Frame::fromNormal(ps->n).toWorld(local));
+  s.weight = radiance_.eval(ps->point, wl) * (kPi / ps->pdfArea);
+  return s;
 }
 
 std::shared_ptr<Object> makeAreaEmitter(const Properties& props) {

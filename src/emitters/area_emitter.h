@@ -13,6 +13,9 @@ class AreaEmitter : public Emitter {
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   float pdfHit(const Vec3& ref, const SurfaceInteraction& hit) const override;
   Spectrum radianceAt(const SurfaceInteraction& hit, const Vec3& toViewer, const Wavelengths& wl) const override;
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
+  std::optional<PositionSample> samplePosition(Vec2 u) const override;
   void attachTo(const Shape* shape) override;
 
  private:

@@ -11,6 +11,9 @@ class ConstantEmitter : public Emitter {
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override { return radiance_.sample(wl); }
   float pdfDirection(const Vec3& d) const override;
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
+
   bool isInfinite() const override { return true; }
 
  private:

@@ -11,6 +11,8 @@ class DirectionalEmitter : public Emitter {
   DirectionalEmitter(Vec3 direction, SpectralDistribution irradiance)
       : direction_(normalize(direction)), irradiance_(std::move(irradiance)) {}
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
   bool isDelta() const override { return true; }
 
  private:

@@ -18,6 +18,9 @@ class EnvmapEmitter : public Emitter {
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override;
   float pdfDirection(const Vec3& d) const override;
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
+
   bool isInfinite() const override { return true; }
 
  private:

@@ -1,5 +1,7 @@
 #include "emitters/point_emitter.h"
 
+#include "core/sampling.h"
+
 namespace columba {
 
 std::optional<EmitterSample> PointEmitter::sample(const Vec3& ref, Vec2, const Wavelengths& wl) const {
@@ -11,6 +13,16 @@ std::optional<EmitterSample> PointEmitter::sample(const Vec3& ref, Vec2, const W
   s.direction = d / s.distance;
   s.radiance = intensity_.sample(wl) / dist2;
   s.pdf = 1.0f;
+  return s;
+}
+
+// Uniform over the sphere of directions: the weight is I 4 pi.
+std::optional<EmitterRaySample> PointEmitter::sampleRay(Vec2, Vec2 uDirection, const Wavelengths& wl,
+                                                        const SceneSphere&) const {
+  EmitterRaySample s;
+  s.ray.o = position_;
+  s.ray.d = sampleUniformSphere(uDirection);
+  s.weight = intensity_.sample(wl) / uniformSpherePdf();
   return s;
 }
 

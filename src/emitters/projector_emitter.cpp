@@ -38,6 +38,19 @@ std::optional<EmitterSample> ProjectorEmitter::sample(const Vec3& ref, Vec2, con
   return s;
 }
 
+std::optional<EmitterRaySample> ProjectorEmitter::sampleRay(Vec2, Vec2 uDirection, const Wavelengths& wl,
+                                                            const SceneSphere&) const {
+  // The point of the image plane z = 1 at uv = uDirection, whose density over that plane is one
+  // over its area A; as solid angle that is 1 / (A cos^3 theta), against the intensity
+  // pi * scale * irradiance / cos^3 theta that sample() implies.
+  const Vec3 local((0.5f - uDirection.x) * 2.0f * tanHalf_.x, (0.5f - uDirection.y) * 2.0f * tanHalf_.y, 1.0f);
+  EmitterRaySample s;
+  s.ray.o = position_;
+  s.ray.d = normalize(toWorld_.vector(local));
+  s.weight = irradiance_.eval(uDirection, wl) * scale_.sample(wl) * (kPi * 4.0f * tanHalf_.x * tanHalf_.y);
+  return s;
+}
+
 std::shared_ptr<Object> makeProjectorEmitter(const Properties& props) {
   if (!props.has("irradiance") && !props.namedChild<Texture>("irradiance"))
     throw InputError(props.location, "'projector' needs its 'irradiance' (a texture or a value)");
@@ -47,7 +60,14 @@ std::shared_ptr<Object> makeProjectorEmitter(const Properties& props) {
   float aspect = 1.0f;
   if (auto bitmap = std::dynamic_pointer_cast<const BitmapTexture>(props.namedChild<Texture>("irradiance")))
     aspect = float(bitmap->width()) / float(bitmap->height());
-  return std::make_shared<ProjectorEmitter>(props.getTransform("to_world"), std::move(irradiance),
+  const Transform toWorld = props.getTransform("to_world");
+  const Vec3 x = toWorld.vector(Vec3(1, 0, 0)), y = toWorld.vector(Vec3(0, 1, 0)), z = toWorld.vector(Vec3(0, 0, 1));
+  const float tolerance = 1e-4f;
+  if (std::abs(length(x) - 1.0f) > tolerance || std::abs(length(y) - 1.0f) > tolerance ||
+      std::abs(length(z) - 1.0f) > tolerance || std::abs(dot(x, y)) > tolerance || std::abs(dot(y, z)) > tolerance ||
+      std::abs(dot(x, z)) > tolerance)
+    throw props.error("to_world", "a projector's to_world must not scale or shear (rotate and translate it only)");
+  return std::make_shared<ProjectorEmitter>(toWorld, std::move(irradiance),
                                             props.getSpectrum("scale", 1.0f, SpectrumUse::Emission),
                                             tanHalfAngles(readFieldOfView(props), aspect));
 }

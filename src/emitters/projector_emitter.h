@@ -21,6 +21,10 @@ class ProjectorEmitter : public Emitter {
  public:
   ProjectorEmitter(const Transform& toWorld, SpectrumParameter irradiance, SpectralDistribution scale, Vec2 tanHalf);
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  // A ray through a point of the image chosen uniformly (Mitsuba chooses it by the texture's
+  // values): its weight is pi * scale * irradiance * the image's area at z = 1.
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
   bool isDelta() const override { return true; }
   // Where the image is looked up for the local point `local`; nullopt outside the image or behind.
   std::optional<Vec2> imageUV(const Vec3& local) const;
@@ -33,7 +37,8 @@ class ProjectorEmitter : public Emitter {
   Vec2 tanHalf_;
 };
 
-// Parameters: irradiance (required), scale (1), fov/fov_axis or focal_length, to_world.
+// Parameters: irradiance (required), scale (1), fov/fov_axis or focal_length, to_world (which must
+// not scale: the density of directions is the camera's).
 std::shared_ptr<Object> makeProjectorEmitter(const Properties& props);
 
 }  // namespace columba

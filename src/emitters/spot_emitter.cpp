@@ -1,10 +1,16 @@
 #include "emitters/spot_emitter.h"
 
+#include "core/sampling.h"
+
 namespace columba {
 
 SpotEmitter::SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth,
                          std::shared_ptr<const Texture> texture)
     : worldToLocal_(toWorld.inverse()),
+      localToWorld_(toWorld),
+      worldToLocalVolume_(
+          std::abs(dot(worldToLocal_.vector(Vec3(1, 0, 0)),
+                       cross(worldToLocal_.vector(Vec3(0, 1, 0)), worldToLocal_.vector(Vec3(0, 0, 1)))))),
       position_(toWorld.point(Vec3(0, 0, 0))),
       intensity_(std::move(intensity)),
       cutoff_(cutoff),
@@ -38,6 +44,24 @@ std::optional<EmitterSample> SpotEmitter::sample(const Vec3& ref, Vec2, const Wa
   s.radiance = intensity_.sample(wl) * (f / dist2);
   if (texture_) s.radiance *= texture_->evalSpectrum(textureUV(local), wl);
   s.pdf = 1.0f;
+  return s;
+}
+
+// Uniform over the cone within the cutoff angle in the light's frame, the falloff and texture in
+// the weight. A to_world that scales unevenly changes the density of the world direction w by
+// |det M^-1| / |M^-1 w|^3 (M the linear part of to_world).
+std::optional<EmitterRaySample> SpotEmitter::sampleRay(Vec2, Vec2 uDirection, const Wavelengths& wl,
+                                                       const SceneSphere&) const {
+  const Vec3 local = sampleUniformCone(uDirection, cosCutoff_);
+  const float f = falloff(local);
+  if (!(f > 0.0f)) return std::nullopt;
+  EmitterRaySample s;
+  s.ray.o = position_;
+  s.ray.d = normalize(localToWorld_.vector(local));
+  const float stretch = length(worldToLocal_.vector(s.ray.d));
+  const float pdf = uniformConePdf(cosCutoff_) * worldToLocalVolume_ / (stretch * stretch * stretch);
+  s.weight = intensity_.sample(wl) * (f / pdf);
+  if (texture_) s.weight *= texture_->evalSpectrum(textureUV(local), wl);
   return s;
 }
 

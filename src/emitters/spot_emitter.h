@@ -19,6 +19,8 @@ class SpotEmitter : public Emitter {
   SpotEmitter(const Transform& toWorld, SpectralDistribution intensity, float cutoff, float beamWidth,
               std::shared_ptr<const Texture> texture = nullptr);
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
+  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
+                                            const SceneSphere& scene) const override;
   bool isDelta() const override { return true; }
   // The fraction of the axis' intensity sent along the light's local direction `local` (any length).
   float falloff(const Vec3& local) const;
@@ -26,7 +28,8 @@ class SpotEmitter : public Emitter {
   Vec2 textureUV(const Vec3& local) const;
 
  private:
-  Transform worldToLocal_;
+  Transform worldToLocal_, localToWorld_;
+  float worldToLocalVolume_;  // |det| of worldToLocal_: how it scales directions' density
   Vec3 position_;
   SpectralDistribution intensity_;
   float cutoff_, beamWidth_, cosCutoff_, cosBeamWidth_;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "integrators/integrator.h"
+#include "render/light_path_renderer.h"
 #include "render/sample_allocation.h"
 #include "samplers/sampler_parameters.h"
 
@@ -132,6 +133,8 @@ int pilotSamplesFor(int spp) { return std::clamp(spp / 4, 2, 16); }
 }  // namespace
 
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
+  if (const ParticleTracerIntegrator* tracer = scene.particleTracer())
+    return renderLightPaths(scene, *tracer, settings, stats);
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
   const bool whole = settings.window.empty();
@@ -255,6 +258,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
 }
 
 std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings& settings) {
+  if (scene.particleTracer())
+    throw std::runtime_error("ptracer renders whole images: its light reaches any row, so it cannot be split by rows");
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
   const Integrator& integrator = scene.integrator();

@@ -1,7 +1,8 @@
 #pragma once
 // Renders a scene's image: tiles in parallel (oneTBB), every pixel's samples drawn from a
 // sampler seeded by (pixel, sample index, seed) only, so the image is bit-identical for any
-// thread count.
+// thread count. A scene whose integrator is `ptracer` is rendered by light tracing instead
+// (render/light_path_renderer.h).
 #include <atomic>
 #include <functional>
 #include <vector>

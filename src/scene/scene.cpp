@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/fast_math.h"
+#include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "sensors/perspective_sensor.h"
 #include "shapes/shape_group.h"
@@ -33,8 +34,11 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
       if (sensor_) throw InputError(source, "the scene has more than one sensor");
       sensor_ = sensor;
     } else if (auto integrator = std::dynamic_pointer_cast<Integrator>(object)) {
-      if (integrator_) throw InputError(source, "the scene has more than one integrator");
+      if (integrator_ || particleTracer_) throw InputError(source, "the scene has more than one integrator");
       integrator_ = integrator;
+    } else if (auto tracer = std::dynamic_pointer_cast<ParticleTracerIntegrator>(object)) {
+      if (integrator_ || particleTracer_) throw InputError(source, "the scene has more than one integrator");
+      particleTracer_ = tracer;
     } else if (!std::dynamic_pointer_cast<BSDF>(object) && !std::dynamic_pointer_cast<ShapeGroup>(object)) {
       // A shapegroup is rendered only through its instances.
       throw InputError(source,
@@ -44,7 +48,10 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   for (const auto& e : emitters_)
     if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
   if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);
-  if (!integrator_) integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
+  if (!integrator_ && !particleTracer_)
+    integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
+  // Before Embree is set up: it needs the sensor and the emitters only.
+  if (particleTracer_) particleTracer_->checkScene(*this);
 
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("cannot create an Embree device");
@@ -56,6 +63,16 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   }
   rtcCommitScene(scene_);
   throwOnEmbreeError(device_);
+  RTCBounds bounds;
+  rtcGetSceneBounds(scene_, &bounds);
+  const Vec3 lo(bounds.lower_x, bounds.lower_y, bounds.lower_z), hi(bounds.upper_x, bounds.upper_y, bounds.upper_z);
+  if (!shapes_.empty() && lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)
+    boundingSphere_ = {(lo + hi) * 0.5f, 0.5f * length(hi - lo)};
+}
+
+const Integrator& Scene::integrator() const {
+  if (!integrator_) throw std::logic_error("the scene is rendered by ptracer, which traces no camera paths");
+  return *integrator_;
 }
 
 Scene::~Scene() {

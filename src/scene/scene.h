@@ -14,6 +14,7 @@
 namespace columba {
 
 class Integrator;
+class ParticleTracerIntegrator;
 
 class Scene {
  public:
@@ -48,8 +49,15 @@ class Scene {
   }
   float emitterPmf() const { return emitters_.empty() ? 0.0f : 1.0f / float(emitters_.size()); }
 
+  // The sphere around the shapes (radius 0 without shapes), which lights at infinity shine through.
+  const SceneSphere& boundingSphere() const { return boundingSphere_; }
+
   const Sensor& sensor() const { return *sensor_; }
-  const Integrator& integrator() const { return *integrator_; }
+  // The camera-path integrator; a scene rendered by light tracing (particleTracer()) has none, and
+  // asking for it is a std::logic_error.
+  const Integrator& integrator() const;
+  // The scene's integrator when it is `ptracer`, otherwise null.
+  const ParticleTracerIntegrator* particleTracer() const { return particleTracer_.get(); }
   size_t primitiveCount() const;
   size_t shapeCount() const { return shapes_.size(); }
 
@@ -61,6 +69,8 @@ class Scene {
   std::vector<const Emitter*> infiniteEmitters_;
   std::shared_ptr<Sensor> sensor_;
   std::shared_ptr<Integrator> integrator_;
+  std::shared_ptr<ParticleTracerIntegrator> particleTracer_;
+  SceneSphere boundingSphere_;
 };
 
 }  // namespace columba

@@ -26,7 +26,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"integrator", "aov"}, "arbitrary output variables are not supported"},
       {{"integrator", "moment"}, "the moment integrator is not supported"},
       {{"integrator", "depth"}, "the depth integrator is not supported"},
-      {{"integrator", "ptracer"}, "light tracing is not supported; use 'path'"},
       {{"medium", "homogeneous"}, kMedia},
       {{"medium", "heterogeneous"}, kMedia},
       {{"phase", "isotropic"}, kMedia},

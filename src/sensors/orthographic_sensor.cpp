@@ -9,7 +9,11 @@ OrthographicSensor::OrthographicSensor(std::shared_ptr<Film> film, std::shared_p
     : Sensor(std::move(film), std::move(sampler)),
       toWorld_(toWorld),
       direction_(normalize(toWorld.vector(Vec3(0, 0, 1)))),
-      clip_(clip) {}
+      clip_(clip) {
+  const float aspect = float(this->film().width()) / float(this->film().height());
+  const Vec3 across = cross(toWorld.vector(Vec3(2.0f, 0, 0)), toWorld.vector(Vec3(0, 2.0f / aspect, 0)));
+  inverseProjectedArea_ = 1.0f / std::abs(dot(across, direction_));
+}
 
 std::optional<Ray> OrthographicSensor::generateRay(Vec2 filmPosition, Vec2 /*apertureSample*/) const {
   const float x = filmPosition.x / float(film().width()), y = filmPosition.y / float(film().height());
@@ -20,6 +24,23 @@ std::optional<Ray> OrthographicSensor::generateRay(Vec2 filmPosition, Vec2 /*ape
   ray.tmin = 0.0f;
   ray.tmax = clip_.farClip - clip_.nearClip;
   return ray;
+}
+
+std::optional<ImportanceSample> OrthographicSensor::sampleImportance(const Vec3& ref, Vec2) const {
+  const Vec3 p = toWorld_.inverse().point(ref);
+  const float aspect = float(film().width()) / float(film().height());
+  const Vec2 filmPosition((1.0f - p.x) * 0.5f * float(film().width()),
+                          (1.0f - p.y * aspect) * 0.5f * float(film().height()));
+  if (!filmReaches(filmPosition)) return std::nullopt;
+  const Vec3 start = toWorld_.point(Vec3(p.x, p.y, clip_.nearClip));
+  const float t = dot(ref - start, direction_);
+  if (!(t > 0.0f && t < clip_.farClip - clip_.nearClip)) return std::nullopt;
+  ImportanceSample s;
+  s.origin = start;
+  s.rayStart = start;
+  s.filmPosition = filmPosition;
+  s.weight = inverseProjectedArea_;
+  return s;
 }
 
 std::shared_ptr<Object> makeOrthographicSensor(const Properties& props) {

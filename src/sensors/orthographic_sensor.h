@@ -14,11 +14,18 @@ class OrthographicSensor : public Sensor {
                      const ClipRange& clip);
   using Sensor::generateRay;
   std::optional<Ray> generateRay(Vec2 filmPosition, Vec2 apertureSample) const override;
+  // Importance spread evenly over the sensor's rectangle along its one direction: a point is
+  // seen from the point of the rectangle behind it, with weight 1 / (the rectangle's area across
+  // the direction). Light from infinity reaches it along one direction only, which no light
+  // tracing finds.
+  bool hasImportance() const override { return true; }
+  std::optional<ImportanceSample> sampleImportance(const Vec3& ref, Vec2 u) const override;
 
  private:
   Transform toWorld_;
   Vec3 direction_;  // world space
   ClipRange clip_;
+  float inverseProjectedArea_;  // 1 / the area of the sensor's rectangle across direction_
 };
 
 std::shared_ptr<Object> makeOrthographicSensor(const Properties& props);

@@ -7,6 +7,11 @@
 
 namespace columba {
 
+bool Sensor::filmReaches(Vec2 p) const {
+  const float r = film_->filter().radius();
+  return p.x >= -r && p.x <= float(film_->width()) + r && p.y >= -r && p.y <= float(film_->height()) + r;
+}
+
 std::shared_ptr<Film> sensorFilm(const Properties& props) {
   auto film = props.child<Film>();
   return film ? film : makeDefaultPlugin<Film>(makeHDRFilm, "film", "hdrfilm", props.location);

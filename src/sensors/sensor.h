@@ -1,5 +1,6 @@
 #pragma once
-// The sensor interface: camera rays for positions on the film.
+// The sensor interface: camera rays for positions on the film, and for light tracing the
+// sensor's importance toward points and directions of the scene.
 #include <memory>
 #include <optional>
 #include "core/ray.h"
@@ -7,6 +8,20 @@
 #include "samplers/sampler.h"
 
 namespace columba {
+
+// A connection of light tracing to the sensor: where light from the reference lands on the film
+// and how much it counts there.
+struct ImportanceSample {
+  Vec3 origin;        // the point of the sensor the connection reaches (pinhole, lens point, ...)
+  Vec3 rayStart;      // where the camera ray from `origin` toward the reference begins (its near
+                      // clip): a shadow ray from the reference ends here
+  Vec2 filmPosition;  // pixels, as generateRay takes them
+  // The sensor's importance toward the reference times the geometry between them, without the
+  // cosine at the reference, over the density of `origin`: light of radiance L leaving the
+  // reference toward the sensor (that cosine included) adds L * weight around filmPosition, for
+  // an image whose pixels are the means of their filter-weighted camera samples.
+  float weight = 0.0f;
+};
 
 class Sensor : public Object {
  public:
@@ -24,6 +39,23 @@ class Sensor : public Object {
   // Whether generateRay may return a ray anywhere in the film rectangle [lo, hi]: the renderer
   // skips pixels whose filter footprint lies wholly where the sensor sees nothing.
   virtual bool seesAnyOf(Vec2 /*lo*/, Vec2 /*hi*/) const { return true; }
+  // Light tracing. sampleImportance connects the point `ref` to the sensor, `u` picking the
+  // point of the lens for sensors that have one; sampleImportanceFrom connects light arriving
+  // from infinity: `direction` (unit) points from the sensor toward where the light comes from.
+  // nullopt where the sensor does not see it. Film positions up to the filter's radius outside
+  // the film count, as camera samples of the pixels at the edge reach there.
+  // Sensors that cannot (no importance, or none toward directions) say so: the renderer refuses
+  // light tracing through them.
+  virtual bool hasImportance() const { return false; }
+  virtual bool hasImportanceFromDirections() const { return false; }
+  virtual std::optional<ImportanceSample> sampleImportance(const Vec3& /*ref*/, Vec2 /*u*/) const {
+    return std::nullopt;
+  }
+  virtual std::optional<ImportanceSample> sampleImportanceFrom(const Vec3& /*direction*/, Vec2 /*u*/) const {
+    return std::nullopt;
+  }
+  // Whether the film position `p` (pixels) is within the filter's reach of the film.
+  bool filmReaches(Vec2 p) const;
   const Film& film() const { return *film_; }
   const Sampler& sampler() const { return *sampler_; }
 

@@ -14,10 +14,14 @@ ThinLensSensor::ThinLensSensor(std::shared_ptr<Film> film, std::shared_ptr<Sampl
       apertureRadius_(apertureRadius),
       focusDistance_(focusDistance) {}
 
+Vec3 ThinLensSensor::lensPoint(Vec2 u) const {
+  const Vec2 disk = sampleConcentricDisk(u);
+  return Vec3(apertureRadius_ * disk.x, apertureRadius_ * disk.y, 0.0f);
+}
+
 std::optional<Ray> ThinLensSensor::generateRay(Vec2 filmPosition, Vec2 apertureSample) const {
   const Vec3 focus = imagePlanePoint(filmPosition) * focusDistance_;  // on the plane z = focusDistance_
-  const Vec2 disk = sampleConcentricDisk(apertureSample);
-  const Vec3 lens(apertureRadius_ * disk.x, apertureRadius_ * disk.y, 0.0f);
+  const Vec3 lens = lensPoint(apertureSample);
   const Vec3 local = normalize(focus - lens);
   Ray ray;
   ray.o = toWorld().point(lens);

@@ -15,6 +15,10 @@ class ThinLensSensor : public PerspectiveSensor {
   std::optional<Ray> generateRay(Vec2 filmPosition, Vec2 apertureSample) const override;
   bool needsApertureSample() const override { return true; }
 
+ protected:
+  Vec3 lensPoint(Vec2 u) const override;
+  float focusDistance() const override { return focusDistance_; }
+
  private:
   float apertureRadius_, focusDistance_;
 };

@@ -65,6 +65,19 @@ struct PositionSample {
   Vec3 p, n;
   TexturePoint point;
   float pdfArea = 0.0f;
+  // The point as an interaction to spawn rays from and look textures up at (position, normal
+  // and texture point only).
+  SurfaceInteraction interaction() const {
+    SurfaceInteraction si;
+    si.p = p;
+    si.ng = n;
+    si.shading = Frame::fromNormal(n);
+    si.uv = point.uv;
+    si.meshAttributes = point.mesh;
+    si.triangle = point.triangle;
+    si.barycentric = point.barycentric;
+    return si;
+  }
 };
 
 // A point on a shape chosen as seen from a reference point, with the solid-angle density of

@@ -1,0 +1,145 @@
+#include "integrators/particle_tracer_integrator.h"
+
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+
+namespace columba {
+
+namespace {
+// Bounds the pass-through steps of one path, as `path` does.
+constexpr int kMaxPassThroughSteps = 1024;
+
+// The adjoint BSDF's factor for shading normals (Veach 1997, p. 155) for light arriving from
+// `toLight` and leaving toward `out` (world, with their shading-frame versions `wi` and `wo`):
+// |cos_s(wi) cos_g(wo)| / |cos_s(wo) cos_g(wi)|. 0 where a shading normal would let light leak
+// through the surface (a direction on different sides for the two normals).
+float shadingNormalCorrection(const SurfaceInteraction& hit, const Vec3& toLight, const Vec3& wi, const Vec3& out,
+                              const Vec3& wo) {
+  const float geometricIn = dot(hit.ng, toLight), geometricOut = dot(hit.ng, out);
+  if (!(geometricIn * wi.z > 0.0f) || !(geometricOut * wo.z > 0.0f)) return 0.0f;
+  return std::abs(wi.z * geometricOut) / std::abs(wo.z * geometricIn);
+}
+}  // namespace
+
+void ParticleTracerIntegrator::checkScene(const Scene& scene) const {
+  const Sensor& sensor = scene.sensor();
+  if (!sensor.hasImportance())
+    throw InputError(where_,
+                     "ptracer connects light to the sensor, which needs its importance: it renders through "
+                     "perspective, thinlens and orthographic sensors only (use 'path' for this sensor)");
+  if (!hideEmitters_ && maxDepth_ != 0 && !scene.infiniteEmitters().empty() && !sensor.hasImportanceFromDirections())
+    throw InputError(where_,
+                     "ptracer cannot show lights at infinity seen directly through this sensor (an orthographic "
+                     "camera sees them along a single direction, which no light sample finds): set hide_emitters "
+                     "or use 'path'");
+}
+
+void ParticleTracerIntegrator::trace(const Scene& scene, Sampler& sampler, const Wavelengths& wl, FilmSplats& splats,
+                                     uint64_t& rays) const {
+  if (maxDepth_ != 0 && !hideEmitters_) splatVisibleEmitter(scene, sampler, wl, splats, rays);
+  if (maxDepth_ < 0 || maxDepth_ > 1) traceLightPath(scene, sampler, wl, splats, rays);
+}
+
+// Delta lights are never seen directly (no camera ray hits them), as in `path`.
+void ParticleTracerIntegrator::splatVisibleEmitter(const Scene& scene, Sampler& sampler, const Wavelengths& wl,
+                                                   FilmSplats& splats, uint64_t& rays) const {
+  float uChoice = sampler.get1D(), pmf = 0.0f;
+  const Vec2 uEmitter = sampler.get2D(), uSensor = sampler.get2D();
+  const Emitter* emitter = scene.sampleEmitter(uChoice, &pmf);
+  if (!emitter || emitter->isDelta()) return;
+  const Sensor& sensor = scene.sensor();
+  if (emitter->isInfinite()) {
+    // A direction toward the light, from anywhere (at infinity the point does not matter).
+    std::optional<EmitterSample> toLight = emitter->sample(scene.boundingSphere().centre, uEmitter, wl);
+    if (!toLight || !(toLight->pdf > 0.0f)) return;
+    std::optional<ImportanceSample> is = sensor.sampleImportanceFrom(toLight->direction, uSensor);
+    if (!is) return;
+    Spectrum tr = scene.transmittance(Ray{is->rayStart, toLight->direction}, wl, rays);
+    if (tr.isZero()) return;
+    splats.add(is->filmPosition, toLight->radiance * tr * (is->weight / (toLight->pdf * pmf)));
+    return;
+  }
+  std::optional<PositionSample> ps = emitter->samplePosition(uEmitter);
+  if (!ps) return;
+  std::optional<ImportanceSample> is = sensor.sampleImportance(ps->p, uSensor);
+  if (!is) return;
+  const SurfaceInteraction at = ps->interaction();
+  const Vec3 toSensor = normalize(is->origin - ps->p);
+  const Spectrum emitted = emitter->radianceAt(at, toSensor, wl);
+  if (emitted.isZero()) return;
+  Spectrum tr = scene.transmittance(at.spawnRayTo(is->rayStart), wl, rays);
+  if (tr.isZero()) return;
+  const float cosine = std::abs(dot(ps->n, toSensor));
+  splats.add(is->filmPosition, emitted * tr * (cosine * is->weight / (ps->pdfArea * pmf)));
+}
+
+void ParticleTracerIntegrator::connectToSensor(const Scene& scene, const SurfaceInteraction& hit, const Vec3& toLight,
+                                               const Spectrum& beta, Vec2 u, const Wavelengths& wl, FilmSplats& splats,
+                                               uint64_t& rays) const {
+  std::optional<ImportanceSample> is = scene.sensor().sampleImportance(hit.p, u);
+  if (!is) return;
+  const Vec3 toSensor = normalize(is->origin - hit.p);
+  const Vec3 wi = hit.shading.toLocal(toLight), wo = hit.shading.toLocal(toSensor);
+  const float correction = shadingNormalCorrection(hit, toLight, wi, toSensor, wo);
+  if (correction == 0.0f) return;
+  // f(wi, wo) |cos wo|: the light's direction in the place of the camera's.
+  const Spectrum f = hit.shape->bsdf->eval(hit.bsdfContext(), wi, wo, wl);
+  if (f.isZero()) return;
+  const Spectrum tr = scene.transmittance(hit.spawnRayTo(is->rayStart), wl, rays);
+  if (tr.isZero()) return;
+  splats.add(is->filmPosition, beta * f * tr * (correction * is->weight));
+}
+
+void ParticleTracerIntegrator::traceLightPath(const Scene& scene, Sampler& sampler, const Wavelengths& wl,
+                                              FilmSplats& splats, uint64_t& rays) const {
+  float uChoice = sampler.get1D(), pmf = 0.0f;
+  const Vec2 uPosition = sampler.get2D(), uDirection = sampler.get2D();
+  const Emitter* emitter = scene.sampleEmitter(uChoice, &pmf);
+  if (!emitter) return;
+  std::optional<EmitterRaySample> start = emitter->sampleRay(uPosition, uDirection, wl, scene.boundingSphere());
+  if (!start) return;
+  Spectrum beta = start->weight / pmf;
+  if (beta.isZero() || !beta.isFinite()) return;
+  Ray ray = start->ray;
+  // `depth`: the path's segments so far; connecting a vertex to the sensor adds one.
+  int depth = 1, passThroughSteps = 0;
+  while (maxDepth_ < 0 || depth < maxDepth_) {
+    ++rays;
+    std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+    if (!hit) break;
+    const Vec3 toLight = -normalize(ray.d);
+    connectToSensor(scene, *hit, toLight, beta, sampler.get2D(), wl, splats, rays);
+
+    const float uComponent = sampler.get1D();
+    const Vec2 u = sampler.get2D();
+    const Vec3 wi = hit->shading.toLocal(toLight);
+    std::optional<BSDFSample> bs = hit->shape->bsdf->sample(hit->bsdfContext(), wi, wl, uComponent, u);
+    if (!bs) break;
+    const Vec3 out = hit->shading.toWorld(bs->wo);
+    beta *= bs->weight * shadingNormalCorrection(*hit, toLight, wi, out, bs->wo);
+    if (beta.isZero() || !beta.isFinite()) break;
+    ray = hit->spawnRay(out);
+    if (bs->passThrough) {
+      // The ray goes on as if the surface were not there: no bounce.
+      if (++passThroughSteps > kMaxPassThroughSteps) break;
+      continue;
+    }
+    ++depth;
+    if (depth > rrDepth_) {
+      const float q = std::min(beta.maxValue(), 0.95f);
+      if (sampler.get1D() >= q) break;
+      beta /= q;
+    }
+  }
+}
+
+std::shared_ptr<Object> makeParticleTracerIntegrator(const Properties& props) {
+  int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
+  if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
+  if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
+  readMitsubaPassParameters(props);
+  return std::make_shared<ParticleTracerIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false),
+                                                    props.location);
+}
+
+}  // namespace columba
