@@ -59,6 +59,19 @@ struct BSDFVertexQueries {
   Spectrum passThrough;               // 0 unless asked
 };
 
+// Answers `request` with callables: eval(wo), pdf(wo), sample(uComponent, u) and passThrough(). A
+// BSDF that works something out once per vertex (its material at a textured point) answers all
+// the queries with callables that share it.
+template <typename Eval, typename Pdf, typename Sample, typename PassThrough>
+BSDFVertexQueries answerVertexQueries(const BSDFVertexRequest& request, Eval&& eval, Pdf&& pdf, Sample&& sample,
+                                      PassThrough&& passThrough) {
+  BSDFVertexQueries q;
+  if (request.woLight) q.toLight = {eval(*request.woLight), request.lightPdf ? pdf(*request.woLight) : 0.0f};
+  if (request.sample) q.sampled = sample(request.uComponent, request.u);
+  if (request.passThrough) q.passThrough = passThrough();
+  return q;
+}
+
 class BSDF : public Object {
  public:
   // f(wi, wo) * |cos(wo)| of the non-delta components.
@@ -68,12 +81,11 @@ class BSDF : public Object {
   // The requested queries at one vertex; the same values as the separate calls.
   virtual BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                         const BSDFVertexRequest& request) const {
-    BSDFVertexQueries q;
-    if (request.woLight)
-      q.toLight = {eval(ctx, wi, *request.woLight, wl), request.lightPdf ? pdf(ctx, wi, *request.woLight, wl) : 0.0f};
-    if (request.sample) q.sampled = sample(ctx, wi, wl, request.uComponent, request.u);
-    if (request.passThrough) q.passThrough = passThrough(ctx, wi, wl);
-    return q;
+    return answerVertexQueries(
+        request, [&](const Vec3& wo) { return eval(ctx, wi, wo, wl); },
+        [&](const Vec3& wo) { return pdf(ctx, wi, wo, wl); },
+        [&](float uComponent, Vec2 u) { return sample(ctx, wi, wl, uComponent, u); },
+        [&] { return passThrough(ctx, wi, wl); });
   }
   // `uComponent` picks a component, `u` drives it. nullopt = absorbed / rejected.
   virtual std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,

@@ -60,10 +60,6 @@ Spectrum PrincipledBSDF::frontFresnel(const Material& material, float cosI, floa
          tinted * (dielectric * material.specTint);
 }
 
-Spectrum PrincipledBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return valueFor(materialAt(ctx, wl), wi, wo);
-}
-
 Spectrum PrincipledBSDF::valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return Spectrum(0.0f);
   const bool front = cosTheta(wi) > 0.0f;
@@ -103,10 +99,6 @@ Spectrum PrincipledBSDF::valueFor(const Material& material, const Vec3& wi, cons
   return value;
 }
 
-float PrincipledBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return densityFor(materialAt(ctx, wl), wi, wo);
-}
-
 float PrincipledBSDF::densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return 0.0f;
   const bool front = cosTheta(wi) > 0.0f;
@@ -125,23 +117,6 @@ float PrincipledBSDF::densityFor(const Material& material, const Vec3& wi, const
   }
   if (front && cosTheta(wo) > 0.0f) density += strategy.diffuse * cosineHemispherePdf(cosTheta(wo));
   return density;
-}
-
-std::optional<BSDFSample> PrincipledBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                                 float uComponent, Vec2 u) const {
-  return sampleFor(materialAt(ctx, wl), wi, uComponent, u);
-}
-
-BSDFVertexQueries PrincipledBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                              const BSDFVertexRequest& request) const {
-  // One material for every query: working it out looks up every textured parameter.
-  const Material material = materialAt(ctx, wl);
-  BSDFVertexQueries q;
-  if (request.woLight)
-    q.toLight = {valueFor(material, wi, *request.woLight),
-                 request.lightPdf ? densityFor(material, wi, *request.woLight) : 0.0f};
-  if (request.sample) q.sampled = sampleFor(material, wi, request.uComponent, request.u);
-  return q;
 }
 
 std::optional<BSDFSample> PrincipledBSDF::sampleFor(const Material& material, const Vec3& wi, float uComponent,

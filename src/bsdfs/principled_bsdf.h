@@ -17,41 +17,38 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
+#include "bsdfs/point_material_bsdf.h"
 #include "bsdfs/principled_parameters.h"
 #include "bsdfs/principled_terms.h"
 #include "core/properties.h"
 
 namespace columba {
 
-class PrincipledBSDF : public BSDF {
+// The parameters of `principled` at one shading point and the quantities derived from them.
+struct PrincipledMaterial {
+  Spectrum baseColor;
+  Spectrum tint;  // the base colour at unit luminance
+  float roughness, metallic, specTint, sheen, sheenTint, flatness, clearcoat;
+  float diffuseWeight, transmissionWeight;  // brdf and bsdf above
+  MicrofacetDistribution specular;
+  GTR1Distribution coat;
+};
+
+class PrincipledBSDF : public PointMaterialBSDF<PrincipledMaterial> {
  public:
   explicit PrincipledBSDF(PrincipledParameters parameters);
-  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
-                                   Vec2 u) const override;
-  BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                const BSDFVertexRequest& request) const override;
 
  private:
-  // The parameters at one shading point and the quantities derived from them.
-  struct Material {
-    Spectrum baseColor;
-    Spectrum tint;  // the base colour at unit luminance
-    float roughness, metallic, specTint, sheen, sheenTint, flatness, clearcoat;
-    float diffuseWeight, transmissionWeight;  // brdf and bsdf above
-    MicrofacetDistribution specular;
-    GTR1Distribution coat;
-  };
+  using Material = PrincipledMaterial;
   // Probabilities of the sampling strategies for light arriving on the given side.
   struct Strategies {
     float diffuse = 0.0f, clearcoat = 0.0f, specular = 0.0f;
   };
-  Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const;
-  // eval and pdf for the material at the shading point, worked out once per call of sample.
-  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
-  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
-  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent, Vec2 u) const;
+  Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const override;
+  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const override;
+  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const override;
+  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent,
+                                      Vec2 u) const override;
   Strategies strategies(const Material& material, bool front) const;
   // Probability that the specular strategy reflects, given the dielectric Fresnel term.
   static float specularReflectionShare(const Material& material, bool front, float fresnel);

@@ -62,10 +62,6 @@ PrincipledThinBSDF::Strategies PrincipledThinBSDF::strategies(const Material& ma
   return s;
 }
 
-Spectrum PrincipledThinBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return valueFor(materialAt(ctx, wl), wi, wo);
-}
-
 Spectrum PrincipledThinBSDF::valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return Spectrum(0.0f);
   const SheetPair pair = sheetPair(wi, wo);
@@ -104,10 +100,6 @@ Spectrum PrincipledThinBSDF::valueFor(const Material& material, const Vec3& wi, 
   return value;
 }
 
-float PrincipledThinBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return densityFor(materialAt(ctx, wl), wi, wo);
-}
-
 float PrincipledThinBSDF::densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const {
   if (cosTheta(wi) == 0.0f || cosTheta(wo) == 0.0f) return 0.0f;
   const Strategies strategy = strategies(material);
@@ -126,23 +118,6 @@ float PrincipledThinBSDF::densityFor(const Material& material, const Vec3& wi, c
     }
   }
   return density;
-}
-
-std::optional<BSDFSample> PrincipledThinBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                                     float uComponent, Vec2 u) const {
-  return sampleFor(materialAt(ctx, wl), wi, uComponent, u);
-}
-
-BSDFVertexQueries PrincipledThinBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                                  const BSDFVertexRequest& request) const {
-  // One material for every query: working it out looks up every textured parameter.
-  const Material material = materialAt(ctx, wl);
-  BSDFVertexQueries q;
-  if (request.woLight)
-    q.toLight = {valueFor(material, wi, *request.woLight),
-                 request.lightPdf ? densityFor(material, wi, *request.woLight) : 0.0f};
-  if (request.sample) q.sampled = sampleFor(material, wi, request.uComponent, request.u);
-  return q;
 }
 
 std::optional<BSDFSample> PrincipledThinBSDF::sampleFor(const Material& material, const Vec3& wi, float uComponent,

@@ -14,41 +14,38 @@
 #include <memory>
 #include "bsdfs/bsdf.h"
 #include "bsdfs/microfacet.h"
+#include "bsdfs/point_material_bsdf.h"
 #include "bsdfs/principled_parameters.h"
 #include "core/properties.h"
 
 namespace columba {
 
-class PrincipledThinBSDF : public BSDF {
+// The parameters of `principledthin` at one shading point and the quantities derived from them.
+struct PrincipledThinMaterial {
+  Spectrum baseColor;
+  Spectrum tint;  // the base colour at unit luminance
+  float roughness, specTrans;
+  float diffTrans;  // halved: the transmitted share of the diffuse part
+  float eta, specTint, sheen, sheenTint, flatness;
+  MicrofacetDistribution reflection, transmission;
+};
+
+class PrincipledThinBSDF : public PointMaterialBSDF<PrincipledThinMaterial> {
  public:
   explicit PrincipledThinBSDF(PrincipledThinParameters parameters);
-  Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override;
-  std::optional<BSDFSample> sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl, float uComponent,
-                                   Vec2 u) const override;
-  BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
-                                const BSDFVertexRequest& request) const override;
 
  private:
-  // The parameters at one shading point and the quantities derived from them.
-  struct Material {
-    Spectrum baseColor;
-    Spectrum tint;  // the base colour at unit luminance
-    float roughness, specTrans;
-    float diffTrans;  // halved: the transmitted share of the diffuse part
-    float eta, specTint, sheen, sheenTint, flatness;
-    MicrofacetDistribution reflection, transmission;
-  };
+  using Material = PrincipledThinMaterial;
   // Probabilities of the four sampling strategies.
   struct Strategies {
     float specularReflection = 0.0f, specularTransmission = 0.0f;
     float diffuseReflection = 0.0f, diffuseTransmission = 0.0f;
   };
-  Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const;
-  // eval and pdf for the material at the shading point, worked out once per call of sample.
-  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
-  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const;
-  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent, Vec2 u) const;
+  Material materialAt(const BSDFContext& ctx, const Wavelengths& wl) const override;
+  Spectrum valueFor(const Material& material, const Vec3& wi, const Vec3& wo) const override;
+  float densityFor(const Material& material, const Vec3& wi, const Vec3& wo) const override;
+  std::optional<BSDFSample> sampleFor(const Material& material, const Vec3& wi, float uComponent,
+                                      Vec2 u) const override;
   Strategies strategies(const Material& material) const;
 
   PrincipledThinParameters p_;
