@@ -201,6 +201,33 @@ TEST(ParticleTracer, MatchesThePathTracerForEveryKindOfEmitterAndSensor) {
   }
 }
 
+TEST(ParticleTracer, ABarbuleBSDFScattersTheLightAsCameraPathsSeeIt) {
+  // The barbule BSDF is not reciprocal, so light paths must scatter as f(toward the camera, toward
+  // the light), as camera paths do, not with the two swapped. A vane seen from 70 degrees at azimuth
+  // 135 (45) under light from 50 degrees at azimuth 0 (70 at 180): with them swapped, the light
+  // tracer's image was 0.60 (1.87) times the path tracer's; it agrees within 1 %.
+  struct Case {
+    const char *camera, *direction;
+  };
+  for (const Case& c : {Case{"-3.987, 3.987, 2.052", R"(x="-0.766" y="0" z="-0.6428")"},
+                        Case{"3.987, 3.987, 2.052", R"(x="0.9397" y="0" z="-0.342")"}}) {
+    SCOPED_TRACE(c.camera);
+    const std::string body = std::string(R"(<sensor type="perspective"><float name="fov" value="30"/>
+      <transform name="to_world"><lookat origin=")") +
+                             c.camera + R"(" target="0, 0, 0" up="0, 0, 1"/></transform>
+      <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="20"/></film>
+      <sampler type="independent"><integer name="sample_count" value="256"/></sampler></sensor>
+    <shape type="rectangle"><bsdf type="barbulebsdf"/></shape>
+    <emitter type="directional"><vector name="direction" )" +
+                             c.direction + R"(/>
+      <spectrum name="irradiance" value="3"/></emitter>)";
+    const Image path = renderSceneString(scene("path", body)), light = renderSceneString(scene("ptracer", body));
+    const double whole = meanLuminance(path, 0, 0, 24, 20);
+    ASSERT_GT(whole, 0.0);
+    EXPECT_NEAR(meanLuminance(light, 0, 0, 24, 20), whole, 0.05 * whole);
+  }
+}
+
 class ParticleTracerWithFiles : public TempDirTest {};
 
 TEST_F(ParticleTracerWithFiles, MatchesThePathTracerUnderAnEnvironmentMap) {

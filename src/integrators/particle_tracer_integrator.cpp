@@ -19,6 +19,17 @@ float shadingNormalCorrection(const SurfaceInteraction& hit, const Vec3& toLight
   if (!(geometricIn * wi.z > 0.0f) || !(geometricOut * wo.z > 0.0f)) return 0.0f;
   return std::abs(wi.z * geometricOut) / std::abs(wo.z * geometricIn);
 }
+
+// The weight of light arriving from `wi` and leaving along the sampled direction: the sample drew
+// its direction as camera paths do, weighted f(wi, wo) |cos wo| / pdf, where light leaving along
+// wo takes f(wo, wi). The two differ for BSDFs that are not reciprocal (the barbule BSDF). A delta
+// or pass-through sample keeps its weight (a mirror, and a straight line through gaps, are the
+// same both ways).
+Spectrum adjointWeight(const BSDF& bsdf, const BSDFContext& ctx, const Vec3& wi, const BSDFSample& bs,
+                       const Wavelengths& wl) {
+  if (bs.delta || bs.passThrough) return bs.weight;
+  return bsdf.eval(ctx, bs.wo, wi, wl) * (absCosTheta(bs.wo) / (absCosTheta(wi) * bs.pdf));
+}
 }  // namespace
 
 void ParticleTracerIntegrator::checkScene(const Scene& scene) const {
@@ -82,8 +93,10 @@ void ParticleTracerIntegrator::connectToSensor(const Scene& scene, const Surface
   const Vec3 wi = hit.shading.toLocal(toLight), wo = hit.shading.toLocal(toSensor);
   const float correction = shadingNormalCorrection(hit, toLight, wi, toSensor, wo);
   if (correction == 0.0f) return;
-  // f(wi, wo) |cos wo|: the light's direction in the place of the camera's.
-  const Spectrum f = hit.shape->bsdf->eval(hit.bsdfContext(), wi, wo, wl);
+  // The light scattered toward the sensor: f(wo, wi), the sensor's direction in the camera's place,
+  // so BSDFs that are not reciprocal (the barbule BSDF) scatter as they do for camera paths. eval
+  // gives it times |cos wi|; the adjoint's cosine is |cos wo|.
+  const Spectrum f = hit.shape->bsdf->eval(hit.bsdfContext(), wo, wi, wl) * (absCosTheta(wo) / absCosTheta(wi));
   if (f.isZero()) return;
   const Spectrum tr = scene.transmittance(hit.spawnRayTo(is->rayStart), wl, rays);
   if (tr.isZero()) return;
@@ -116,7 +129,8 @@ void ParticleTracerIntegrator::traceLightPath(const Scene& scene, Sampler& sampl
     std::optional<BSDFSample> bs = hit->shape->bsdf->sample(hit->bsdfContext(), wi, wl, uComponent, u);
     if (!bs) break;
     const Vec3 out = hit->shading.toWorld(bs->wo);
-    beta *= bs->weight * shadingNormalCorrection(*hit, toLight, wi, out, bs->wo);
+    beta *= adjointWeight(*hit->shape->bsdf, hit->bsdfContext(), wi, *bs, wl) *
+            shadingNormalCorrection(*hit, toLight, wi, out, bs->wo);
     if (beta.isZero() || !beta.isFinite()) break;
     ray = hit->spawnRay(out);
     if (bs->passThrough) {

@@ -7,10 +7,13 @@
 // direction of a light at infinity to the sensor, for the emitters the camera sees directly.
 // max_depth and rr_depth count as in `path`, so the two render the same image in expectation.
 //
-// BSDFs are used as their own adjoints (the light arriving at a vertex takes the place of the
-// camera's direction), with Veach's correction for shading normals. Dielectrics scale refracted
-// radiance by (eta_i / eta_t)^2, which for a light path telescopes to 1 between a light and a
-// camera in the same medium (e.g. both in air), the only case Columba's scenes describe.
+// The light scattered at a vertex is f(toward the camera's side, toward the light), the BSDF with
+// its arguments as camera paths pass them, so BSDFs that are not reciprocal (the barbule BSDF) give
+// the same image; directions are still sampled from the light's side, and a sample is weighted
+// with the BSDF evaluated the other way round. Veach's correction covers shading normals. Delta
+// samples keep their own weight: for dielectrics that leaves out (eta_i / eta_t)^2, which for a
+// light path telescopes to 1 between a light and a camera in the same medium (e.g. both in air),
+// the only case Columba's scenes describe.
 #include "core/error.h"
 #include "core/properties.h"
 #include "core/spectrum.h"
