@@ -98,10 +98,13 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
             stopped = true;
             break;
           }
-          // The sample's place among the window's pixels only names it for the sampler.
-          const uint64_t pixel = k % pixels;
+          // The sample's place among the window's pixels only names it for the sampler. Consecutive
+          // samples take one pixel's sample indices in turn, as camera paths do, so that samplers
+          // that lay out a pixel's whole pattern at once (ldsampler) do it once per pixel.
+          const uint64_t pixel = k / uint64_t(spp);
           sampler->startPixelSample(window.x0 + int(pixel % uint64_t(window.width())),
-                                    window.y0 + int(pixel / uint64_t(window.width())), int(k / pixels), settings.seed);
+                                    window.y0 + int(pixel / uint64_t(window.width())), int(k % uint64_t(spp)),
+                                    settings.seed);
           const Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
           splats.setWavelengths(wl);
           tracer.trace(scene, *sampler, wl, splats, blockRays);
