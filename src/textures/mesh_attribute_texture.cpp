@@ -14,16 +14,20 @@ const MeshAttributes::Attribute& MeshAttributeTexture::attributeAt(const Texture
   return *a;
 }
 
+// Each lookup finds its attribute (or throws) before it touches the mesh, which may be absent.
 Spectrum MeshAttributeTexture::evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const {
-  return p.mesh->evalSpectrum(attributeAt(p), p.triangle, p.barycentric, wl) * scale_;
+  const MeshAttributes::Attribute& a = attributeAt(p);
+  return p.mesh->evalSpectrum(a, p.triangle, p.barycentric, wl) * scale_;
 }
 
 float MeshAttributeTexture::evalFloat(const TexturePoint& p) const {
-  return p.mesh->evalFloat(attributeAt(p), p.triangle, p.barycentric) * scale_;
+  const MeshAttributes::Attribute& a = attributeAt(p);
+  return p.mesh->evalFloat(a, p.triangle, p.barycentric) * scale_;
 }
 
 Vec3 MeshAttributeTexture::evalTriple(const TexturePoint& p) const {
-  return p.mesh->evalTriple(attributeAt(p), p.triangle, p.barycentric) * scale_;
+  const MeshAttributes::Attribute& a = attributeAt(p);
+  return p.mesh->evalTriple(a, p.triangle, p.barycentric) * scale_;
 }
 
 std::shared_ptr<Object> makeMeshAttributeTexture(const Properties& props) {
