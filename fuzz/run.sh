@@ -40,7 +40,8 @@ seed() {  # seed TARGET CORPUS
 
 dict_of() {
   case $1 in scene) echo fuzz/dict/scene.dict ;; ply_mesh|feather_ply) echo fuzz/dict/ply.dict ;;
-    obj_mesh) echo fuzz/dict/obj.dict ;; exr_envmap) echo fuzz/dict/exr.dict ;; esac
+    obj_mesh) echo fuzz/dict/obj.dict ;; exr_envmap) echo fuzz/dict/exr.dict ;;
+    serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid) echo fuzz/dict/vol.dict ;; esac
 }
 
 status=0

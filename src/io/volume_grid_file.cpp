@@ -1,5 +1,7 @@
 #include "io/volume_grid_file.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -52,7 +54,7 @@ VolumeGrid parseVolumeGrid(const std::string& bytes, const std::string& name) {
   if (count != double(available) || (bytes.size() - kHeaderBytes) % sizeof(float) != 0)
     throw InputError({}, name + ": the header's " + std::to_string(grid.xres) + " x " + std::to_string(grid.yres) +
                              " x " + std::to_string(grid.zres) + " x " + std::to_string(grid.channels) +
-                             " values need " + std::to_string(size_t(kHeaderBytes + count * sizeof(float))) +
+                             " values need " + fmt::format("{:.0f}", double(kHeaderBytes) + count * sizeof(float)) +
                              " bytes, but the file has " + std::to_string(bytes.size()) +
                              (count > double(available) ? " (truncated)" : ""));
   grid.values.resize(available);

@@ -101,7 +101,7 @@ size_t meshOffset(const unsigned char* data, size_t size, uint16_t version, int 
         {}, name + ": the mesh dictionary at the end of the file is truncated (" + std::to_string(count) + " meshes)");
   const unsigned char* at = data + size - 4 - entry * (size_t(count) - size_t(index));
   uint64_t offset = version == 4 ? readLittleEndian<uint64_t>(at) : readLittleEndian<uint32_t>(at);
-  if (offset + 4 > size)
+  if (offset > size || size - offset < 4)  // not offset + 4, which a hostile offset overflows
     throw InputError({}, name + ": mesh " + std::to_string(index) + " starts at byte " + std::to_string(offset) +
                              ", beyond the end of the file");
   return size_t(offset);
@@ -114,7 +114,7 @@ SerializedMesh parseSerializedMesh(const std::string& bytes, int shapeIndex, con
   const size_t size = bytes.size();
   if (shapeIndex < 0) throw InputError({}, name + ": shape_index must be 0 or more, not " + std::to_string(shapeIndex));
   auto header = [&](size_t at) {
-    if (at + 4 > size) throw InputError({}, name + ": too short for a Mitsuba serialized mesh");
+    if (at > size || size - at < 4) throw InputError({}, name + ": too short for a Mitsuba serialized mesh");
     uint16_t magic = readLittleEndian<uint16_t>(data + at), version = readLittleEndian<uint16_t>(data + at + 2);
     if (magic != kSerializedMagic) throw InputError({}, name + ": not a Mitsuba serialized mesh (no 0x041C header)");
     if (version != 3 && version != 4)
