@@ -109,32 +109,33 @@ end_header
   EXPECT_EQ(mesh.attributes.names(),
             "vertex_color, vertex_quality, vertex_dir, vertex_k_1, vertex_k_2, face_color, "
             "face_weight");
-  const MeshAttributes::Attribute* colour = mesh.attributes.find("vertex_color");
+  const MeshAttributes::Attribute* colour = mesh.attributes.find(MeshAttributeKey("vertex_color"));
   ASSERT_TRUE(colour);
   EXPECT_EQ(colour->channels, 3);
   // Integers are divided by their type's largest value and decoded from sRGB, as Mitsuba reads them.
   EXPECT_FLOAT_EQ(colour->values[0], 1.0f);
   EXPECT_NEAR(colour->values[1], std::pow((128.0f / 255.0f + 0.055f) / 1.055f, 2.4f), 1e-6f);
-  const MeshAttributes::Attribute* dir = mesh.attributes.find("vertex_dir");
+  const MeshAttributes::Attribute* dir = mesh.attributes.find(MeshAttributeKey("vertex_dir"));
   ASSERT_TRUE(dir);
   EXPECT_EQ(dir->channels, 3);
   EXPECT_FLOAT_EQ(dir->values[2], 3.0f);  // floats are kept as they are
-  EXPECT_FLOAT_EQ(mesh.attributes.find("face_weight")->values[0], -1.0f / 12.92f);
-  EXPECT_FALSE(mesh.attributes.find("vertex_alpha"));
+  EXPECT_FLOAT_EQ(mesh.attributes.find(MeshAttributeKey("face_weight"))->values[0], -1.0f / 12.92f);
+  EXPECT_FALSE(mesh.attributes.find(MeshAttributeKey("vertex_alpha")));
 }
 
 TEST(MeshAttributes, VertexValuesAreInterpolatedAndFaceValuesHeld) {
   MeshAttributes attributes;
   attributes.add("vertex_h", 1, {0.0f, 1.0f, 2.0f, 4.0f});
   attributes.add("face_w", 1, {0.25f, 0.75f});
-  attributes.setTriangles({0, 1, 2, 0, 2, 3});
-  const MeshAttributes::Attribute& h = *attributes.find("vertex_h");
+  const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+  attributes.setTriangles(triangles);
+  const MeshAttributes::Attribute& h = *attributes.find(MeshAttributeKey("vertex_h"));
   // Barycentric (0.25, 0.5): 0.25 * h0 + 0.25 * h1 + 0.5 * h2.
   EXPECT_FLOAT_EQ(attributes.evalFloat(h, 0, Vec2(0.25f, 0.5f)), 0.25f + 1.0f);
   EXPECT_FLOAT_EQ(attributes.evalFloat(h, 1, Vec2(0.25f, 0.5f)), 0.5f + 2.0f);
   // A polygon split into triangles gives each triangle the polygon's value.
   attributes.expandFacesToTriangles({0, 0, 1});
-  const MeshAttributes::Attribute& w = *attributes.find("face_w");
+  const MeshAttributes::Attribute& w = *attributes.find(MeshAttributeKey("face_w"));
   EXPECT_FLOAT_EQ(attributes.evalFloat(w, 1, Vec2(0.3f, 0.3f)), 0.25f);
   EXPECT_FLOAT_EQ(attributes.evalFloat(w, 2, Vec2(0.3f, 0.3f)), 0.75f);
   EXPECT_FLOAT_EQ(h.mean, 7.0f / 4.0f);
@@ -143,8 +144,9 @@ TEST(MeshAttributes, VertexValuesAreInterpolatedAndFaceValuesHeld) {
 TEST(MeshAttributes, ColoursBlendTheirVerticesSpectra) {
   MeshAttributes attributes;
   attributes.add("vertex_color", 3, {0.9f, 0.1f, 0.1f, 0.1f, 0.9f, 0.1f, 0.1f, 0.1f, 0.9f});
-  attributes.setTriangles({0, 1, 2});
-  const MeshAttributes::Attribute& c = *attributes.find("vertex_color");
+  const std::vector<uint32_t> triangle = {0, 1, 2};
+  attributes.setTriangles(triangle);
+  const MeshAttributes::Attribute& c = *attributes.find(MeshAttributeKey("vertex_color"));
   const Wavelengths wl = someWavelengths();
   const Spectrum mixed = attributes.evalSpectrum(c, 0, Vec2(0.2f, 0.5f), wl);
   for (int i = 0; i < kSpectrumSamples; ++i) {

@@ -5,7 +5,7 @@
 namespace columba {
 
 const MeshAttributes::Attribute& MeshAttributeTexture::attributeAt(const TexturePoint& p) const {
-  const MeshAttributes::Attribute* a = p.mesh ? p.mesh->find(name_) : nullptr;
+  const MeshAttributes::Attribute* a = p.mesh ? p.mesh->find(key_) : nullptr;
   if (!a)
     throw InputError(where_, "mesh_attribute '" + name_ + "' was looked up on a shape without it (" +
                                  (p.mesh ? "its attributes: " + p.mesh->names()

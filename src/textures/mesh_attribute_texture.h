@@ -16,7 +16,7 @@ namespace columba {
 class MeshAttributeTexture : public Texture {
  public:
   MeshAttributeTexture(std::string name, float scale, SourceLocation where)
-      : name_(std::move(name)), scale_(scale), where_(std::move(where)) {}
+      : key_(name), name_(std::move(name)), scale_(scale), where_(std::move(where)) {}
   Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
   float evalFloat(const TexturePoint& p) const override;
   bool givesTriples() const override { return true; }
@@ -28,7 +28,8 @@ class MeshAttributeTexture : public Texture {
  private:
   const MeshAttributes::Attribute& attributeAt(const TexturePoint& p) const;
 
-  std::string name_;
+  MeshAttributeKey key_;  // what each lookup finds the attribute by
+  std::string name_;      // for messages
   float scale_;
   SourceLocation where_;
 };

@@ -2,16 +2,23 @@
 
 #include <stdexcept>
 
+#include "core/name_table.h"
 #include "textures/fitted_colours.h"
 
 namespace columba {
 
+MeshAttributeKey::MeshAttributeKey(std::string_view name) {
+  static NameTable names;
+  id_ = names.idOf(name);
+}
+
 void MeshAttributes::add(std::string name, int channels, std::vector<float> values) {
   if (channels != 1 && channels != 3) throw std::logic_error("a mesh attribute has 1 or 3 channels");
-  Attribute a;
-  a.name = std::move(name);
-  a.channels = channels;
-  a.values = std::move(values);
+  const bool perVertex = name.rfind("vertex_", 0) == 0;
+  if (!perVertex && name.rfind("face_", 0) != 0)
+    throw std::logic_error("a mesh attribute's name starts with vertex_ or face_");
+  const MeshAttributeKey key(name);
+  Attribute a{std::move(name), key, perVertex, channels, std::move(values), {}, 0.0f};
   if (channels == 3) {
     std::vector<Vec3> colours(a.values.size() / 3);
     for (size_t i = 0; i < colours.size(); ++i)
@@ -29,7 +36,7 @@ void MeshAttributes::add(std::string name, int channels, std::vector<float> valu
 
 void MeshAttributes::expandFacesToTriangles(const std::vector<uint32_t>& triangleFace) {
   for (Attribute& a : attributes_) {
-    if (a.perVertex()) continue;
+    if (a.perVertex) continue;
     std::vector<float> values;
     std::vector<RGBSpectrum> spectra;
     values.reserve(triangleFace.size() * size_t(a.channels));
@@ -42,9 +49,9 @@ void MeshAttributes::expandFacesToTriangles(const std::vector<uint32_t>& triangl
   }
 }
 
-const MeshAttributes::Attribute* MeshAttributes::find(const std::string& name) const {
+const MeshAttributes::Attribute* MeshAttributes::find(const MeshAttributeKey& key) const {
   for (const Attribute& a : attributes_)
-    if (a.name == name) return &a;
+    if (a.key == key) return &a;
   return nullptr;
 }
 
@@ -56,12 +63,12 @@ std::string MeshAttributes::names() const {
 
 int MeshAttributes::footprint(const Attribute& a, uint32_t triangle, Vec2 b, uint32_t element[3],
                               float weight[3]) const {
-  if (!a.perVertex()) {
+  if (!a.perVertex) {
     element[0] = triangle;
     weight[0] = 1.0f;
     return 1;
   }
-  const uint32_t* idx = &indices_[3 * size_t(triangle)];
+  const uint32_t* idx = indices_ + 3 * size_t(triangle);
   element[0] = idx[0], element[1] = idx[1], element[2] = idx[2];
   weight[0] = 1.0f - b.x - b.y, weight[1] = b.x, weight[2] = b.y;
   return 3;
