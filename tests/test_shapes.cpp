@@ -90,7 +90,7 @@ TEST(Shapes, CylinderAreaAndSamplingAndItsLimits) {
   auto tube = std::dynamic_pointer_cast<Shape>(parsed.objects.at(0));
   EXPECT_NEAR(tube->surfaceArea(), kTwoPi * 1.5f * 6.0f, 1e-3f);
   for (Vec2 u : {Vec2(0.1f, 0.2f), Vec2(0.9f, 0.7f)}) {
-    PositionSample ps = tube->samplePosition(u);
+    PositionSample ps = tube->samplePosition(u, false);
     EXPECT_NEAR(std::sqrt(ps.p.x * ps.p.x + ps.p.z * ps.p.z), 1.5f, 1e-5f);  // on the tube around y
     EXPECT_NEAR(ps.p.y, 6.0f * u.x, 1e-5f);
     EXPECT_NEAR(dot(ps.n, Vec3(ps.p.x, 0, ps.p.z) / 1.5f), 1.0f, 1e-5f);

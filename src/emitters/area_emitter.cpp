@@ -12,7 +12,7 @@ void AreaEmitter::attachTo(const Shape* shape) {
 }
 
 std::optional<EmitterSample> AreaEmitter::sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const {
-  auto rs = shape_->sampleFrom(ref, u);
+  auto rs = shape_->sampleFrom(ref, u, radiance_.isTextured());
   if (!rs || !(rs->pdf > 0.0f)) return std::nullopt;
   EmitterSample s;
   Vec3 d = rs->p - ref;
@@ -30,7 +30,7 @@ Spectrum AreaEmitter::radianceAt(const SurfaceInteraction& hit, const Vec3& toVi
 }
 
 std::optional<PositionSample> AreaEmitter::samplePosition(Vec2 u) const {
-  PositionSample ps = shape_->samplePosition(u);
+  PositionSample ps = shape_->samplePosition(u, radiance_.isTextured());
   if (!(ps.pdfArea > 0.0f)) return std::nullopt;
   return ps;
 }

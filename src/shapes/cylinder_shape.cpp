@@ -48,13 +48,13 @@ SurfaceInteraction CylinderShape::interaction(const Ray& ray, const HitRecord& h
   return si;
 }
 
-PositionSample CylinderShape::samplePosition(Vec2 u) const {
+PositionSample CylinderShape::samplePosition(Vec2 u, bool withTexturePoint) const {
   float phi = kTwoPi * u.y;
   Vec3 local(std::cos(phi), std::sin(phi), u.x);
   PositionSample ps;
   ps.p = toWorldPoint(local);
   ps.n = toWorldNormal(localNormal(local));
-  ps.point = Vec2(u.y, u.x);  // (phi / 2 pi, height), as hits give it
+  if (withTexturePoint) ps.point = Vec2(u.y, u.x);  // (phi / 2 pi, height), as hits give it
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

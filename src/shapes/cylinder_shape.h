@@ -20,7 +20,7 @@ class CylinderShape : public AnalyticShape {
   }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
-  PositionSample samplePosition(Vec2 u) const override;
+  PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
   // Whether to_world keeps the tube round: its area is then 2 pi radius length, sampled uniformly.
   bool keepsRound() const { return round_; }
 

@@ -55,12 +55,12 @@ SurfaceInteraction PlanarShape::interaction(const Ray& ray, const HitRecord& hit
   return si;
 }
 
-PositionSample PlanarShape::samplePosition(Vec2 u) const {
+PositionSample PlanarShape::samplePosition(Vec2 u, bool withTexturePoint) const {
   PositionSample ps;
   const Vec2 local = sampleLocal(u);
   ps.p = worldPoint(local);
   ps.n = frame_.n;
-  ps.point = uvAt(local);
+  if (withTexturePoint) ps.point = uvAt(local);
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

@@ -21,7 +21,7 @@ class PlanarShape : public AnalyticShape {
   }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
-  PositionSample samplePosition(Vec2 u) const override;
+  PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
 
  protected:
   // Whether the local point (x, y) of the plane belongs to the shape.

@@ -24,10 +24,12 @@ Ray SurfaceInteraction::spawnRayTo(const Vec3& target) const {
 }
 
 float Shape::surfaceArea() const { throw std::logic_error("this shape cannot carry an area emitter"); }
-PositionSample Shape::samplePosition(Vec2) const { throw std::logic_error("this shape cannot carry an area emitter"); }
+PositionSample Shape::samplePosition(Vec2, bool) const {
+  throw std::logic_error("this shape cannot carry an area emitter");
+}
 
-std::optional<ReferenceSample> Shape::sampleFrom(const Vec3& ref, Vec2 u) const {
-  PositionSample ps = samplePosition(u);
+std::optional<ReferenceSample> Shape::sampleFrom(const Vec3& ref, Vec2 u, bool withTexturePoint) const {
+  PositionSample ps = samplePosition(u, withTexturePoint);
   Vec3 d = ps.p - ref;
   float dist2 = lengthSquared(d);
   float cosLight = -dot(ps.n, d) / std::sqrt(dist2);

@@ -94,12 +94,15 @@ class Shape : public Object {
   virtual unsigned addToEmbree(RTCDevice device, RTCScene scene) const = 0;
   virtual SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const = 0;
   // Area sampling, for shapes that carry an area emitter. Defaults throw InputError-free
-  // std::logic_error: only shapes that support emission override them.
+  // std::logic_error: only shapes that support emission override them. `withTexturePoint`: the
+  // sample says where textures are looked up there (an emitter with textured radiance); without
+  // it the sample's `point` stays empty, which spares every untextured light sample that work
+  // (on a sphere or a disk, an atan2 and more).
   virtual float surfaceArea() const;
-  virtual PositionSample samplePosition(Vec2 u) const;
+  virtual PositionSample samplePosition(Vec2 u, bool withTexturePoint) const;
   // Sampling for lighting a point `ref`: by default uniform by area, converted to solid angle;
   // shapes with a better strategy (spheres: the cone they subtend) override both.
-  virtual std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u) const;
+  virtual std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u, bool withTexturePoint) const;
   virtual float pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const;
   // Number of Embree primitives (for statistics).
   virtual size_t primitiveCount() const = 0;

@@ -27,9 +27,9 @@ Vec2 SphereShape::uvOf(const Vec3& local) {
   return Vec2((phi < 0 ? phi + kTwoPi : phi) * (0.5f * kInvPi), safeAcos(local.z) * kInvPi);
 }
 
-std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u) const {
+std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u, bool withTexturePoint) const {
   std::optional<float> cosMax = coneCosine(ref);
-  if (!cosMax) return Shape::sampleFrom(ref, u);
+  if (!cosMax) return Shape::sampleFrom(ref, u, withTexturePoint);
   // Uniform over the cone of directions that see the sphere, then the nearest point along it.
   Vec3 axis = normalize(center_ - ref);
   Vec3 d = Frame::fromNormal(axis).toWorld(sampleUniformCone(u, *cosMax));
@@ -39,7 +39,7 @@ std::optional<ReferenceSample> SphereShape::sampleFrom(const Vec3& ref, Vec2 u) 
   ReferenceSample rs;
   rs.p = ref + d * t;
   rs.n = normalize(rs.p - center_);
-  rs.point = uvOf(normalize(toLocalPoint(rs.p)));
+  if (withTexturePoint) rs.point = uvOf(normalize(toLocalPoint(rs.p)));
   rs.pdf = uniformConePdf(*cosMax);
   return rs;
 }
@@ -83,12 +83,12 @@ SurfaceInteraction SphereShape::interaction(const Ray& ray, const HitRecord& hit
   return si;
 }
 
-PositionSample SphereShape::samplePosition(Vec2 u) const {
+PositionSample SphereShape::samplePosition(Vec2 u, bool withTexturePoint) const {
   Vec3 local = sampleUniformSphere(u);
   PositionSample ps;
   ps.p = toWorldPoint(local);
   ps.n = toWorldNormal(localNormal(local));
-  ps.point = uvOf(local);
+  if (withTexturePoint) ps.point = uvOf(local);
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

@@ -17,8 +17,8 @@ class SphereShape : public AnalyticShape {
   }
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
-  PositionSample samplePosition(Vec2 u) const override;
-  std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u) const override;
+  PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
+  std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u, bool withTexturePoint) const override;
   float pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const override;
 
  private:

@@ -113,7 +113,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
   return si;
 }
 
-PositionSample TriangleMesh::samplePosition(Vec2 u) const {
+PositionSample TriangleMesh::samplePosition(Vec2 u, bool withTexturePoint) const {
   float reuse;
   size_t tri = triangleByArea_.sampleDiscrete(u.x, &reuse);
   Vec2 b = sampleUniformTriangle(Vec2(reuse, u.y));
@@ -121,7 +121,7 @@ PositionSample TriangleMesh::samplePosition(Vec2 u) const {
   PositionSample ps;
   ps.p = mesh_.positions[idx[0]] * (1.0f - b.x - b.y) + mesh_.positions[idx[1]] * b.x + mesh_.positions[idx[2]] * b.y;
   ps.n = faceFrames_[tri].n;
-  ps.point = texturePointAt(tri, b.x, b.y);
+  if (withTexturePoint) ps.point = texturePointAt(tri, b.x, b.y);
   ps.pdfArea = 1.0f / area_;
   return ps;
 }

@@ -29,7 +29,7 @@ class TriangleMesh : public Shape {
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
-  PositionSample samplePosition(Vec2 u) const override;
+  PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
   size_t primitiveCount() const override { return mesh_.indices.size() / 3; }
 
  private:

@@ -30,6 +30,7 @@ class SpectrumParameter {
   float evalFloat(const TexturePoint& p) const { return texture_ ? texture_->evalFloat(p) : constantLuminance_; }
   // Mean over the visible range (constant) or over the texture (its mean as a number).
   float meanValue() const { return texture_ ? texture_->mean() : constant_.meanValue(); }
+  bool isTextured() const { return texture_ != nullptr; }
 
  private:
   SpectralDistribution constant_;
