@@ -20,6 +20,13 @@ FieldOfView readFieldOfView(const Properties& props);
 // for an image `aspect` = width / height.
 Vec2 tanHalfAngles(const FieldOfView& fov, float aspect);
 
+// Where the point `planePoint` of the plane z = 1 lies on the image, as (u, v) in [0, 1]^2 across
+// and down it, for half extents `tanHalf`: Mitsuba's camera-to-sample mapping, the image's left on
+// the camera's +x side and its top on +y.
+inline Vec2 imageUV(Vec2 planePoint, Vec2 tanHalf) {
+  return Vec2((1.0f - planePoint.x / tanHalf.x) * 0.5f, (1.0f - planePoint.y / tanHalf.y) * 0.5f);
+}
+
 inline constexpr float kDefaultFocalLengthMm = 50.0f;
 // Diagonal field of view, degrees, of a lens of `focalLengthMm` on 36 x 24 mm film.
 float diagonalFovOfFocalLength(float focalLengthMm);

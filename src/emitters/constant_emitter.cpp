@@ -1,7 +1,6 @@
 #include "emitters/constant_emitter.h"
 
 #include "core/sampling.h"
-#include "emitters/ray_from_infinity.h"
 
 namespace columba {
 
@@ -15,12 +14,6 @@ std::optional<EmitterSample> ConstantEmitter::sample(const Vec3&, Vec2 u, const 
 }
 
 float ConstantEmitter::pdfDirection(const Vec3&) const { return uniformSpherePdf(); }
-
-std::optional<EmitterRaySample> ConstantEmitter::sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
-                                                           const SceneSphere& scene) const {
-  std::optional<EmitterSample> toLight = sample(scene.centre, uDirection, wl);
-  return toLight ? rayFromInfinity(*toLight, uPosition, scene) : std::nullopt;
-}
 
 std::shared_ptr<Object> makeConstantEmitter(const Properties& props) {
   return std::make_shared<ConstantEmitter>(props.getSpectrum("radiance", 1.0f, SpectrumUse::Emission));

@@ -1,18 +1,16 @@
 #pragma once
 // `constant`: the same radiance from every direction at infinity.
 #include "core/properties.h"
-#include "emitters/emitter.h"
+#include "emitters/emitter_at_infinity.h"
 
 namespace columba {
 
-class ConstantEmitter : public Emitter {
+class ConstantEmitter : public EmitterAtInfinity {
  public:
   explicit ConstantEmitter(SpectralDistribution radiance) : radiance_(std::move(radiance)) {}
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override { return radiance_.sample(wl); }
   float pdfDirection(const Vec3& d) const override;
-  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
-                                            const SceneSphere& scene) const override;
 
   bool isInfinite() const override { return true; }
 

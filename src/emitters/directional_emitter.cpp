@@ -1,7 +1,5 @@
 #include "emitters/directional_emitter.h"
 
-#include "emitters/ray_from_infinity.h"
-
 namespace columba {
 
 std::optional<EmitterSample> DirectionalEmitter::sample(const Vec3&, Vec2, const Wavelengths& wl) const {
@@ -11,12 +9,6 @@ std::optional<EmitterSample> DirectionalEmitter::sample(const Vec3&, Vec2, const
   s.radiance = irradiance_.sample(wl);
   s.pdf = 1.0f;
   return s;
-}
-
-std::optional<EmitterRaySample> DirectionalEmitter::sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
-                                                              const SceneSphere& scene) const {
-  std::optional<EmitterSample> toLight = sample(scene.centre, uDirection, wl);
-  return toLight ? rayFromInfinity(*toLight, uPosition, scene) : std::nullopt;
 }
 
 std::shared_ptr<Object> makeDirectionalEmitter(const Properties& props) {

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 #include "core/error.h"
-#include "emitters/ray_from_infinity.h"
 #include "io/image_file_reader.h"
 
 namespace columba {
@@ -107,12 +106,6 @@ float EnvmapEmitter::pdfDirection(const Vec3& d) const {
   Vec2 uv = directionToUV(d);
   float sinTheta = std::sin(kPi * uv.y);
   return sinTheta > 0.0f ? distribution_.pdf(uv) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
-}
-
-std::optional<EmitterRaySample> EnvmapEmitter::sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
-                                                         const SceneSphere& scene) const {
-  std::optional<EmitterSample> toLight = sample(scene.centre, uDirection, wl);
-  return toLight ? rayFromInfinity(*toLight, uPosition, scene) : std::nullopt;
 }
 
 std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props) {

@@ -5,12 +5,12 @@
 #include "core/distribution.h"
 #include "core/properties.h"
 #include "core/transform.h"
-#include "emitters/emitter.h"
+#include "emitters/emitter_at_infinity.h"
 #include "io/image.h"
 
 namespace columba {
 
-class EnvmapEmitter : public Emitter {
+class EnvmapEmitter : public EmitterAtInfinity {
  public:
   // Throws InputError at `where` (the image file) for a pixel that is not finite or too bright
   // to sample.
@@ -18,8 +18,6 @@ class EnvmapEmitter : public Emitter {
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   Spectrum radianceFromDirection(const Vec3& d, const Wavelengths& wl) const override;
   float pdfDirection(const Vec3& d) const override;
-  std::optional<EmitterRaySample> sampleRay(Vec2 uPosition, Vec2 uDirection, const Wavelengths& wl,
-                                            const SceneSphere& scene) const override;
 
   bool isInfinite() const override { return true; }
 

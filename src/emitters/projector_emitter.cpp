@@ -15,16 +15,16 @@ ProjectorEmitter::ProjectorEmitter(const Transform& toWorld, SpectrumParameter i
       scale_(std::move(scale)),
       tanHalf_(tanHalf) {}
 
-std::optional<Vec2> ProjectorEmitter::imageUV(const Vec3& local) const {
+std::optional<Vec2> ProjectorEmitter::imageUVAt(const Vec3& local) const {
   if (!(local.z > 0.0f)) return std::nullopt;
-  const Vec2 uv(0.5f - local.x / (2.0f * local.z * tanHalf_.x), 0.5f - local.y / (2.0f * local.z * tanHalf_.y));
+  const Vec2 uv = imageUV(Vec2(local.x / local.z, local.y / local.z), tanHalf_);
   if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) return std::nullopt;
   return uv;
 }
 
 std::optional<EmitterSample> ProjectorEmitter::sample(const Vec3& ref, Vec2, const Wavelengths& wl) const {
   const Vec3 local = worldToLocal_.point(ref);
-  const std::optional<Vec2> uv = imageUV(local);
+  const std::optional<Vec2> uv = imageUVAt(local);
   if (!uv) return std::nullopt;
   EmitterSample s;
   const Vec3 d = position_ - ref;

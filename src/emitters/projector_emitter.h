@@ -27,7 +27,7 @@ class ProjectorEmitter : public Emitter {
                                             const SceneSphere& scene) const override;
   bool isDelta() const override { return true; }
   // Where the image is looked up for the local point `local`; nullopt outside the image or behind.
-  std::optional<Vec2> imageUV(const Vec3& local) const;
+  std::optional<Vec2> imageUVAt(const Vec3& local) const;
 
  private:
   Transform toWorld_, worldToLocal_;

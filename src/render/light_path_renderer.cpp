@@ -1,7 +1,6 @@
 #include "render/light_path_renderer.h"
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "render/splat_buffer.h"
+#include "render/thread_limit.h"
 
 namespace columba {
 
@@ -69,9 +69,7 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
   const size_t buffers =
       std::min<size_t>({std::max<size_t>(1, kBufferBudgetBytes / bufferBytes), kMaxBuffers, size_t(blocks)});
 
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (settings.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
+  const auto threadLimit = limitThreads(settings.threads);
   std::vector<SplatBuffer> blockBuffers(buffers, SplatBuffer(window, film.filter()));
   std::vector<double> sums(size_t(pixels) * 3, 0.0);
   std::atomic<uint64_t> rays{0}, nonFinite{0};

@@ -1,7 +1,6 @@
 #include "render/renderer.h"
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include "integrators/integrator.h"
 #include "render/light_path_renderer.h"
 #include "render/sample_allocation.h"
+#include "render/thread_limit.h"
 #include "samplers/sampler_parameters.h"
 
 namespace columba {
@@ -161,9 +161,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     for (int b = 0; b < bins.count; ++b) image.spectral.centres.push_back(bins.lo + (b + 0.5f) * bins.width);
     image.spectral.values.assign(size_t(width) * size_t(height) * size_t(bins.count), 0.0f);
   }
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (settings.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
+  const auto threadLimit = limitThreads(settings.threads);
   const PixelSampler pixels{
       scene, sensor, scene.integrator(), bins, settings.seed, film.filter().radius(), sensor.needsApertureSample()};
   const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
@@ -270,9 +268,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
   const float reach = film.filter().radius();
   const bool lens = sensor.needsApertureSample();
   std::vector<uint64_t> blockCosts(size_t(sampledRows), 0);
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (settings.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, settings.threads);
+  const auto threadLimit = limitThreads(settings.threads);
   tbb::parallel_for(tbb::blocked_range<int>(0, sampledRows, 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
     for (int block = range.begin(); block != range.end(); ++block) {

@@ -37,8 +37,8 @@ std::optional<ImportanceSample> PerspectiveSensor::importanceAlong(const Vec3& l
   // The point of the plane z = 1 whose camera ray through `lens` goes along `local`: the ray
   // passes through the point of the plane in focus that this image-plane point is the image of.
   const Vec3 q = lens / focusDistance() + local / local.z;
-  const Vec2 filmPosition((1.0f - q.x / tanHalfX_) * 0.5f * float(film().width()),
-                          (1.0f - q.y / tanHalfY_) * 0.5f * float(film().height()));
+  const Vec2 uv = imageUV(Vec2(q.x, q.y), Vec2(tanHalfX_, tanHalfY_));
+  const Vec2 filmPosition(uv.x * float(film().width()), uv.y * float(film().height()));
   if (!filmReaches(filmPosition)) return std::nullopt;
   // Solid angles: the image plane's area dA = d(omega) / cos^3 theta in camera space, and the
   // world's solid angle is the camera's times |det M| / |M w|^3 (w unit, M to_world's linear part).
