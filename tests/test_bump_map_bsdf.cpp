@@ -6,6 +6,7 @@
 #include "bsdfs/bump_map_bsdf.h"
 #include "bsdfs/diffuse.h"
 #include "builtin/builtin_plugins.h"
+#include "image_test_support.h"
 #include "io/image.h"
 #include "scene/scene.h"
 #include "temp_dir_test.h"
@@ -25,13 +26,7 @@ class BumpMap : public TempDirTest {
   // Heights 0 (left texel) and 1 (right texel), read raw: between the texel centres h rises by 1 over
   // half the image, dh/du = 2.
   std::shared_ptr<const BitmapTexture> ramp(Transform toUV = Transform()) {
-    Image texels(2, 1);
-    for (int c = 0; c < 3; ++c) {
-      texels.rgb[c] = 0.0f;
-      texels.rgb[3 + c] = 1.0f;
-    }
-    const std::string path = (dir_ / "ramp.exr").string();
-    writeEXR(path, texels);
+    const std::string path = writeTwoTexelEXR((dir_ / "ramp.exr").string(), 0.0f, 1.0f);
     return std::make_shared<BitmapTexture>(readImagePixels(path, false), true, TextureFilter::Bilinear,
                                            TextureWrap::Clamp, toUV);
   }

@@ -7,6 +7,7 @@
 #include "core/illuminant.h"
 #include "core/sampling.h"
 #include "emitters/envmap_emitter.h"
+#include "image_test_support.h"
 #include "io/image.h"
 #include "render_test_support.h"
 #include "scene/scene.h"
@@ -207,12 +208,7 @@ TEST(Emitter, AProjectorShowsItsImageTheWayTheCameraSeesIt) {
   // projector's +x side: (1/2, 0, 1) meets the left texel's centre and (-1/2, 0, 1) the right's.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "columba_projector_test";
   std::filesystem::create_directories(dir);
-  Image slide(2, 1);
-  for (int c = 0; c < 3; ++c) {
-    slide.rgb[c] = 0.25f;
-    slide.rgb[3 + c] = 1.0f;
-  }
-  writeEXR((dir / "slide.exr").string(), slide);
+  writeTwoTexelEXR((dir / "slide.exr").string(), 0.25f, 1.0f);
   auto light = projector(R"(<float name="fov" value="90"/>
     <texture type="bitmap" name="irradiance"><string name="filename" value="slide.exr"/>
       <string name="filter_type" value="nearest"/></texture>)",

@@ -15,6 +15,7 @@
 #include "core/rng.h"
 #include "emitters/envmap_emitter.h"
 #include "error_test_support.h"
+#include "image_test_support.h"
 #include "io/image.h"
 #include "render_test_support.h"
 #include "scene/scene.h"
@@ -246,12 +247,7 @@ TEST_F(Textures, CheckerboardReflectanceRendersItsPattern) {
 
 TEST_F(Textures, MaskOpacityAndBlendWeightTakeTextures) {
   // Left texel 0, right texel 1: the mask is open on the left half and shut on the right.
-  Image half(2, 1);
-  for (int c = 0; c < 3; ++c) {
-    half.rgb[c] = 0.0f;
-    half.rgb[3 + c] = 1.0f;
-  }
-  writeEXR((dir_ / "half.exr").string(), half);
+  writeTwoTexelEXR((dir_ / "half.exr").string(), 0.0f, 1.0f);
   ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0">
     <texture type="bitmap" id="half"><string name="filename" value="half.exr"/></texture>
     <bsdf type="mask"><ref name="opacity" id="half"/><bsdf type="diffuse"/></bsdf>
@@ -342,12 +338,7 @@ TEST_F(Textures, ASpotLightProjectsItsTexture) {
   // Texels 0.25 (left) and 1 (right); the light looks along +z with a 30-degree cutoff, so a
   // direction with x / z = tan(30 degrees) / 2 meets the right texel's centre (u = 3/4) and its
   // mirror image the left one's, both inside the full-intensity beam (22.5 degrees).
-  Image texels(2, 1);
-  for (int c = 0; c < 3; ++c) {
-    texels.rgb[c] = 0.25f;
-    texels.rgb[3 + c] = 1.0f;
-  }
-  writeEXR((dir_ / "slide.exr").string(), texels);
+  writeTwoTexelEXR((dir_ / "slide.exr").string(), 0.25f, 1.0f);
   ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0"><emitter type="spot">
       <float name="cutoff_angle" value="30"/>
       <texture type="bitmap" name="texture"><string name="filename" value="slide.exr"/></texture>
@@ -386,12 +377,7 @@ TEST_F(Textures, ARawConstantIsItsNumberEverywhere) {
 TEST_F(Textures, AConductorsIndexMayBeATexture) {
   // k is 2 on the left half of the image and 4 on the right (nearest lookups); eta is 0.5. At
   // normal incidence the mirror reflects ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) on each half.
-  Image k(2, 1);
-  for (int c = 0; c < 3; ++c) {
-    k.rgb[c] = 2.0f;
-    k.rgb[3 + c] = 4.0f;
-  }
-  writeEXR((dir_ / "k.exr").string(), k);
+  writeTwoTexelEXR((dir_ / "k.exr").string(), 2.0f, 4.0f);
   for (const char* type : {"conductor", "roughconductor"}) {
     ParsedScene parsed =
         loadSceneString(std::string(R"(<scene version="3.0.0"><bsdf type=")") + type + R"(">
