@@ -28,7 +28,7 @@ const std::vector<Query>& queries() {
     for (Query& x : q) {
       x.wi = sampleCosineHemisphere({rng.nextFloat(), rng.nextFloat()});
       x.wo = sampleCosineHemisphere({rng.nextFloat(), rng.nextFloat()});
-      x.wl = Wavelengths::sampleVisible(rng.nextFloat());
+      x.wl = Wavelengths::sample(rng.nextFloat(), WavelengthDensity::RGBMatching);
       x.uComponent = rng.nextFloat();
       x.u = {rng.nextFloat(), rng.nextFloat()};
     }

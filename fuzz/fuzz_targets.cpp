@@ -108,7 +108,7 @@ void sdfGridFromBytes(const uint8_t* data, size_t size) {
 void exrEnvmapFromBytes(const uint8_t* data, size_t size) {
   std::string path = writeScratchFile(data, size, ".exr");
   EnvmapEmitter envmap(readEXR(path), 1.0f, Transform(), {path, 0});
-  Wavelengths wl = Wavelengths::sampleVisible(0.5f);
+  Wavelengths wl = Wavelengths::sample(0.5f, WavelengthDensity::RGBMatching);
   for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.3f, 0.2f, -0.93f)}) {
     (void)envmap.radianceFromDirection(d, wl);
     (void)envmap.pdfDirection(d);

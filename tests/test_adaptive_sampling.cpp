@@ -16,8 +16,12 @@ PilotPixel twoSamples(double a, double b) { return {a + b, a * a + b * b, true};
 // A camera looking at the horizon: the upper half of the image sees a uniform sky of radiance 1
 // (its samples vary only with their wavelengths), the lower half a diffuse ground of albedo 0.5 lit
 // by that sky, which reflects 0.5 (much noisier: one emitter and one BSDF sample per pixel sample).
+// A grey ground under a white sky. The ground is lit by emitter sampling alone, which draws sky
+// directions uniformly (half of them under the ground): noisy, where the sky seen directly has only
+// the noise of its wavelengths.
 std::string horizonScene(int spp) {
-  return R"(<scene version="3.0.0"><integrator type="path"><integer name="max_depth" value="2"/></integrator>
+  return R"(<scene version="3.0.0"><integrator type="direct"><integer name="emitter_samples" value="1"/>
+      <integer name="bsdf_samples" value="0"/></integrator>
     <sensor type="perspective"><float name="fov" value="60"/>
       <transform name="to_world"><lookat origin="0, 0, 1" target="0, 10, 1" up="0, 0, 1"/></transform>
       <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="32"/><rfilter type="box"/></film>

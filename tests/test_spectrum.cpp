@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include "chi_square.h"
 #include "core/illuminant.h"
+#include "core/rng.h"
 #include "core/spectrum.h"
 
 using namespace columba;
@@ -41,15 +45,89 @@ TEST(Spectrum, FlatSpectrumIsNotWhiteBalanced) {
 }
 
 TEST(Spectrum, VisibleWavelengthPdfIntegratesToOneAndMatchesSampling) {
+  const WavelengthDensity visible = WavelengthDensity::Visible;
   double integral = 0;
-  for (float l = kLambdaMin; l < kLambdaMax; l += 0.25f) integral += visibleWavelengthPdf(l + 0.125f) * 0.25;
+  for (float l = kLambdaMin; l < kLambdaMax; l += 0.25f) integral += wavelengthPdf(l + 0.125f, visible) * 0.25;
   EXPECT_NEAR(integral, 1.0, 2e-3);
   // The sampling routine inverts the CDF: the fraction of samples below 538 nm is the CDF there.
   double cdf = 0;
-  for (float l = kLambdaMin; l < 538.0f; l += 0.25f) cdf += visibleWavelengthPdf(l + 0.125f) * 0.25;
+  for (float l = kLambdaMin; l < 538.0f; l += 0.25f) cdf += wavelengthPdf(l + 0.125f, visible) * 0.25;
   int below = 0, n = 100000;
-  for (int i = 0; i < n; ++i) below += sampleVisibleWavelength((i + 0.5f) / n) < 538.0f;
+  for (int i = 0; i < n; ++i) below += sampleWavelength((i + 0.5f) / n, visible) < 538.0f;
   EXPECT_NEAR(double(below) / n, cdf, 2e-3);
+  // pbrt-v4's density 0.0039398042 / cosh^2(0.0072 (lambda - 538)), up to the table's steps.
+  for (float l : {400.0f, 538.0f, 700.0f})
+    EXPECT_NEAR(wavelengthPdf(l, visible), 0.0039398042 / std::pow(std::cosh(0.0072 * (l - 538.0)), 2), 2e-5) << l;
+}
+
+TEST(Spectrum, EachWavelengthDensityIsWhatItsSamplesFollow) {
+  // Chi-square of 200,000 hero wavelengths (with the other three) over 94 bins of 5 nm against
+  // the reported pdf integrated over each bin.
+  for (WavelengthDensity density : {WavelengthDensity::RGBMatching, WavelengthDensity::Visible}) {
+    constexpr int kBins = 94;
+    const float binWidth = (kLambdaMax - kLambdaMin) / kBins;
+    std::vector<double> observed(kBins, 0.0), expected(kBins, 0.0);
+    PCG32 rng(7);
+    const int n = 50000;
+    for (int i = 0; i < n; ++i) {
+      Wavelengths wl = Wavelengths::sample(rng.nextFloat(), density);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        observed[std::clamp(int((wl[k] - kLambdaMin) / binWidth), 0, kBins - 1)] += 1.0;
+        EXPECT_NEAR(wl.pdf[k], wavelengthPdf(wl[k], density), 0.02f * wl.pdf[k])
+            << wl[k];  // a neighbouring segment at an end
+      }
+    }
+    for (int b = 0; b < kBins; ++b)
+      for (int j = 0; j < 200; ++j)
+        expected[b] += wavelengthPdf(kLambdaMin + (b + (j + 0.5f) / 200) * binWidth, density) * binWidth / 200 *
+                       (n * kSpectrumSamples);
+    columba::testing::ChiSquareResult r = columba::testing::chiSquareTest(observed, expected);
+    EXPECT_GT(r.pValue, 1e-3) << r.message;
+  }
+}
+
+TEST(Spectrum, RGBMatchingDensityFollowsTheColourMatchingFunctions) {
+  const WavelengthDensity rgb = WavelengthDensity::RGBMatching;
+  // Every wavelength can be drawn; blue, where luminance is low, is drawn more often than pbrt's
+  // visible density draws it, and the middle of the range at a similar rate.
+  for (float l = kLambdaMin; l <= kLambdaMax; l += 5.0f) EXPECT_GT(wavelengthPdf(l, rgb), 0.0f) << l;
+  EXPECT_GT(wavelengthPdf(445.0f, rgb), 1.5f * wavelengthPdf(445.0f, WavelengthDensity::Visible));
+  // Its shape: |r| + |g| + |b| of the linear-sRGB matching functions plus 1 % of the peak, here
+  // from the fitted CIE functions, normalised over the range.
+  auto shape = [](float l) {
+    Vec3 c = xyzToLinearRGB(cieXYZFit(l));
+    return std::abs(c.x) + std::abs(c.y) + std::abs(c.z);
+  };
+  double peak = 0.0, total = 0.0;
+  for (float l = kLambdaMin; l <= kLambdaMax; l += 0.5f) peak = std::max(peak, double(shape(l)));
+  for (float l = kLambdaMin; l < kLambdaMax; l += 0.5f) total += (shape(l + 0.25f) + 0.01 * peak) * 0.5;
+  // Compared over 30 nm windows: the table's density is constant over each of its 1024 pieces, which
+  // span up to 12 nm where the density is low.
+  for (float l : {410.0f, 440.0f, 520.0f, 600.0f, 680.0f}) {
+    double table = 0.0, expected = 0.0;
+    for (float x = l; x < l + 30.0f; x += 0.1f) {
+      table += wavelengthPdf(x + 0.05f, rgb) * 0.1;
+      expected += (shape(x + 0.05f) + 0.01 * peak) / total * 0.1;
+    }
+    EXPECT_NEAR(table, expected, 0.02 * expected) << l;
+  }
+}
+
+TEST(Spectrum, RGBEstimateIsUnbiasedUnderEitherDensity) {
+  // The mean of spectrumToRGB over stratified hero wavelengths is the colour integrated on the 1 nm
+  // grid, for a smooth reflectance under D65.
+  SpectralDistribution s = SpectralDistribution::fromRGB(Vec3(0.2f, 0.5f, 0.8f), false).timesD65();
+  Vec3 exact = rgbOf(s, false);
+  for (WavelengthDensity density : {WavelengthDensity::RGBMatching, WavelengthDensity::Visible}) {
+    Vec3 sum(0, 0, 0);
+    const int n = 40000;
+    for (int i = 0; i < n; ++i) {
+      Wavelengths wl = Wavelengths::sample((i + 0.5f) / n, density);
+      sum += spectrumToRGB(s.sample(wl), wl);
+    }
+    Vec3 mean = sum / float(n);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], exact[c], 3e-3f * exact[c] + 1e-4f) << c;
+  }
 }
 
 TEST(Spectrum, RGBUpsamplingRoundTripsUnderD65) {

