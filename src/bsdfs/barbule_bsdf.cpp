@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include "bsdfs/barbule_mirror_visibility.h"
 #include "bsdfs/barbule_normals.h"
 #include "core/gauss_legendre.h"
 #include "core/sampling.h"
@@ -34,15 +35,17 @@
 // r (<I_R> + <I_TRT>), estimated from omega_i alone; for scattering an offset h uniform on the lit
 // width, then R or TRT in proportion to their weights at h (s(h), the TRT share, is linear between
 // a few offsets, so its integral below has a closed form and pdf() reproduces everything exactly):
-//   R:   theta by inverse CDF at h's normal (a visible normal) and the mirror direction; its density
-//        is (1 - s(h_m)) p(phi) p(theta | phi) / cos(theta_m) / (4 omega_i . m), h_m the offset of
-//        the half vector's normal;
+//   R:   theta by inverse CDF at h's normal (a visible normal), restricted to the angles whose
+//        mirror direction no neighbour masks (MirrorVisibleAngles: a share V(h) of theta's
+//        density), and the mirror direction; its density is
+//        (1 - s(h_m)) p(phi) p(theta | phi) / V(h_m) / cos(theta_m) / (4 omega_i . m), h_m the
+//        offset of the half vector's normal. Where every angle at h is masked the sample is lost;
 //   TRT: a cosine-weighted direction about h's normal (theta_m = 0) flipped to its front; its
 //        density is (integral of s over the offsets lit from both / lit width) |cos theta_o| / pi;
 //   T:   -wi with weight t / P(T).
-// Both scattering densities carry the factor 1 - P(T). R and TRT samples whose point is not visible
-// from omega_o are rejected. The weight of a non-delta sample is eval / pdf with pdf the mixture
-// density of what is returned.
+// Both scattering densities carry the factor 1 - P(T). TRT samples whose point is not visible from
+// omega_o are rejected, as are R samples that rounding puts just outside the visible angles. The weight of a non-delta
+// sample is eval / pdf with pdf the mixture density of what is returned.
 
 namespace columba {
 
@@ -329,8 +332,11 @@ float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, cons
     if (cosHalf > 0.0f) {
       float normalPdf =
           visibleNormalPdf(point.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
+      // From the half vector's normal, also right after sampling at it: the share can change fast
+      // with the normal (where a cut is ill-conditioned), and pdf() must give what sample() gives.
+      float visible = MirrorVisibleAngles(point.geometry, out.mLocal, in.w).visibleFraction();
       float shareR = 1.0f - choice.trtShareAt(point.geometry.offsetOf(in.arc, out.mLocal));
-      density += shareR * normalPdf / (4.0f * cosHalf);
+      if (visible > 0.0f) density += shareR * normalPdf / visible / (4.0f * cosHalf);
     }
   }
   density += choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() * std::abs(out.w.z) * kInvPi;
@@ -417,13 +423,15 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   float uOffset = clampf((uComponent - choice.transmission) / (1.0f - choice.transmission), 0.0f, 1.0f);
   float h = in.arc.hMin + uOffset * in.arc.width();
   float shareR = 1.0f - choice.trtShareAt(h);
-  Vec2 localNormal;
+  const Vec2 localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
   if (u.x < shareR) {
-    VisibleNormal normal = visibleNormalAtOffset(geometry, in.arc, wi, h, u.y);
-    localNormal = normal.localNormal;
-    bs.wo = reflect(wi, normal.m);
+    // theta among the angles whose mirror direction a neighbour does not mask: the others could
+    // only be rejected below.
+    MirrorVisibleAngles angles(geometry, localNormal, wi);
+    if (!(angles.visibleFraction() > 0.0f)) return std::nullopt;
+    float theta = angles.sample(u.y);
+    bs.wo = reflect(wi, barbuleNormal(angles.worldNormal(), std::cos(theta), std::sin(theta)));
   } else {
-    localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
     Vec3 m = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);
     // What u.x has left within the TRT share drives the direction with u.y.
     Vec3 w = sampleCosineHemisphere(Vec2(clampf((u.x - shareR) / (1.0f - shareR), 0.0f, 1.0f), u.y));

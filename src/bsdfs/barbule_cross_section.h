@@ -56,6 +56,8 @@ class BarbuleCrossSection {
 
   float b() const { return b_; }
   float spacing() const { return H_; }
+  // Local offset of the neighbour at +H (the one at -H is at minus it).
+  Vec2 neighbourOffset() const { return neighbour_; }
 
   Vec2 toLocal(Vec2 w) const { return {w.x * cosMu_ + w.y * sinMu_, -w.x * sinMu_ + w.y * cosMu_}; }
   Vec2 toWorld(Vec2 l) const { return {l.x * cosMu_ - l.y * sinMu_, l.x * sinMu_ + l.y * cosMu_}; }

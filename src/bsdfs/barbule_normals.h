@@ -63,6 +63,10 @@ class LongitudinalDensity {
   // Inverse CDF in closed form: theta = delta + asin(...), delta = atan2(B, A).
   float sample(float u) const;
   float pdf(float theta) const;
+  // The density's mass below theta within the range, and on the whole range (the projected area of
+  // the normals at this phi seen from w, over D_theta).
+  float massBelow(float theta) const { return A_ * std::sin(theta) - B_ * std::cos(theta) - primitiveMin_; }
+  float mass() const { return mass_; }
   // The same density at the normal m with w . m = `projection`, for m within |theta| < thetaD:
   // there A cos(theta) + B sin(theta) is w . m, and the clipped range is exactly where it is > 0.
   float pdfFromProjection(float projection) const { return mass_ > 0.0f ? std::max(projection, 0.0f) / mass_ : 0.0f; }
