@@ -109,6 +109,10 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
       intervals_[intervalCount_++] = {lo, hi, 0.0f};
     }
   }
+  if (intervalCount_ == 1 && intervals_[0].lo == thetaMin && intervals_[0].hi == thetaMax) {
+    visibleMass_ = mass_;  // every angle: the usual case, without evaluating the primitive
+    return;
+  }
   for (int k = 0; k < intervalCount_; ++k) {
     intervals_[k].massBelow = visibleMass_;
     visibleMass_ +=
