@@ -122,12 +122,19 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
 }
 
 TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
+  // The weight is eval over the density the sample reports, and pdf() gives that density within
+  // 1e-4, except for R samples drawn where the share of visible longitudinal angles changes fast
+  // with the normal: recomputed at the half vector's normal, equal to the sampled one up to
+  // rounding, the share can differ. Here 70 of 232,728 samples differ by more than 1e-4, at most
+  // by 0.9 %; in renders a jump by orders of magnitude was seen 3 times in 2.7e8 samples (a cut
+  // where a(theta) peaks), which is why a sample reports the density it was drawn with.
   const BSDFContext ctx;
+  int checked = 0, otherShare = 0;
   for (const ParameterSet& set : parameterSets())
     for (BarbuleBSDF::Role role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(set.params, role);
       PCG32 rng(11);
-      int checked = 0;
+      int checkedHere = 0;
       for (const Vec3& wi : incidentDirections())
         for (int i = 0; i < 3000; ++i) {
           auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
@@ -136,13 +143,17 @@ TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
           ASSERT_GT(s->pdf, 0.0f);
           float pdf = bsdf.pdf(ctx, wi, s->wo, kWavelengths);
           Spectrum f = bsdf.eval(ctx, wi, s->wo, kWavelengths);
-          EXPECT_NEAR(s->pdf, pdf, 1e-4f * pdf);
+          if (std::abs(s->pdf - pdf) > 1e-4f * pdf) ++otherShare;
+          EXPECT_NEAR(s->pdf, pdf, 0.02f * pdf) << set.name;
           for (int k = 0; k < kSpectrumSamples; ++k)
-            ASSERT_NEAR(s->weight[k], f[k] / pdf, 1e-4f * (f[k] / pdf) + 1e-7f) << set.name << " lambda " << k;
-          ++checked;
+            ASSERT_NEAR(s->weight[k], f[k] / s->pdf, 1e-4f * (f[k] / s->pdf) + 1e-7f) << set.name << " lambda " << k;
+          ++checkedHere;
         }
-      EXPECT_GT(checked, 1000) << set.name;
+      EXPECT_GT(checkedHere, 1000) << set.name;
+      checked += checkedHere;
     }
+  std::printf("%d of %d samples report another density than pdf()\n", otherShare, checked);
+  EXPECT_LE(otherShare, checked / 2000);
 }
 
 namespace {

@@ -324,7 +324,7 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
 }
 
 float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                               const Outgoing& out) const {
+                               const Outgoing& out, float mirrorVisible) const {
   if (!in.scatters) return 0.0f;
   float density = 0.0f;
   if (out.reflects) {
@@ -332,9 +332,12 @@ float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, cons
     if (cosHalf > 0.0f) {
       float normalPdf =
           visibleNormalPdf(point.geometry, in.arc, in.w, in.plane.cosTheta, cosHalf, out.mPlane, out.mLocal);
-      // From the half vector's normal, also right after sampling at it: the share can change fast
-      // with the normal (where a cut is ill-conditioned), and pdf() must give what sample() gives.
-      float visible = MirrorVisibleAngles(point.geometry, out.mLocal, in.w).visibleFraction();
+      // An R sample reports the share it was drawn with. Recomputed at the half vector's normal
+      // (equal to the sampled one up to rounding) the share is the same except where a cut lies
+      // where a(theta) peaks: there it can jump from near 0 to 1 under a rounding change of the
+      // normal, and dividing by the recomputed share gave single samples 10^4 times their due.
+      float visible = mirrorVisible >= 0.0f ? mirrorVisible
+                                            : MirrorVisibleAngles(point.geometry, out.mLocal, in.w).visibleFraction();
       float shareR = 1.0f - choice.trtShareAt(point.geometry.offsetOf(in.arc, out.mLocal));
       if (visible > 0.0f) density += shareR * normalPdf / visible / (4.0f * cosHalf);
     }
@@ -364,11 +367,11 @@ Spectrum BarbuleBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& w
 }
 
 BSDFEvalPdf BarbuleBSDF::evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice,
-                                   const Vec3& wo, const LitArc& woArc) const {
+                                   const Vec3& wo, const LitArc& woArc, float mirrorVisible) const {
   Outgoing out = outgoing(point, fromWi, wo, woArc);
   // With omega_i on the camera side, value and density share the pair's geometry.
   Spectrum value = role_ == Role::CameraIncident ? evalForPair(point, fromWi, out) : evalAt(point, fromWi, wo, woArc);
-  return {value, samplingPdf(point, fromWi, choice, out)};
+  return {value, samplingPdf(point, fromWi, choice, out, mirrorVisible)};
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -424,11 +427,13 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   float h = in.arc.hMin + uOffset * in.arc.width();
   float shareR = 1.0f - choice.trtShareAt(h);
   const Vec2 localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
+  float mirrorVisible = -1.0f;  // the share of visible angles an R sample is drawn with
   if (u.x < shareR) {
     // theta among the angles whose mirror direction a neighbour does not mask: the others could
     // only be rejected below.
     MirrorVisibleAngles angles(geometry, localNormal, wi);
-    if (!(angles.visibleFraction() > 0.0f)) return std::nullopt;
+    mirrorVisible = angles.visibleFraction();
+    if (!(mirrorVisible > 0.0f)) return std::nullopt;
     float theta = angles.sample(u.y);
     bs.wo = reflect(wi, barbuleNormal(angles.worldNormal(), std::cos(theta), std::sin(theta)));
   } else {
@@ -441,7 +446,7 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   LitArc woArc = geometry.litArc(inPlane(bs.wo).dir);
   if (!geometry.isLit(woArc, localNormal)) return std::nullopt;
 
-  BSDFEvalPdf f = evalPdfAt(point, in, choice, bs.wo, woArc);
+  BSDFEvalPdf f = evalPdfAt(point, in, choice, bs.wo, woArc, mirrorVisible);
   bs.pdf = f.pdf;
   if (!(bs.pdf > 0.0f)) return std::nullopt;
   bs.weight = f.value / bs.pdf;

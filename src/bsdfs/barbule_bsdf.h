@@ -104,8 +104,10 @@ class BarbuleBSDF : public BSDF {
   // evalPdfAt take the interface's (wi, wo) and apply the role; evalLobes and *ForPair take the
   // model's (omega_i, omega_o).
   Spectrum evalAt(const PointModel& point, const Incident& fromWi, const Vec3& wo, const LitArc& woArc) const;
+  // `mirrorVisible`: for an R sample just drawn, the share of visible longitudinal angles it was
+  // drawn with (MirrorVisibleAngles::visibleFraction()); negative otherwise.
   BSDFEvalPdf evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
-                        const LitArc& woArc) const;
+                        const LitArc& woArc, float mirrorVisible = -1.0f) const;
   Spectrum evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
   Lobes evalLobesForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
   // The lobes of a pair.
@@ -118,7 +120,8 @@ class BarbuleBSDF : public BSDF {
 
   LobeChoice lobeChoice(const PointModel& point, const Incident& in) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out) const;
+  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
+                    float mirrorVisible = -1.0f) const;
   // sample, once the point's model, omega_i's quantities and the lobe choice are known.
   std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
                                      float uComponent, Vec2 u) const;
