@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 #include "bsdfs/barbule_mirror_visibility.h"
 #include "core/rng.h"
@@ -54,6 +55,21 @@ BruteForce bruteForce(const BarbuleCrossSection& geometry, Vec2 localNormal, con
   return out;
 }
 
+// A random omega_i above the vane and a point of its lit arc, uniform in offset; none where the
+// arc is not lit from omega_i.
+struct LitPoint {
+  Vec3 wi;
+  Vec2 localNormal;
+};
+std::optional<LitPoint> randomLitPoint(const BarbuleCrossSection& geometry, PCG32& rng) {
+  float cosTheta = 0.05f + 0.95f * rng.nextFloat(), phi = kTwoPi * rng.nextFloat();
+  float sinTheta = std::sqrt(1.0f - cosTheta * cosTheta);
+  Vec3 wi(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+  LitArc arc = geometry.litArc(inPlane(wi).dir);
+  if (!(arc.width() > 0.0f)) return std::nullopt;
+  return LitPoint{wi, geometry.normalAt(geometry.pointAt(arc, arc.hMin + rng.nextFloat() * arc.width()))};
+}
+
 }  // namespace
 
 TEST(MirrorVisibleAngles, VisibleShareMatchesTestingEveryAngle) {
@@ -64,12 +80,10 @@ TEST(MirrorVisibleAngles, VisibleShareMatchesTestingEveryAngle) {
   for (const Case& c : kCases) {
     BarbuleCrossSection geometry(c.b, c.phi0, c.phi1, c.mu, c.H);
     for (int k = 0; k < 400; ++k) {
-      float cosTheta = 0.05f + 0.95f * rng.nextFloat(), phi = kTwoPi * rng.nextFloat();
-      float sinTheta = std::sqrt(1.0f - cosTheta * cosTheta);
-      Vec3 wi(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
-      LitArc arc = geometry.litArc(inPlane(wi).dir);
-      if (!(arc.width() > 0.0f)) continue;
-      Vec2 localNormal = geometry.normalAt(geometry.pointAt(arc, arc.hMin + rng.nextFloat() * arc.width()));
+      std::optional<LitPoint> point = randomLitPoint(geometry, rng);
+      if (!point) continue;
+      const Vec3& wi = point->wi;
+      const Vec2& localNormal = point->localNormal;
       MirrorVisibleAngles angles(geometry, localNormal, wi);
       BruteForce reference = bruteForce(geometry, localNormal, wi, 4000);
       EXPECT_NEAR(angles.visibleFraction(), reference.fraction, 2e-3)
@@ -101,12 +115,10 @@ TEST(MirrorVisibleAngles, SamplesAreLitAndFollowTheRestrictedDensity) {
     BarbuleCrossSection geometry(c.b, c.phi0, c.phi1, c.mu, c.H);
     int checkedHere = 0;
     for (int k = 0; k < 2000 && checkedHere < 40; ++k) {
-      float cosTheta = 0.05f + 0.95f * rng.nextFloat(), phi = kTwoPi * rng.nextFloat();
-      float sinTheta = std::sqrt(1.0f - cosTheta * cosTheta);
-      Vec3 wi(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
-      LitArc arc = geometry.litArc(inPlane(wi).dir);
-      if (!(arc.width() > 0.0f)) continue;
-      Vec2 localNormal = geometry.normalAt(geometry.pointAt(arc, arc.hMin + rng.nextFloat() * arc.width()));
+      std::optional<LitPoint> point = randomLitPoint(geometry, rng);
+      if (!point) continue;
+      const Vec3& wi = point->wi;
+      const Vec2& localNormal = point->localNormal;
       MirrorVisibleAngles angles(geometry, localNormal, wi);
       if (!(angles.visibleFraction() > 0.1f && angles.visibleFraction() < 0.99f)) continue;
       ++checked;
