@@ -185,6 +185,26 @@ TEST(CrossSection, PointsNormalsAndOffsetsAreConsistent) {
   }
 }
 
+TEST(CrossSection, NormalsAtFourOffsetsAreTheOnesOfOneAtATime) {
+  // The lanes do the same arithmetic as pointAt, normalAt and toWorld: equal to the last bit.
+  for (const CrossSectionCase& c : kCases) {
+    BarbuleCrossSection geometry = makeGeometry(c);
+    for (int g = 0; g < 36; ++g) {
+      LitArc arc = geometry.litArc(unit(-M_PI + (g + 0.5) * (2.0 * M_PI / 36)));
+      for (int i = 0; i < 12; i += 4) {
+        FloatLanes h;
+        for (int j = 0; j < kLaneCount; ++j) h[j] = -arc.halfWidth + 2.0f * arc.halfWidth * float(i + j) / 11.0f;
+        Vec2Lanes lanes = geometry.worldNormalsAtOffsets(arc, h);
+        for (int j = 0; j < kLaneCount; ++j) {
+          Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(arc, h[j])));
+          EXPECT_EQ(lanes.x[j], n.x);
+          EXPECT_EQ(lanes.y[j], n.y);
+        }
+      }
+    }
+  }
+}
+
 TEST(CrossSection, ProjectedCurvatureIntegratesToTheLitWidth) {
   // dh = rho(phi) cos(gamma - phi - mu) dphi: the identity behind D_phi = rho / H.
   const int steps = 200000;

@@ -307,9 +307,17 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
   choice.hMin = in.arc.hMin;
   choice.nodeSpacing = in.arc.width() / float(choice.nodes - 1);
   float meanWeight = 0.0f;  // of R + TRT over the lit offsets: the trapezoid rule, as s(h) is linear
+  // The nodes' normals and incidence cosines, four at a time.
+  std::array<float, kMaxLobeShareNodes> cosines{};
+  for (int first = 0; first < choice.nodes; first += kLaneCount) {
+    FloatLanes h;
+    for (int j = 0; j < kLaneCount; ++j)
+      h[j] = choice.hMin + float(std::min(first + j, choice.nodes - 1)) * choice.nodeSpacing;
+    FloatLanes c = inPlaneProjection(in.w, geometry.worldNormalsAtOffsets(in.arc, h));
+    for (int j = 0; j < kLaneCount && first + j < choice.nodes; ++j) cosines[first + j] = c[j];
+  }
   for (int k = 0; k < choice.nodes; ++k) {
-    Vec2 n = geometry.toWorld(geometry.normalAt(geometry.pointAt(in.arc, choice.hMin + float(k) * choice.nodeSpacing)));
-    FreeStandingFilm::Reflectance film = point.film.reflectance(inPlaneProjection(in.w, n));
+    FreeStandingFilm::Reflectance film = point.film.reflectance(cosines[k]);
     float weightR = (0.5f * (film.s + film.p)).average();
     float weightTRT =
         (point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p))).average();

@@ -75,6 +75,9 @@ class BarbuleCrossSection {
   // once the ellipse is mapped to the unit circle. The point moves smoothly with psi where it
   // moves like sqrt(h) with h, at the silhouette.
   Vec2Lanes worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const;
+  // World normals toWorld(normalAt(pointAt(arc, h))) at four offsets at once, the same arithmetic
+  // in lanes.
+  Vec2Lanes worldNormalsAtOffsets(const LitArc& arc, FloatLanes h) const;
   // Unit outward normal (local) of the central ellipse at a point on it.
   Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
   // Point (local) of the central ellipse whose outward normal is the local unit vector n.
