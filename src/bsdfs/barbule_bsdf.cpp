@@ -44,8 +44,9 @@
 //        density is (integral of s over the offsets lit from both / lit width) |cos theta_o| / pi;
 //   T:   -wi with weight t / P(T).
 // Both scattering densities carry the factor 1 - P(T). TRT samples whose point is not visible from
-// omega_o are rejected, as are R samples that rounding puts just outside the visible angles. The weight of a non-delta
-// sample is eval / pdf with pdf the mixture density of what is returned.
+// omega_o are rejected, as are R samples that rounding puts just outside the visible angles. The
+// weight of a non-delta sample is eval / pdf with pdf the mixture density of what is returned (an
+// R sample's with the share V it was drawn with).
 
 namespace columba {
 

@@ -121,25 +121,22 @@ Vec2 BarbuleCrossSection::pointAt(const LitArc& arc, float h) const {
 
 Vec2Lanes BarbuleCrossSection::worldNormalsAtOffsets(const LitArc& arc, FloatLanes h) const {
   FloatLanes underRoot = arc.a - h * h * invBSqr_;
-  FloatLanes root = sqrtLanes(underRoot < 0.0f ? FloatLanes{} : underRoot);
-  FloatLanes s = (root - arc.q * h) * arc.invA;
-  FloatLanes px = arc.across.x * h + arc.toward.x * s, py = arc.across.y * h + arc.toward.y * s;
-  FloatLanes nx = px * invBSqr_, ny = py;
-  FloatLanes inv = 1.0f / sqrtLanes(nx * nx + ny * ny);
-  nx = nx * inv;
-  ny = ny * inv;
-  return {nx * cosMu_ - ny * sinMu_, nx * sinMu_ + ny * cosMu_};
+  return worldNormalsAt(arc, h, sqrtLanes(underRoot < 0.0f ? FloatLanes{} : underRoot));
 }
 
-Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const {
-  // With h = halfWidth sin(psi) and halfWidth^2 = b^2 a, sqrt(a - h^2 / b^2) = (halfWidth / b) cos(psi).
-  FloatLanes h = arc.halfWidth * sinPsi;
-  FloatLanes s = (arc.halfWidth / b_ * cosPsi - arc.q * h) * arc.invA;
+Vec2Lanes BarbuleCrossSection::worldNormalsAt(const LitArc& arc, FloatLanes h, FloatLanes root) const {
+  // pointAt's front intersection s and normalAt's normalisation, then toWorld.
+  FloatLanes s = (root - arc.q * h) * arc.invA;
   FloatLanes nx = (arc.across.x * h + arc.toward.x * s) * invBSqr_, ny = arc.across.y * h + arc.toward.y * s;
   FloatLanes inv = 1.0f / sqrtLanes(nx * nx + ny * ny);
   nx *= inv;
   ny *= inv;
   return {nx * cosMu_ - ny * sinMu_, nx * sinMu_ + ny * cosMu_};
+}
+
+Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLanes sinPsi, FloatLanes cosPsi) const {
+  // With h = halfWidth sin(psi) and halfWidth^2 = b^2 a, sqrt(a - h^2 / b^2) = (halfWidth / b) cos(psi).
+  return worldNormalsAt(arc, arc.halfWidth * sinPsi, arc.halfWidth / b_ * cosPsi);
 }
 
 bool BarbuleCrossSection::isLit(const LitArc& arc, Vec2 n) const {

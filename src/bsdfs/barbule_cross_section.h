@@ -98,6 +98,8 @@ class BarbuleCrossSection {
   std::optional<float> intersect(Vec2 origin, Vec2 dir) const;
 
  private:
+  // World normals at offsets h whose sqrt(a - h^2 / b^2) (pointAt's square root) is `root`.
+  Vec2Lanes worldNormalsAt(const LitArc& arc, FloatLanes h, FloatLanes root) const;
   static Vec2 normalize2(Vec2 v) {
     float inv = 1.0f / std::sqrt(v.x * v.x + v.y * v.y);
     return {v.x * inv, v.y * inv};

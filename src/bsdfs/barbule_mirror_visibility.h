@@ -31,9 +31,8 @@ class MirrorVisibleAngles {
   float visibleFraction() const { return visibleMass_ > 0.0f && mass_ > 0.0f ? visibleMass_ / mass_ : 0.0f; }
   // theta drawn from that density restricted to the visible angles (visibleFraction() > 0).
   float sample(float u) const;
-  // The world in-plane normal and longitudinal density this was built with.
+  // The world in-plane normal this was built with.
   Vec2 worldNormal() const { return worldNormal_; }
-  const LongitudinalDensity& longitudinal() const { return longitudinal_; }
 
  private:
   // Whether the point is lit along the mirror direction with this value of a.

@@ -57,16 +57,11 @@ float LongitudinalDensity::pdf(float theta) const {
 }
 
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u) {
-  return visibleNormalAtOffset(geometry, arc, w, arc.hMin + u.x * arc.width(), u.y);
-}
-
-VisibleNormal visibleNormalAtOffset(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float h,
-                                    float uTheta) {
   VisibleNormal out;
-  out.localNormal = geometry.normalAt(geometry.pointAt(arc, h));
+  out.localNormal = geometry.normalAt(geometry.pointAt(arc, arc.hMin + u.x * arc.width()));
   Vec2 n = geometry.toWorld(out.localNormal);
   LongitudinalDensity longitudinal(inPlaneProjection(w, n), w.y);
-  float theta = longitudinal.sample(uTheta);
+  float theta = longitudinal.sample(u.y);
   out.m = barbuleNormal(n, std::cos(theta), std::sin(theta));
   return out;
 }

@@ -120,9 +120,6 @@ struct VisibleNormal {
 // A visible normal from w (w.z > 0; `arc` = geometry.litArc(inPlane(w).dir), not empty): the
 // offset from u.x, theta from u.y.
 VisibleNormal sampleVisibleNormal(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, Vec2 u);
-// The same with the offset h (in [arc.hMin, arc.hMax]) already drawn: theta from uTheta.
-VisibleNormal visibleNormalAtOffset(const BarbuleCrossSection& geometry, const LitArc& arc, const Vec3& w, float h,
-                                    float uTheta);
 // Solid-angle density of sampleVisibleNormal producing m, for an m it can produce: lit from w
 // (w . m > 0, `arc` not empty, m's in-plane normal on the lit part of `arc`) with
 // |theta_m| < thetaD. Takes what the caller has computed for those checks: inPlane(w).cosTheta,
