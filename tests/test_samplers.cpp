@@ -102,6 +102,24 @@ TEST(SamplerFactories, RoundSampleCountsAsMitsubaDoes) {
     EXPECT_EQ(std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 16)))->sampleCount(), 16) << type;
 }
 
+// A render of another sample count than the scene's gets the sampler the scene would have made
+// for that count: the same values, rounded the same way, not the first samples of the scene's
+// pattern (which are not stratified among themselves).
+TEST(SamplerFactories, ASampleCountOverrideIsTheSamplerMadeForThatCount) {
+  for (const std::string& type : kAllSamplers) {
+    for (int count : {5, 16}) {
+      auto scenes = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, 64)));
+      auto made = std::dynamic_pointer_cast<Sampler>(build(samplerProperties(type, count)));
+      std::unique_ptr<Sampler> overridden = scenes->withSampleCount(count);
+      EXPECT_EQ(overridden->sampleCount(), made->sampleCount()) << type << " " << count;
+      std::unique_ptr<Sampler> reference = made->clone();
+      for (int index = 0; index < count; ++index)
+        EXPECT_EQ(drawSample(*overridden, 3, 5, index, 11, 6), drawSample(*reference, 3, 5, index, 11, 6))
+            << type << " " << count << " sample " << index;
+    }
+  }
+}
+
 TEST(SamplerFactories, ReadTheirParametersAndRejectBadCounts) {
   for (const std::string& type : kAllSamplers) {
     Properties props = samplerProperties(type, 16);

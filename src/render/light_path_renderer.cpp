@@ -82,7 +82,7 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
     const size_t count = size_t(std::min<uint64_t>(buffers, blocks - first));
     std::vector<char> finished(count, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const tbb::blocked_range<size_t>& range) {
-      std::unique_ptr<Sampler> sampler = sensor.sampler().clone();
+      std::unique_ptr<Sampler> sampler = sensor.sampler().withSampleCount(spp);
       for (size_t b = range.begin(); b != range.end(); ++b) {
         SplatBuffer& buffer = blockBuffers[b];
         buffer.clear();

@@ -169,6 +169,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     image.spectral.values.assign(size_t(width) * size_t(height) * size_t(bins.count), 0.0f);
   }
   const auto threadLimit = limitThreads(settings.threads);
+  // The scene's sampler with a pattern of this render's sample count.
+  const std::unique_ptr<Sampler> pattern = sensor.sampler().withSampleCount(spp);
   const PixelSampler pixels{scene,
                             sensor,
                             scene.integrator(),
@@ -192,7 +194,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   if (!settings.adaptive) {
     // Every pixel gets the samples [sampleBegin, sampleEnd).
     const int count = sampleEnd - sampleBegin;
-    forEachTile(window, settings, sensor.sampler(), size_t(bins.count), 0, tileCount, cancelled,
+    forEachTile(window, settings, *pattern, size_t(bins.count), 0, tileCount, cancelled,
                 [&](Sampler& sampler, std::vector<double>& binSums, int x, int y, const auto& stop) {
                   PixelSums sums;
                   std::fill(binSums.begin(), binSums.end(), 0.0);
@@ -224,7 +226,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
       nonFinite += pixelNonFinite;
       return finished;
     };
-    forEachTile(window, settings, sensor.sampler(), 0, 0, 2 * tileCount, cancelled,
+    forEachTile(window, settings, *pattern, 0, 0, 2 * tileCount, cancelled,
                 [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                   size_t i = windowIndex(x, y);
                   pilotPixels[i].seen = pixels.sees(x, y);
@@ -237,7 +239,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         pilotPixels[i].sumSquares = sums[i].luminanceSquares;
       }
       plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
-      forEachTile(window, settings, sensor.sampler(), 0, tileCount, 2 * tileCount, cancelled,
+      forEachTile(window, settings, *pattern, 0, tileCount, 2 * tileCount, cancelled,
                   [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                     size_t i = windowIndex(x, y);
                     return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);

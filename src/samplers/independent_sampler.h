@@ -12,6 +12,9 @@ class IndependentSampler : public Sampler {
  public:
   IndependentSampler(int sampleCount, uint64_t seed) : Sampler(sampleCount), seed_(seed) {}
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
+  std::unique_ptr<Sampler> withSampleCount(int count) const override {
+    return std::make_unique<IndependentSampler>(count, seed_);
+  }
   void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) override;
   float get1D() override;
   Vec2 get2D() override;

@@ -90,11 +90,15 @@ Vec2 LowDiscrepancySampler::get2D() {
   return point2D(state_.index, uint32_t(sampleCount_), hash);
 }
 
+int LowDiscrepancySampler::patternSize(int count) {
+  int size = 1;
+  while (size < count) size *= 2;
+  return size;
+}
+
 std::shared_ptr<Object> makeLowDiscrepancySampler(const Properties& props) {
   SamplerParameters p = readSamplerParameters(props);
-  int sampleCount = 1;
-  while (sampleCount < p.sampleCount) sampleCount *= 2;
-  return std::make_shared<LowDiscrepancySampler>(sampleCount, p.seed);
+  return std::make_shared<LowDiscrepancySampler>(LowDiscrepancySampler::patternSize(p.sampleCount), p.seed);
 }
 
 }  // namespace columba

@@ -24,6 +24,11 @@ class LowDiscrepancySampler : public Sampler {
   // sampleCount must be a power of two.
   LowDiscrepancySampler(int sampleCount, uint64_t seed) : Sampler(sampleCount), seed_(seed) {}
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<LowDiscrepancySampler>(*this); }
+  std::unique_ptr<Sampler> withSampleCount(int count) const override {
+    return std::make_unique<LowDiscrepancySampler>(patternSize(count), seed_);
+  }
+  // The power of two at or above `count`.
+  static int patternSize(int count);
   void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) override;
   float get1D() override;
   Vec2 get2D() override;

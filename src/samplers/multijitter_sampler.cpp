@@ -31,12 +31,22 @@ Vec2 MultijitterSampler::get2D() {
   return {clampToUnitInterval((column + (subColumn + dx) / n) / m), clampToUnitInterval((row + (subRow + dy) / m) / n)};
 }
 
+namespace {
+// A near-square grid of at least `count` cells.
+std::unique_ptr<MultijitterSampler> multijitterFor(int count, bool jitter, uint64_t seed) {
+  int rows = std::max(1, int(std::sqrt(double(count))));
+  int columns = (count + rows - 1) / rows;
+  return std::make_unique<MultijitterSampler>(columns, rows, jitter, seed);
+}
+}  // namespace
+
+std::unique_ptr<Sampler> MultijitterSampler::withSampleCount(int count) const {
+  return multijitterFor(count, jitter_, seed_);
+}
+
 std::shared_ptr<Object> makeMultijitterSampler(const Properties& props) {
   SamplerParameters p = readSamplerParameters(props);
-  bool jitter = props.getBool("jitter", true);
-  int rows = std::max(1, int(std::sqrt(double(p.sampleCount))));
-  int columns = (p.sampleCount + rows - 1) / rows;
-  return std::make_shared<MultijitterSampler>(columns, rows, jitter, p.seed);
+  return multijitterFor(p.sampleCount, props.getBool("jitter", true), p.seed);
 }
 
 }  // namespace columba

@@ -17,6 +17,7 @@ class MultijitterSampler : public Sampler {
   MultijitterSampler(int columns, int rows, bool jitter, uint64_t seed)
       : Sampler(columns * rows), columns_(columns), rows_(rows), jitter_(jitter), seed_(seed) {}
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<MultijitterSampler>(*this); }
+  std::unique_ptr<Sampler> withSampleCount(int count) const override;
   void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) override;
   float get1D() override;
   Vec2 get2D() override;

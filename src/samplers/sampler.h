@@ -13,6 +13,10 @@ class Sampler : public Object {
   explicit Sampler(int sampleCount) : sampleCount_(sampleCount) {}
   int sampleCount() const { return sampleCount_; }
   virtual std::unique_ptr<Sampler> clone() const = 0;
+  // The same sampler with a pattern for `count` samples per pixel, rounded as its plug-in rounds
+  // sample_count (Mitsuba's set_sample_count): a render of `count` samples stratifies them
+  // together, where the first `count` of a larger pattern would be a random subset of it.
+  virtual std::unique_ptr<Sampler> withSampleCount(int count) const = 0;
   virtual void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) = 0;
   // The next dimensions of the current sample, in [0, 1).
   virtual float get1D() = 0;

@@ -23,12 +23,16 @@ Vec2 StratifiedSampler::get2D() {
   return {clampToUnitInterval((stratum % res + dx) / res), clampToUnitInterval((stratum / res + dy) / res)};
 }
 
+int StratifiedSampler::resolutionFor(int count) {
+  int resolution = 1;
+  while (resolution * resolution < count) ++resolution;
+  return resolution;
+}
+
 std::shared_ptr<Object> makeStratifiedSampler(const Properties& props) {
   SamplerParameters p = readSamplerParameters(props);
   bool jitter = props.getBool("jitter", true);
-  int resolution = 1;
-  while (resolution * resolution < p.sampleCount) ++resolution;
-  return std::make_shared<StratifiedSampler>(resolution, jitter, p.seed);
+  return std::make_shared<StratifiedSampler>(StratifiedSampler::resolutionFor(p.sampleCount), jitter, p.seed);
 }
 
 }  // namespace columba

@@ -17,6 +17,11 @@ class StratifiedSampler : public Sampler {
   StratifiedSampler(int resolution, bool jitter, uint64_t seed)
       : Sampler(resolution * resolution), resolution_(resolution), jitter_(jitter), seed_(seed) {}
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<StratifiedSampler>(*this); }
+  std::unique_ptr<Sampler> withSampleCount(int count) const override {
+    return std::make_unique<StratifiedSampler>(resolutionFor(count), jitter_, seed_);
+  }
+  // The grid's side: the smallest square of at least `count` samples.
+  static int resolutionFor(int count);
   void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) override;
   float get1D() override;
   Vec2 get2D() override;
