@@ -121,6 +121,56 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
   }
 }
 
+// With BSDFContext::passThroughByCaller (the direct integrator carries T itself) every sample
+// scatters, pdf() is the scattering density given that (the usual one times the same factor for
+// every omega_o of one omega_i), sampled directions follow it, and the weight is eval over it.
+TEST(BarbuleBSDF, ACallerCarryingPassThroughGetsScatteringSamplesFollowingTheirPdf) {
+  const BSDFContext usual;
+  BSDFContext byCaller;
+  byCaller.passThroughByCaller = true;
+  const std::vector<Vec3> incident = incidentDirections();
+  const int chiSquareSets = 2;
+  const double threshold = sidak(0.01, chiSquareSets * int(incident.size()));
+  int set = 0;
+  for (const ParameterSet& parameters : parameterSets()) {
+    BarbuleBSDF bsdf(parameters.params);
+    for (const Vec3& wi : incident) {
+      PCG32 rng(5);
+      float ratio = -1.0f;
+      int scattered = 0;
+      for (int i = 0; i < 2000; ++i) {
+        auto s = bsdf.sample(byCaller, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (!s) continue;
+        ASSERT_FALSE(s->passThrough) << parameters.name;
+        ++scattered;
+        float pdf = bsdf.pdf(byCaller, wi, s->wo, kWavelengths), pdfUsual = bsdf.pdf(usual, wi, s->wo, kWavelengths);
+        EXPECT_NEAR(s->pdf, pdf, 0.02f * pdf) << parameters.name;
+        Spectrum f = bsdf.eval(byCaller, wi, s->wo, kWavelengths);
+        for (int k = 0; k < kSpectrumSamples; ++k)
+          ASSERT_NEAR(s->weight[k], f[k] / s->pdf, 1e-4f * (f[k] / s->pdf) + 1e-7f) << parameters.name;
+        ASSERT_GE(pdf, pdfUsual) << parameters.name;
+        if (ratio < 0.0f) ratio = pdf / pdfUsual;
+        EXPECT_NEAR(pdf / pdfUsual, ratio, 1e-4f * ratio) << parameters.name;
+      }
+      EXPECT_GT(scattered, 500) << parameters.name << " wi " << wi.x << " " << wi.y << " " << wi.z;
+      if (set >= chiSquareSets) continue;
+      ChiSquareResult result = chiSquareDirectionTest(
+          [&](PCG32& r) -> std::optional<Vec3> {
+            float uComponent = r.nextFloat();
+            Vec2 u(r.nextFloat(), r.nextFloat());
+            auto s = bsdf.sample(byCaller, wi, kWavelengths, uComponent, u);
+            if (!s) return std::nullopt;
+            return axisAsPole(s->wo);
+          },
+          [&](const Vec3& w) { return double(bsdf.pdf(byCaller, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48,
+          48, 10);
+      EXPECT_GT(result.pValue, threshold)
+          << parameters.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": " << result.message;
+    }
+    ++set;
+  }
+}
+
 TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
   // The weight is eval over the density the sample reports, and pdf() gives that density within
   // 1e-4, except for R samples drawn where the share of visible longitudinal angles changes fast

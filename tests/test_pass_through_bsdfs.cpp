@@ -44,6 +44,21 @@ TEST(MaskBSDF, ScalesTheNestedBSDFByTheOpacityAndPassesTheRest) {
     ChiSquareResult chi = chiSquareBSDF(mask, wi);
     EXPECT_GT(chi.pValue, sidakThreshold(0.01, 2)) << chi.message;
   }
+  // A caller that carries the pass-through itself gets the nested BSDF's samples, with its
+  // density and the opacity in the weight.
+  BSDFContext byCaller;
+  byCaller.passThroughByCaller = true;
+  Vec3 wi = directionAt(30.0f, 10.0f);
+  for (float uComponent : {0.05f, 0.5f, 0.95f}) {
+    auto s = mask.sample(byCaller, wi, wl, uComponent, Vec2(0.3f, 0.6f));
+    auto nested = diffuse->sample(byCaller, wi, wl, uComponent, Vec2(0.3f, 0.6f));
+    ASSERT_TRUE(s && nested);
+    EXPECT_FALSE(s->passThrough);
+    EXPECT_EQ(s->wo, nested->wo);
+    EXPECT_NEAR(s->pdf, nested->pdf, 1e-7f);
+    EXPECT_NEAR(mask.pdf(byCaller, wi, s->wo, wl), nested->pdf, 1e-6f);
+    EXPECT_NEAR(s->weight[0], 0.3f * nested->weight[0], 1e-6f);
+  }
   // A mask of a BSDF that passes light itself lets that part through too.
   MaskBSDF maskOfNull(std::make_shared<NullBSDF>(), 0.4f);
   EXPECT_NEAR(maskOfNull.passThrough(kContext, directionAt(10.0f), wl)[0], 1.0f, 1e-7f);

@@ -32,9 +32,10 @@
 // albedo is at most r max(I_TRT).
 //
 // Sampling, as the paper's Algorithm 1: T against scattering with probabilities proportional to t and
-// r (<I_R> + <I_TRT>), estimated from omega_i alone; for scattering an offset h uniform on the lit
-// width, then R or TRT in proportion to their weights at h (s(h), the TRT share, is linear between
-// a few offsets, so its integral below has a closed form and pdf() reproduces everything exactly):
+// r (<I_R> + <I_TRT>), estimated from omega_i alone (scattering always when the caller carries T
+// itself, BSDFContext::passThroughByCaller, as the direct integrator does); for scattering an offset h uniform on the
+// lit width, then R or TRT in proportion to their weights at h (s(h), the TRT share, is linear between a few offsets,
+// so its integral below has a closed form and pdf() reproduces everything exactly):
 //   R:   theta by inverse CDF at h's normal (a visible normal), restricted to the angles whose
 //        mirror direction no neighbour masks (MirrorVisibleAngles: a share V(h) of theta's
 //        density), and the mirror direction; its density is
@@ -106,8 +107,9 @@ float BarbuleBSDF::transmission(const BarbuleCrossSection& geometry, const Incid
   return in.scatters ? 1.0f - in.coverage : gapTransmission(geometry, in.w);
 }
 
-// The lobe choice: the probability of T, decided from omega_i alone, and the TRT share s(h) of the
-// scattering samples at offset h, linear between `nodes` offsets spread evenly over the lit arc.
+// The lobe choice: the probability of T, decided from omega_i alone (0 when the caller carries
+// pass-through itself), and the TRT share s(h) of the scattering samples at offset h, linear
+// between `nodes` offsets spread evenly over the lit arc.
 struct BarbuleBSDF::LobeChoice {
   float transmission = 1.0f;
   float hMin = 0.0f, nodeSpacing = 0.0f;
@@ -298,8 +300,10 @@ BarbuleBSDF::Lobes BarbuleBSDF::evalLobesForPair(const PointModel& point, const 
   return {reflection(point, in, out), trt(point, in, out)};
 }
 
-BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const Incident& in) const {
+BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const Incident& in,
+                                                bool passThroughByCaller) const {
   LobeChoice choice;
+  if (passThroughByCaller) choice.transmission = 0.0f;
   if (!in.scatters) return choice;
   const BarbuleCrossSection& geometry = point.geometry;
   // The lobes' weights at each node's normal (theta_m = 0), averaged over the wavelengths: I_R, and
@@ -327,6 +331,7 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
     bool end = k == 0 || k == choice.nodes - 1;
     meanWeight += (end ? 0.5f : 1.0f) * total / float(choice.nodes - 1);
   }
+  if (passThroughByCaller) return choice;
   float energyScatter = in.coverage * std::max(meanWeight, kMinLobeShare), energyT = 1.0f - in.coverage;
   choice.transmission = energyT / (energyT + energyScatter);
   return choice;
@@ -388,14 +393,14 @@ float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, c
   Incident in = incident(point, wi);
   if (!in.scatters) return 0.0f;
   Outgoing out = outgoing(point, in, wo, point.geometry.litArc(inPlane(wo).dir));
-  return samplingPdf(point, in, lobeChoice(point, in), out);
+  return samplingPdf(point, in, lobeChoice(point, in, ctx.passThroughByCaller), out);
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                               float uComponent, Vec2 u) const {
   PointModel point(*this, ctx, wl);
   Incident in = incident(point, wi);
-  return sampleAt(point, in, lobeChoice(point, in), uComponent, u);
+  return sampleAt(point, in, lobeChoice(point, in, ctx.passThroughByCaller), uComponent, u);
 }
 
 BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
@@ -403,7 +408,7 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
   PointModel point(*this, ctx, wl);
   Incident in = incident(point, wi);
   bool needsChoice = request.sample || (request.woLight && request.lightPdf);
-  LobeChoice choice = needsChoice ? lobeChoice(point, in) : LobeChoice{};
+  LobeChoice choice = needsChoice ? lobeChoice(point, in, ctx.passThroughByCaller) : LobeChoice{};
   BSDFVertexQueries q;
   if (request.woLight) {
     const Vec3& wo = *request.woLight;
@@ -430,6 +435,7 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
     bs.delta = bs.passThrough = true;
     return bs;
   }
+  if (!in.scatters) return std::nullopt;  // only T was left, and the caller carries it
 
   // The scattering point: an offset uniform on the lit width, from what uComponent has left.
   float uOffset = clampf((uComponent - choice.transmission) / (1.0f - choice.transmission), 0.0f, 1.0f);

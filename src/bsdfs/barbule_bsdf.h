@@ -118,7 +118,7 @@ class BarbuleBSDF : public BSDF {
   Spectrum trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut, float inY,
                                float outY) const;
 
-  LobeChoice lobeChoice(const PointModel& point, const Incident& in) const;
+  LobeChoice lobeChoice(const PointModel& point, const Incident& in, bool passThroughByCaller) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
                     float mirrorVisible = -1.0f) const;

@@ -22,6 +22,12 @@ struct BSDFContext {
   const SurfaceAttributes* attributes = nullptr;
   TexturePoint point;
   Vec3 dpdu, dpdv;
+  // The caller carries light straight through the surface itself (it continues the ray with
+  // passThrough()'s weight), so sample() draws from the scattering components only and pdf() is
+  // their density given that, as Mitsuba's context without the null component asks. A BSDF may
+  // ignore it: then sample() and pdf() keep the pass-through among their choices and the caller
+  // drops pass-through samples, which costs samples but no correctness.
+  bool passThroughByCaller = false;
 
   std::optional<float> attribute(SurfaceAttributeKey key) const {
     return attributes ? attributes->find(key) : std::nullopt;

@@ -11,12 +11,19 @@ Spectrum MaskBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, 
 }
 
 float MaskBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  return opacityAt(ctx) * nested_->pdf(ctx, wi, wo, wl);
+  float nested = nested_->pdf(ctx, wi, wo, wl);
+  return ctx.passThroughByCaller ? nested : opacityAt(ctx) * nested;
 }
 
 std::optional<BSDFSample> MaskBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                            float uComponent, Vec2 u) const {
   const float opacity = opacityAt(ctx), transparency = 1.0f - opacity;
+  if (ctx.passThroughByCaller) {
+    // Always the nested BSDF: f scales by the opacity, the density does not.
+    std::optional<BSDFSample> s = nested_->sample(ctx, wi, wl, uComponent, u);
+    if (s) s->weight *= opacity;
+    return s;
+  }
   if (uComponent < transparency) {
     BSDFSample s;
     s.wo = -wi;

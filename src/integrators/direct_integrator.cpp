@@ -22,6 +22,9 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     if (!hit) break;
     const BSDF& bsdf = *hit->shape->bsdf;
     Vec3 wi = hit->shading.toLocal(-dir);
+    // Pass-through is covered by continuing the camera ray below, so BSDF samples need not draw it.
+    BSDFContext ctx = hit->bsdfContext();
+    ctx.passThroughByCaller = true;
 
     // The pass-through weight is asked for together with the first emitter sample's evaluation.
     std::optional<Spectrum> passThrough;
@@ -32,7 +35,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
       request.woLight = &light->woLocal;
       request.lightPdf = bsdfSamples_ > 0 && !light->emitter->isDelta();
       request.passThrough = !passThrough && bsdf.hasPassThrough();
-      BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext(), wi, wl, request);
+      BSDFVertexQueries queries = bsdf.queryVertex(ctx, wi, wl, request);
       if (request.passThrough) passThrough = queries.passThrough;
       if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays)) {
         float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
@@ -41,8 +44,8 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     }
     for (int i = 0; i < bsdfSamples_; ++i) {
       float uComponent = sampler.get1D();
-      auto bs = bsdf.sample(hit->bsdfContext(), wi, wl, uComponent, sampler.get2D());
-      // Pass-through is covered by continuing the camera ray below.
+      auto bs = bsdf.sample(ctx, wi, wl, uComponent, sampler.get2D());
+      // From a BSDF that ignores passThroughByCaller.
       if (!bs || bs->passThrough) continue;
       Vec3 woWorld = hit->shading.toWorld(bs->wo);
       std::optional<SurfaceInteraction> next;
@@ -55,7 +58,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     }
 
     if (!bsdf.hasPassThrough()) break;
-    beta *= passThrough ? *passThrough : bsdf.passThrough(hit->bsdfContext(), wi, wl);
+    beta *= passThrough ? *passThrough : bsdf.passThrough(ctx, wi, wl);
     if (beta.isZero()) break;
     ray = hit->spawnRay(dir);
   }
