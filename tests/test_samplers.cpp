@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -229,6 +230,34 @@ TEST(SamplerStratification, TwoDimensionalGridCellsGetOneSampleEach) {
     }
 }
 
+// Two 1D requests of a sample, with 2D ones between them, are the two coordinates of one point
+// of a (0, 2)-sequence: jointly stratified over every elementary interval.
+TEST(SamplerStratification, LowDiscrepancyPairsOneDimensionalRequests) {
+  const int log2n = 6, n = 1 << log2n;
+  auto sampler = makeSampler("ldsampler", n);
+  for (int pixel = 0; pixel < 20; ++pixel) {
+    std::vector<Vec2> first, second;
+    for (int i = 0; i < n; ++i) {
+      sampler->startPixelSample(pixel, 4, i, 3);
+      float a = sampler->get1D();
+      sampler->get2D();
+      float b = sampler->get1D();
+      float c = sampler->get1D();
+      sampler->get2D();
+      float d = sampler->get1D();
+      first.emplace_back(a, b);
+      second.emplace_back(c, d);
+    }
+    for (const std::vector<Vec2>* points : {&first, &second})
+      for (int k = 0; k <= log2n; ++k) {
+        const int nx = 1 << k, ny = n / nx;
+        std::vector<int> cells;
+        for (Vec2 u : *points) cells.push_back(int(u.y * ny) * nx + int(u.x * nx));
+        EXPECT_TRUE(oneInEachCell(cells, n)) << nx << " x " << ny << ", pixel " << pixel;
+      }
+  }
+}
+
 TEST(SamplerStratification, LowDiscrepancyFillsAllElementaryIntervals) {
   for (int log2n : {4, 6}) {
     const int n = 1 << log2n;
@@ -261,23 +290,30 @@ TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
     const uint64_t seed = 7;
     int checked = 0;
     // Pixels revisited, sample indices past the pattern (a second round), and dimensions drawn
-    // as 1D by some samples and as 2D by others.
+    // as 1D by some samples and as 2D by others. A 1D request takes x of a new point, the next
+    // one its y.
     for (int pass = 0; pass < 2; ++pass)
       for (int pixel : {3, 5, 3})
         for (int i = 0; i < 2 * n; ++i) {
           sampler->startPixelSample(pixel, 1, i, seed);
           PixelSampleState reference;
           reference.start(pixel, 1, i, hashCombine(seed, 0), uint32_t(n));
+          std::optional<float> pendingY;
           for (int d = 0; d < 12; ++d) {
-            uint64_t hash = reference.nextDimensionHash();
+            if ((d + i + pass) % 3 != 0 && pendingY) {
+              ASSERT_EQ(sampler->get1D(), *pendingY) << "n " << n << ", pixel " << pixel << ", sample " << i;
+              pendingY.reset();
+              ++checked;
+              continue;
+            }
+            Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n), reference.nextDimensionHash());
             if ((d + i + pass) % 3 == 0) {
-              Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n), hash);
               Vec2 got = sampler->get2D();
               ASSERT_EQ(got.x, expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
               ASSERT_EQ(got.y, expected.y) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
             } else {
-              ASSERT_EQ(sampler->get1D(), LowDiscrepancySampler::point1D(reference.index, uint32_t(n), hash))
-                  << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+              ASSERT_EQ(sampler->get1D(), expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i;
+              pendingY = expected.y;
             }
             ++checked;
           }

@@ -45,10 +45,6 @@ __attribute__((target_clones("avx2", "default"))) void fillSobolDimension1(uint3
 
 }  // namespace
 
-float LowDiscrepancySampler::point1D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash) {
-  return coordinate0(shuffled(index, sampleCount, dimensionHash), uint32_t(dimensionHash >> 32));
-}
-
 Vec2 LowDiscrepancySampler::point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash) {
   uint32_t point = shuffled(index, sampleCount, dimensionHash);
   uint64_t seeds = scrambleSeeds2D(dimensionHash);
@@ -57,19 +53,15 @@ Vec2 LowDiscrepancySampler::point2D(uint32_t index, uint32_t sampleCount, uint64
 
 void LowDiscrepancySampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
   state_.start(px, py, sampleIndex, hashCombine(seed, seed_), uint32_t(sampleCount_));
+  hasPendingY_ = false;
 }
 
-void LowDiscrepancySampler::fill(DimensionTable& t, bool twoD, uint64_t dimensionHash) {
+void LowDiscrepancySampler::fill(DimensionTable& t, uint64_t dimensionHash) {
   const uint32_t n = uint32_t(sampleCount_);
   t.generation = state_.patternGeneration();
-  t.twoD = twoD;
-  t.values.resize(twoD ? 2 * n : n);
+  t.values.resize(2 * size_t(n));
   scratch_.resize(2 * size_t(n));
   fillShuffled(n, dimensionHash, scratch_.data());
-  if (!twoD) {
-    fillScrambled(n, scratch_.data(), uint32_t(dimensionHash >> 32), t.values.data());
-    return;
-  }
   uint64_t seeds = scrambleSeeds2D(dimensionHash);
   fillScrambled(n, scratch_.data(), uint32_t(seeds), t.values.data());
   uint32_t* sobol = scratch_.data() + n;
@@ -78,15 +70,19 @@ void LowDiscrepancySampler::fill(DimensionTable& t, bool twoD, uint64_t dimensio
 }
 
 float LowDiscrepancySampler::get1D() {
-  uint64_t hash = state_.nextDimensionHash();
-  if (const DimensionTable* t = table(false, hash)) return t->values[state_.index];
-  return point1D(state_.index, uint32_t(sampleCount_), hash);
+  if (hasPendingY_) {
+    hasPendingY_ = false;
+    return pendingY_;
+  }
+  Vec2 point = get2D();
+  hasPendingY_ = true;
+  pendingY_ = point.y;
+  return point.x;
 }
 
 Vec2 LowDiscrepancySampler::get2D() {
   uint64_t hash = state_.nextDimensionHash();
-  if (const DimensionTable* t = table(true, hash))
-    return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
+  if (const DimensionTable* t = table(hash)) return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
   return point2D(state_.index, uint32_t(sampleCount_), hash);
 }
 
