@@ -26,7 +26,8 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     BSDFContext ctx = hit->bsdfContext();
     ctx.passThroughByCaller = true;
 
-    // The pass-through weight is asked for together with the first emitter sample's evaluation.
+    // The pass-through weight is asked for together with the first emitter sample's evaluation, or
+    // else with the first BSDF sample.
     std::optional<Spectrum> passThrough;
     for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
       std::optional<LightSample> light = sampleLight(scene, *hit, wl, sampler.get2D());
@@ -43,8 +44,14 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
       }
     }
     for (int i = 0; i < bsdfSamples_; ++i) {
-      float uComponent = sampler.get1D();
-      auto bs = bsdf.sample(ctx, wi, wl, uComponent, sampler.get2D());
+      BSDFVertexRequest request;
+      request.sample = true;
+      request.uComponent = sampler.get1D();
+      request.u = sampler.get2D();
+      request.passThrough = !passThrough && bsdf.hasPassThrough();
+      BSDFVertexQueries queries = bsdf.queryVertex(ctx, wi, wl, request);
+      if (request.passThrough) passThrough = queries.passThrough;
+      const std::optional<BSDFSample>& bs = queries.sampled;
       // From a BSDF that ignores passThroughByCaller.
       if (!bs || bs->passThrough) continue;
       Vec3 woWorld = hit->shading.toWorld(bs->wo);
