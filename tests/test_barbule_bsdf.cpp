@@ -1,10 +1,13 @@
-// Statistical and structural tests of the barbule BSDF: sample vs pdf (chi-square), weight = eval /
-// pdf, the white furnace against an independent average over visible normals, the pass-through,
-// reciprocity, the evaluation twin, light from below, per-point overrides and the factories.
+// Statistical and structural tests of the barbule BSDF: sample vs pdf (chi-square), the weight
+// (a lobe's value over its density) and its mean over regions, the white furnace against an independent average over
+// visible normals, the pass-through, reciprocity, the evaluation twin, light from below, per-point overrides and the
+// factories.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 #include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/barbule_cross_section.h"
@@ -88,6 +91,30 @@ double sidak(double familyAlpha, int tests) { return 1.0 - std::pow(1.0 - family
 
 }  // namespace
 
+namespace {
+
+// Which lobe's value over that lobe's density a `barbulebsdf` sample weighs, within 1e-3 at every
+// wavelength: R, TRT, or neither (nullopt). R's density is the one the sample reports less TRT's,
+// since an R sample carries the share of visible angles it was drawn with.
+std::optional<bool> reflectedWeight(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Vec3& wi,
+                                    const BSDFSample& s) {
+  BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, s.wo, kWavelengths);
+  BarbuleBSDF::LobeDensities density = bsdf.lobePdfs(ctx, wi, s.wo, kWavelengths);
+  auto matches = [&](const Spectrum& value, float lobeDensity) {
+    if (!(lobeDensity > 0.0f)) return false;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      float expected = value[k] * std::abs(s.wo.z) / lobeDensity;
+      if (!(std::abs(s.weight[k] - expected) <= 1e-3f * expected + 1e-7f)) return false;
+    }
+    return true;
+  };
+  if (matches(lobes.reflection, s.pdf - density.trt)) return true;
+  if (matches(lobes.trt, density.trt)) return false;
+  return std::nullopt;
+}
+
+}  // namespace
+
 TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
   const std::vector<Vec3> incident = incidentDirections();
   const int tests = int(parameterSets().size() * incident.size());
@@ -123,7 +150,8 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdf) {
 
 // With BSDFContext::passThroughByCaller (the direct integrator carries T itself) every sample
 // scatters, pdf() is the scattering density given that (the usual one times the same factor for
-// every omega_o of one omega_i), sampled directions follow it, and the weight is eval over it.
+// every omega_o of one omega_i), sampled directions follow it, and the weight is the drawing
+// lobe's value over that lobe's share of it.
 TEST(BarbuleBSDF, ACallerCarryingPassThroughGetsScatteringSamplesFollowingTheirPdf) {
   const BSDFContext usual;
   BSDFContext byCaller;
@@ -145,9 +173,7 @@ TEST(BarbuleBSDF, ACallerCarryingPassThroughGetsScatteringSamplesFollowingTheirP
         ++scattered;
         float pdf = bsdf.pdf(byCaller, wi, s->wo, kWavelengths), pdfUsual = bsdf.pdf(usual, wi, s->wo, kWavelengths);
         EXPECT_NEAR(s->pdf, pdf, 0.02f * pdf) << parameters.name;
-        Spectrum f = bsdf.eval(byCaller, wi, s->wo, kWavelengths);
-        for (int k = 0; k < kSpectrumSamples; ++k)
-          ASSERT_NEAR(s->weight[k], f[k] / s->pdf, 1e-4f * (f[k] / s->pdf) + 1e-7f) << parameters.name;
+        ASSERT_TRUE(reflectedWeight(bsdf, byCaller, wi, *s).has_value()) << parameters.name;
         ASSERT_GE(pdf, pdfUsual) << parameters.name;
         if (ratio < 0.0f) ratio = pdf / pdfUsual;
         EXPECT_NEAR(pdf / pdfUsual, ratio, 1e-4f * ratio) << parameters.name;
@@ -171,15 +197,16 @@ TEST(BarbuleBSDF, ACallerCarryingPassThroughGetsScatteringSamplesFollowingTheirP
   }
 }
 
-TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
-  // The weight is eval over the density the sample reports, and pdf() gives that density within
-  // 1e-4, except for R samples drawn where the share of visible longitudinal angles changes fast
+TEST(BarbuleBSDF, SampleWeightIsItsLobesValueOverItsDensity) {
+  // `barbulebsdf` weighs a sample by the value of the lobe that drew it over that lobe's density,
+  // the evaluation twin by eval over the density the sample reports. pdf() gives that density
+  // within 1e-4, except for R samples drawn where the share of visible longitudinal angles changes fast
   // with the normal: recomputed at the half vector's normal, equal to the sampled one up to
   // rounding, the share can differ. Here 70 of 232,728 samples differ by more than 1e-4, at most
   // by 0.9 %; in renders a jump by orders of magnitude was seen 3 times in 2.7e8 samples (a cut
   // where a(theta) peaks), which is why a sample reports the density it was drawn with.
   const BSDFContext ctx;
-  int checked = 0, otherShare = 0;
+  int checked = 0, otherShare = 0, reflected = 0, trt = 0;
   for (const ParameterSet& set : parameterSets())
     for (BarbuleBSDF::Role role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(set.params, role);
@@ -195,15 +222,24 @@ TEST(BarbuleBSDF, SampleWeightIsEvalOverPdf) {
           Spectrum f = bsdf.eval(ctx, wi, s->wo, kWavelengths);
           if (std::abs(s->pdf - pdf) > 1e-4f * pdf) ++otherShare;
           EXPECT_NEAR(s->pdf, pdf, 0.02f * pdf) << set.name;
+          ++checkedHere;
+          if (role == BarbuleBSDF::Role::CameraIncident) {
+            std::optional<bool> lobe = reflectedWeight(bsdf, ctx, wi, *s);
+            ASSERT_TRUE(lobe.has_value()) << set.name;
+            ++(*lobe ? reflected : trt);
+            continue;
+          }
           for (int k = 0; k < kSpectrumSamples; ++k)
             ASSERT_NEAR(s->weight[k], f[k] / s->pdf, 1e-4f * (f[k] / s->pdf) + 1e-7f) << set.name << " lambda " << k;
-          ++checkedHere;
         }
       EXPECT_GT(checkedHere, 1000) << set.name;
       checked += checkedHere;
     }
-  std::printf("%d of %d samples report another density than pdf()\n", otherShare, checked);
+  std::printf("%d of %d samples report another density than pdf(); R %d and TRT %d weights\n", otherShare, checked,
+              reflected, trt);
   EXPECT_LE(otherShare, checked / 2000);
+  EXPECT_GT(reflected, 10000);
+  EXPECT_GT(trt, 10000);
 }
 
 namespace {
@@ -214,11 +250,15 @@ namespace {
 struct LobeAlbedo {
   Spectrum reflection, trt;
 };
-LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
+// The same integrals over each of `regions` parts of the sphere, `regionOf(omega_o)` naming the part.
+template <typename RegionOf>
+std::vector<LobeAlbedo> integrateLobesByRegion(const BarbuleBSDF& bsdf, const Vec3& wi, int regions,
+                                               const RegionOf& regionOf) {
   const BSDFContext ctx;
-  LobeAlbedo out;
+  std::vector<LobeAlbedo> out(static_cast<size_t>(regions));
   auto grid = [&](float yLo, float yHi, int rows, int columns, bool reflection) {
-    double sum[kSpectrumSamples] = {};  // millions of terms: float sums would drift
+    // millions of terms: float sums would drift
+    std::vector<std::array<double, kSpectrumSamples>> sum(size_t(regions), std::array<double, kSpectrumSamples>{});
     double cell = (yHi - yLo) / rows * (2.0 * M_PI / columns);
     for (int i = 0; i < rows; ++i)
       for (int j = 0; j < columns; ++j) {
@@ -227,16 +267,21 @@ LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
         Vec3 wo(r * std::sin(gamma), y, r * std::cos(gamma));
         BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, wo, kWavelengths);
         const Spectrum& f = reflection ? lobes.reflection : lobes.trt;
-        for (int k = 0; k < kSpectrumSamples; ++k) sum[k] += double(f[k]) * std::abs(wo.z);
+        std::array<double, kSpectrumSamples>& s = sum[size_t(regionOf(wo))];
+        for (int k = 0; k < kSpectrumSamples; ++k) s[k] += double(f[k]) * std::abs(wo.z);
       }
-    Spectrum out;
-    for (int k = 0; k < kSpectrumSamples; ++k) out[k] = float(sum[k] * cell);
-    return out;
+    for (int region = 0; region < regions; ++region) {
+      Spectrum& lobe = reflection ? out[size_t(region)].reflection : out[size_t(region)].trt;
+      for (int k = 0; k < kSpectrumSamples; ++k) lobe[k] = float(sum[size_t(region)][k] * cell);
+    }
   };
   float band = 2.0f * kSinBarbuleThetaD;
-  out.reflection = grid(std::max(-wi.y - band, -1.0f), std::min(-wi.y + band, 1.0f), 1024, 2304, true);
-  out.trt = grid(-1.0f, 1.0f, 160, 320, false);
+  grid(std::max(-wi.y - band, -1.0f), std::min(-wi.y + band, 1.0f), 1024, 2304, true);
+  grid(-1.0f, 1.0f, 160, 320, false);
   return out;
+}
+LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
+  return integrateLobesByRegion(bsdf, wi, 1, [](const Vec3&) { return 0; }).front();
 }
 
 // r times the means over the visible normals of I_R (with the visibility and longitudinal
@@ -362,6 +407,41 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeans) {
               sumRatioTRT / ratiosTRT, ratiosTRT);
   EXPECT_NEAR(sumRatioR / ratiosR, kMeanRatioR, kMeanRatioBand);
   EXPECT_NEAR(sumRatioTRT / ratiosTRT, kMeanRatioTRT, kMeanRatioBand);
+}
+
+// Each lobe estimated by its own samples is unbiased against any function of omega_o, not only in
+// total (the white furnace): the mean of weight x [omega_o in A] is the integral of eval over A,
+// for the four quadrants A of (above or below the vane) x (x positive or negative).
+TEST(BarbuleBSDF, SampleWeightsIntegrateEvalOverEachRegion) {
+  const BSDFContext ctx;
+  auto quadrant = [](const Vec3& w) { return (w.z > 0.0f ? 2 : 0) + (w.x > 0.0f ? 1 : 0); };
+  int compared = 0;
+  for (const ParameterSet& set : {parameterSets()[0], parameterSets()[2]}) {
+    BarbuleBSDF bsdf(set.params);
+    for (const Vec3& wi : {direction(20.0f, 30.0f), direction(60.0f, 110.0f), direction(75.0f, 250.0f)}) {
+      std::vector<LobeAlbedo> integral = integrateLobesByRegion(bsdf, wi, 4, quadrant);
+      PCG32 rng(21, 3);
+      const int n = 200000;
+      std::array<Spectrum, 4> mean{}, meanSqr{};
+      for (int i = 0; i < n; ++i) {
+        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (!s || s->passThrough) continue;
+        int a = quadrant(s->wo);
+        mean[size_t(a)] += s->weight / float(n);
+        meanSqr[size_t(a)] += s->weight * s->weight / float(n);
+      }
+      for (int a = 0; a < 4; ++a)
+        for (int k = 0; k < kSpectrumSamples; ++k) {
+          float expected = integral[size_t(a)].reflection[k] + integral[size_t(a)].trt[k];
+          float m = mean[size_t(a)][k];
+          float sigma = std::sqrt(std::max(meanSqr[size_t(a)][k] - m * m, 0.0f) / n);
+          EXPECT_NEAR(m, expected, 4.0f * sigma + 5e-3f * expected + 1e-5f)
+              << set.name << " wi " << wi.x << " " << wi.y << " " << wi.z << " quadrant " << a << " lambda " << k;
+          compared += expected > 1e-3f;
+        }
+    }
+  }
+  EXPECT_GT(compared, 40);
 }
 
 TEST(BarbuleBSDF, PassThroughMatchesTheTransmittedFraction) {

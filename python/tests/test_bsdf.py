@@ -113,8 +113,29 @@ def test_sample_matches_eval_and_pdf():
     close = np.isclose(s["pdf"][scattered], pdf, rtol=1e-4, atol=0)
     assert close.mean() > 0.998
     np.testing.assert_allclose(s["pdf"][scattered], pdf, rtol=0.02)
-    f = bsdf.eval(wi[scattered], wo, wl[scattered])
-    np.testing.assert_allclose(s["weight"][scattered], f / s["pdf"][scattered][:, None], rtol=1e-3, atol=1e-6)
+    # Each lobe is estimated by its own samples: the weight is R's or TRT's value over that lobe's
+    # share of the density, and the two shares sum to pdf().
+    lobes = bsdf.eval_lobes(wi[scattered], wo, wl[scattered])
+    cos = np.abs(wo[:, 2])[:, None]
+    weight = s["weight"][scattered]
+    as_trt = lobes["TRT"] * cos
+    as_r = lobes["R"] * cos
+    # weight x density = value for the lobe that drew the sample; the densities are positive.
+    share_r = as_r / np.maximum(weight, 1e-30)
+    share_trt = as_trt / np.maximum(weight, 1e-30)
+    total = s["pdf"][scattered][:, None]
+    is_r = np.all(np.isclose(share_r, share_r[:, :1], rtol=1e-3), axis=1) & (share_r[:, 0] > 0)
+    is_trt = np.all(np.isclose(share_trt, share_trt[:, :1], rtol=1e-3), axis=1) & (share_trt[:, 0] > 0)
+    carries = weight.max(axis=1) > 0
+    assert (is_r | is_trt)[carries].all() and is_r.sum() > 100 and is_trt.sum() > 100
+    assert (share_r[is_r, 0] <= total[is_r, 0] * (1 + 1e-4)).all()
+    assert (share_trt[is_trt, 0] <= total[is_trt, 0] * (1 + 1e-4)).all()
+    # The light-side twin weighs eval over pdf.
+    light = columba.BarbuleBSDF(preset="dove-green", role="light")
+    t = light.sample(wi, rng.random(n, dtype=np.float32), rng.random((n, 2), dtype=np.float32), wl)
+    ok = t["valid"] & ~t["pass_through"] & ~t["delta"]
+    f = light.eval(wi[ok], t["wo"][ok], wl[ok])
+    np.testing.assert_allclose(t["weight"][ok], f / t["pdf"][ok][:, None], rtol=1e-3, atol=1e-6)
     # The pass-through samples continue along -wi with the T lobe's weight.
     passing = s["pass_through"]
     np.testing.assert_allclose(s["wo"][passing], -wi[passing], atol=1e-6)

@@ -45,9 +45,10 @@
 //        density is (integral of s over the offsets lit from both / lit width) |cos theta_o| / pi;
 //   T:   -wi with weight t / P(T).
 // Both scattering densities carry the factor 1 - P(T). TRT samples whose point is not visible from
-// omega_o are rejected, as are R samples that rounding puts just outside the visible angles. The
-// weight of a non-delta sample is eval / pdf with pdf the mixture density of what is returned (an
-// R sample's with the share V it was drawn with).
+// omega_o are rejected, as are R samples that rounding puts just outside the visible angles. A
+// sample reports the mixture density of what is returned (an R sample's with the share V it was
+// drawn with); its weight is the drawing lobe's value over that lobe's density (see sampleAt), and
+// for the evaluation twin eval / pdf.
 
 namespace columba {
 
@@ -337,10 +338,12 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
   return choice;
 }
 
-float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                               const Outgoing& out, float mirrorVisible) const {
-  if (!in.scatters) return 0.0f;
-  float density = 0.0f;
+BarbuleBSDF::LobeDensities BarbuleBSDF::samplingPdfs(const PointModel& point, const Incident& in,
+                                                     const LobeChoice& choice, const Outgoing& out,
+                                                     float mirrorVisible) const {
+  LobeDensities density;
+  if (!in.scatters) return density;
+  const float scattering = 1.0f - choice.transmission;
   if (out.reflects) {
     float cosHalf = dot(in.w, out.m);
     if (cosHalf > 0.0f) {
@@ -353,11 +356,12 @@ float BarbuleBSDF::samplingPdf(const PointModel& point, const Incident& in, cons
       float visible = mirrorVisible >= 0.0f ? mirrorVisible
                                             : MirrorVisibleAngles(point.geometry, out.mLocal, in.w).visibleFraction();
       float shareR = 1.0f - choice.trtShareAt(point.geometry.offsetOf(in.arc, out.mLocal));
-      if (visible > 0.0f) density += shareR * normalPdf / visible / (4.0f * cosHalf);
+      if (visible > 0.0f) density.reflection = scattering * shareR * normalPdf / visible / (4.0f * cosHalf);
     }
   }
-  density += choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() * std::abs(out.w.z) * kInvPi;
-  return (1.0f - choice.transmission) * density;
+  density.trt =
+      scattering * choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() * std::abs(out.w.z) * kInvPi;
+  return density;
 }
 
 Spectrum BarbuleBSDF::evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const {
@@ -385,7 +389,7 @@ BSDFEvalPdf BarbuleBSDF::evalPdfAt(const PointModel& point, const Incident& from
   Outgoing out = outgoing(point, fromWi, wo, woArc);
   // With omega_i on the camera side, value and density share the pair's geometry.
   Spectrum value = role_ == Role::CameraIncident ? evalForPair(point, fromWi, out) : evalAt(point, fromWi, wo, woArc);
-  return {value, samplingPdf(point, fromWi, choice, out, mirrorVisible)};
+  return {value, samplingPdfs(point, fromWi, choice, out, mirrorVisible).total()};
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
@@ -393,7 +397,16 @@ float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, c
   Incident in = incident(point, wi);
   if (!in.scatters) return 0.0f;
   Outgoing out = outgoing(point, in, wo, point.geometry.litArc(inPlane(wo).dir));
-  return samplingPdf(point, in, lobeChoice(point, in, ctx.passThroughByCaller), out);
+  return samplingPdfs(point, in, lobeChoice(point, in, ctx.passThroughByCaller), out).total();
+}
+
+BarbuleBSDF::LobeDensities BarbuleBSDF::lobePdfs(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo,
+                                                 const Wavelengths& wl) const {
+  PointModel point(*this, ctx, wl);
+  Incident in = incident(point, wi);
+  if (!in.scatters) return {};
+  Outgoing out = outgoing(point, in, wo, point.geometry.litArc(inPlane(wo).dir));
+  return samplingPdfs(point, in, lobeChoice(point, in, ctx.passThroughByCaller), out);
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
@@ -461,10 +474,27 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   LitArc woArc = geometry.litArc(inPlane(bs.wo).dir);
   if (!geometry.isLit(woArc, localNormal)) return std::nullopt;
 
-  BSDFEvalPdf f = evalPdfAt(point, in, choice, bs.wo, woArc, mirrorVisible);
-  bs.pdf = f.pdf;
-  if (!(bs.pdf > 0.0f)) return std::nullopt;
-  bs.weight = f.value / bs.pdf;
+  if (role_ == Role::LightIncident) {
+    BSDFEvalPdf f = evalPdfAt(point, in, choice, bs.wo, woArc, mirrorVisible);
+    bs.pdf = f.pdf;
+    if (!(bs.pdf > 0.0f)) return std::nullopt;
+    bs.weight = f.value / bs.pdf;
+    return bs;
+  }
+  // Each lobe is estimated by the samples it draws: an R sample weighs f_R |cos| over R's density,
+  // a TRT sample f_TRT |cos| over TRT's, and bs.pdf is their sum, the density of wo. For any
+  // function g of wo, E[weight g] is then the integral of (f_R + f_TRT) |cos| g, so MIS weights
+  // built from bs.pdf keep the estimate unbiased; an R sample needs no TRT quadrature. (With the
+  // mixture's eval / pdf instead, simulation3's variance per sample was the same, 0.0950 against
+  // 0.0954, and the time 9 % longer.)
+  Outgoing out = outgoing(point, in, bs.wo, woArc);
+  LobeDensities density = samplingPdfs(point, in, choice, out, mirrorVisible);
+  bs.pdf = density.total();
+  const bool reflected = mirrorVisible >= 0.0f;
+  const float lobeDensity = reflected ? density.reflection : density.trt;
+  if (!(lobeDensity > 0.0f) || bs.wo.z == 0.0f) return std::nullopt;
+  Spectrum value = reflected ? reflection(point, in, out) : trt(point, in, out);
+  bs.weight = value * (std::abs(bs.wo.z) / lobeDensity);
   return bs;
 }
 

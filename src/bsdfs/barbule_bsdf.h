@@ -15,7 +15,9 @@
 //   light direction, as the paper's emitter-sampled visualisations do, and returns what an
 //   imaging scatterometer records, f(omega_light, omega_camera) |cos theta_camera| (the camera's
 //   cosine, not the light's). Both sample the same way
-//   (from wi) and report the density of that sampler, with weight = eval / pdf; for the
+//   (from wi) and report the density of that sampler. `barbulebsdf` weighs a sample by the value
+//   of the lobe that drew it over that lobe's density (each lobe estimated by its own samples),
+//   the twin by eval / pdf; for the
 //   evaluation twin this is unbiased wherever eval is reachable from wi (always for R, whose
 //   value is symmetric; TRT needs a point lit from both directions either way), but it is meant
 //   for emitter sampling.
@@ -79,6 +81,12 @@ class BarbuleBSDF : public BSDF {
   Lobes evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const;
   // Coverage r(omega_i): the fraction of light from omega_i meeting the reflective arc (T = 1 - r).
   float coverage(const BSDFContext& ctx, const Vec3& omegaI) const;
+  // The density pdf() reports, by the lobe that draws wo: pdf() is their sum.
+  struct LobeDensities {
+    float reflection = 0.0f, trt = 0.0f;
+    float total() const { return reflection + trt; }
+  };
+  LobeDensities lobePdfs(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const;
 
   const BarbuleParameters& parameters() const { return params_; }
   Role role() const { return role_; }
@@ -120,9 +128,10 @@ class BarbuleBSDF : public BSDF {
 
   LobeChoice lobeChoice(const PointModel& point, const Incident& in, bool passThroughByCaller) const;
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  float samplingPdf(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
-                    float mirrorVisible = -1.0f) const;
-  // sample, once the point's model, omega_i's quantities and the lobe choice are known.
+  LobeDensities samplingPdfs(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
+                             float mirrorVisible = -1.0f) const;
+  // sample, once the point's model, omega_i's quantities and the lobe choice are known; `reflected`
+  // says which lobe drew it.
   std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
                                      float uComponent, Vec2 u) const;
 

@@ -36,7 +36,9 @@ struct BSDFContext {
 
 struct BSDFSample {
   Vec3 wo;
-  Spectrum weight;     // f * |cos(wo)| / pdf
+  // f * |cos(wo)| / pdf, or an estimate of it with the same mean against any function of wo (a
+  // BSDF that estimates each lobe by its own samples: that lobe's value over its density).
+  Spectrum weight;
   float pdf = 0.0f;    // solid-angle density; for delta components, the component's probability
   bool delta = false;  // a delta component was chosen (no MIS with emitter sampling)
   // The pass-through ("null") component: wo = -wi, the ray just continues. Not a bounce.
