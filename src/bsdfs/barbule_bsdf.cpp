@@ -393,11 +393,7 @@ BSDFEvalPdf BarbuleBSDF::evalPdfAt(const PointModel& point, const Incident& from
 }
 
 float BarbuleBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
-  PointModel point(*this, ctx, wl);
-  Incident in = incident(point, wi);
-  if (!in.scatters) return 0.0f;
-  Outgoing out = outgoing(point, in, wo, point.geometry.litArc(inPlane(wo).dir));
-  return samplingPdfs(point, in, lobeChoice(point, in, ctx.passThroughByCaller), out).total();
+  return lobePdfs(ctx, wi, wo, wl).total();
 }
 
 BarbuleBSDF::LobeDensities BarbuleBSDF::lobePdfs(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo,
