@@ -451,8 +451,9 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   float h = in.arc.hMin + uOffset * in.arc.width();
   float shareR = 1.0f - choice.trtShareAt(h);
   const Vec2 localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
+  const bool reflected = u.x < shareR;
   float mirrorVisible = -1.0f;  // the share of visible angles an R sample is drawn with
-  if (u.x < shareR) {
+  if (reflected) {
     // theta among the angles whose mirror direction a neighbour does not mask: the others could
     // only be rejected below.
     MirrorVisibleAngles angles(geometry, localNormal, wi);
@@ -486,7 +487,6 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   Outgoing out = outgoing(point, in, bs.wo, woArc);
   LobeDensities density = samplingPdfs(point, in, choice, out, mirrorVisible);
   bs.pdf = density.total();
-  const bool reflected = mirrorVisible >= 0.0f;
   const float lobeDensity = reflected ? density.reflection : density.trt;
   if (!(lobeDensity > 0.0f) || bs.wo.z == 0.0f) return std::nullopt;
   Spectrum value = reflected ? reflection(point, in, out) : trt(point, in, out);

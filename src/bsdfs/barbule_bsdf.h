@@ -130,8 +130,7 @@ class BarbuleBSDF : public BSDF {
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   LobeDensities samplingPdfs(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
                              float mirrorVisible = -1.0f) const;
-  // sample, once the point's model, omega_i's quantities and the lobe choice are known; `reflected`
-  // says which lobe drew it.
+  // sample, once the point's model, omega_i's quantities and the lobe choice are known.
   std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
                                      float uComponent, Vec2 u) const;
 

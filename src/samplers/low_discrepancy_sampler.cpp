@@ -74,13 +74,15 @@ float LowDiscrepancySampler::get1D() {
     hasPendingY_ = false;
     return pendingY_;
   }
-  Vec2 point = get2D();
+  Vec2 point = nextPoint();
   hasPendingY_ = true;
   pendingY_ = point.y;
   return point.x;
 }
 
-Vec2 LowDiscrepancySampler::get2D() {
+Vec2 LowDiscrepancySampler::get2D() { return nextPoint(); }
+
+Vec2 LowDiscrepancySampler::nextPoint() {
   uint64_t hash = state_.nextDimensionHash();
   if (const DimensionTable* t = table(hash)) return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
   return point2D(state_.index, uint32_t(sampleCount_), hash);

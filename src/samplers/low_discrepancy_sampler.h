@@ -62,6 +62,8 @@ class LowDiscrepancySampler : public Sampler {
     return &t;
   }
   void fill(DimensionTable& t, uint64_t dimensionHash);
+  // The next dimension's point (get2D, and the pairs get1D serves).
+  Vec2 nextPoint();
 
   uint64_t seed_;
   bool hasPendingY_ = false;  // a 1D request took x of a point whose y is next

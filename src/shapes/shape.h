@@ -51,7 +51,7 @@ struct SurfaceInteraction {
     return p;
   }
   BSDFContext bsdfContext() const {
-    return BSDFContext{&attributes, texturePoint(), shading.toLocal(dpdu), shading.toLocal(dpdv), false};
+    return BSDFContext{&attributes, texturePoint(), shading.toLocal(dpdu), shading.toLocal(dpdv)};
   }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
