@@ -14,6 +14,7 @@
 
 namespace fs = std::filesystem;
 using columba::testing::CommandResult;
+using columba::testing::renderAndSignal;
 using columba::testing::run;
 using columba::testing::runShell;
 
@@ -112,14 +113,6 @@ TEST_F(CliTest, AdaptiveSamplingReportsItsPlanAndRefusesPieces) {
   r = run("render " + scene + " -o " + out + " --spp 8 --adaptive --pass 1/2");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("cannot be combined with --part or --pass"), std::string::npos) << r.output;
-}
-
-// Starts a render in the background, sends `signal` after `delay` seconds and reports the
-// exit status ("status=N") and the seconds from the signal to the exit ("answered=S").
-CommandResult renderAndSignal(const std::string& args, const char* signal, double delay) {
-  return runShell(std::string(COLUMBA_BINARY) + " render " + args + " & pid=$!; sleep " + std::to_string(delay) +
-                  "; start=$(date +%s.%N); kill -" + signal + " $pid; wait $pid; status=$?; end=$(date +%s.%N); " +
-                  "echo status=$status; echo answered=$(echo \"$end - $start\" | bc)");
 }
 
 double answeredSeconds(const CommandResult& r) {

@@ -16,6 +16,7 @@
 
 namespace fs = std::filesystem;
 using columba::testing::CommandResult;
+using columba::testing::renderAndSignal;
 using columba::testing::run;
 using columba::testing::runShell;
 using namespace columba;
@@ -168,8 +169,7 @@ TEST_F(SweepCli, PartsAndPassesMergeIntoTheWholeRender) {
 
 TEST_F(SweepCli, AnInterruptedPartIsLeftPartialNeverDone) {
   std::string s = scene();
-  CommandResult r = runShell(std::string(COLUMBA_BINARY) + " render " + s + " --spp 16000000 -o " + at("img.exr") +
-                             " --part 1/2 & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; echo status=$?");
+  CommandResult r = renderAndSignal(s + " --spp 16000000 -o " + at("img.exr") + " --part 1/2", "TERM", 0.5);
   EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(at("img.part1of2.exr")));
   ASSERT_TRUE(fs::exists(at("img.part1of2.partial.exr"))) << r.output;
