@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 #include "chi_square.h"
 #include "core/properties.h"
@@ -60,6 +61,14 @@ std::unique_ptr<Sampler> makeSampler(const std::string& type, int sampleCount) {
   EXPECT_TRUE(sampler);
   EXPECT_EQ(sampler->sampleCount(), sampleCount) << type;
   return sampler->clone();
+}
+
+// Every sampler with `sampleCount` samples, and the low-discrepancy sampler's progressive pattern.
+std::vector<std::pair<std::string, std::unique_ptr<Sampler>>> allPatterns(int sampleCount) {
+  std::vector<std::pair<std::string, std::unique_ptr<Sampler>>> patterns;
+  for (const std::string& type : kAllSamplers) patterns.emplace_back(type, makeSampler(type, sampleCount));
+  patterns.emplace_back("ldsampler (progressive)", makeSampler("ldsampler", sampleCount)->withProgressivePattern());
+  return patterns;
 }
 
 // The first `dimensions` values of one pixel sample, drawing 1D and 2D dimensions alternately.
@@ -285,41 +294,92 @@ TEST(SamplerStratification, LowDiscrepancyFillsAllElementaryIntervals) {
 // value must be the one computed for its sample alone, whatever order pixels, samples and
 // dimension kinds come in.
 TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
-  for (int n : {1, 4, 16, 64}) {
-    auto sampler = makeSampler("ldsampler", n);
-    const uint64_t seed = 7;
-    int checked = 0;
-    // Pixels revisited, sample indices past the pattern (a second round), and dimensions drawn
-    // as 1D by some samples and as 2D by others. A 1D request takes x of a new point, the next
-    // one its y.
-    for (int pass = 0; pass < 2; ++pass)
-      for (int pixel : {3, 5, 3})
-        for (int i = 0; i < 2 * n; ++i) {
-          sampler->startPixelSample(pixel, 1, i, seed);
-          PixelSampleState reference;
-          reference.start(pixel, 1, i, hashCombine(seed, 0), uint32_t(n));
-          std::optional<float> pendingY;
-          for (int d = 0; d < 12; ++d) {
-            if ((d + i + pass) % 3 != 0 && pendingY) {
-              ASSERT_EQ(sampler->get1D(), *pendingY) << "n " << n << ", pixel " << pixel << ", sample " << i;
-              pendingY.reset();
+  for (bool progressive : {false, true})
+    for (int n : {1, 4, 16, 64}) {
+      auto sampler = makeSampler("ldsampler", n);
+      if (progressive) sampler = sampler->withProgressivePattern();
+      const uint64_t seed = 7;
+      int checked = 0;
+      // Pixels revisited, sample indices past the pattern (a second round), and dimensions drawn
+      // as 1D by some samples and as 2D by others. A 1D request takes x of a new point, the next
+      // one its y.
+      for (int pass = 0; pass < 2; ++pass)
+        for (int pixel : {3, 5, 3})
+          for (int i = 0; i < 2 * n; ++i) {
+            sampler->startPixelSample(pixel, 1, i, seed);
+            PixelSampleState reference;
+            reference.start(pixel, 1, i, hashCombine(seed, 0), uint32_t(n));
+            std::optional<float> pendingY;
+            for (int d = 0; d < 12; ++d) {
+              if ((d + i + pass) % 3 != 0 && pendingY) {
+                ASSERT_EQ(sampler->get1D(), *pendingY) << "n " << n << ", pixel " << pixel << ", sample " << i;
+                pendingY.reset();
+                ++checked;
+                continue;
+              }
+              Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n),
+                                                             reference.nextDimensionHash(), progressive);
+              if ((d + i + pass) % 3 == 0) {
+                Vec2 got = sampler->get2D();
+                ASSERT_EQ(got.x, expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+                ASSERT_EQ(got.y, expected.y) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
+              } else {
+                ASSERT_EQ(sampler->get1D(), expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i;
+                pendingY = expected.y;
+              }
               ++checked;
-              continue;
             }
-            Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n), reference.nextDimensionHash());
-            if ((d + i + pass) % 3 == 0) {
-              Vec2 got = sampler->get2D();
-              ASSERT_EQ(got.x, expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
-              ASSERT_EQ(got.y, expected.y) << "n " << n << ", pixel " << pixel << ", sample " << i << ", dim " << d;
-            } else {
-              ASSERT_EQ(sampler->get1D(), expected.x) << "n " << n << ", pixel " << pixel << ", sample " << i;
-              pendingY = expected.y;
-            }
-            ++checked;
           }
+      EXPECT_EQ(checked, 2 * 3 * 2 * n * 12);
+    }
+}
+
+// The progressive pattern: every aligned block of 2^k sample indices (a power-of-two prefix
+// among them) fills all elementary intervals of 2^k cells, in every dimension. The scene's own
+// pattern does so only for the whole pattern: its prefixes are random subsets of it.
+TEST(SamplerStratification, ProgressiveLowDiscrepancyBlocksFillAllElementaryIntervals) {
+  const int log2n = 6, n = 1 << log2n;
+  auto progressive = makeSampler("ldsampler", n)->withProgressivePattern();
+  auto shuffled = makeSampler("ldsampler", n);
+  int shuffledPrefixesStratified = 0, shuffledPrefixes = 0;
+  for (int pixel = 0; pixel < 20; ++pixel)
+    for (int dimension = 0; dimension < 3; ++dimension) {
+      // Dimension `dimension` of samples [0, n) of both patterns, sample index -> point.
+      auto points = [&](Sampler& sampler) {
+        std::vector<Vec2> values;
+        for (int i = 0; i < n; ++i) {
+          sampler.startPixelSample(pixel, 4, i, 5);
+          for (int d = 0; d < dimension; ++d) sampler.get2D();
+          values.push_back(sampler.get2D());
         }
-    EXPECT_EQ(checked, 2 * 3 * 2 * n * 12);
-  }
+        return values;
+      };
+      const std::vector<Vec2> p = points(*progressive), q = points(*shuffled);
+      // Whether points [begin, begin + 2^k) fill every interval of 2^a x 2^(k-a) cells.
+      auto fills = [](const std::vector<Vec2>& values, int begin, int k) {
+        for (int a = 0; a <= k; ++a) {
+          const int nx = 1 << a, ny = (1 << k) / nx;
+          std::vector<int> cells;
+          for (int i = begin; i < begin + (1 << k); ++i)
+            cells.push_back(int(values[i].y * ny) * nx + int(values[i].x * nx));
+          if (!oneInEachCell(cells, 1 << k)) return false;
+        }
+        return true;
+      };
+      for (int k = 1; k <= log2n; ++k) {
+        for (int begin = 0; begin < n; begin += 1 << k)
+          EXPECT_TRUE(fills(p, begin, k))
+              << "block [" << begin << ", " << begin + (1 << k) << "), pixel " << pixel << ", dim " << dimension;
+        if (k >= 2 && k < log2n) {
+          ++shuffledPrefixes;
+          shuffledPrefixesStratified += fills(q, 0, k);
+        }
+      }
+      EXPECT_TRUE(fills(q, 0, log2n));
+    }
+  // A random subset of 4 to 32 of the 64 points is rarely stratified.
+  EXPECT_LT(shuffledPrefixesStratified, shuffledPrefixes / 10)
+      << shuffledPrefixesStratified << " of " << shuffledPrefixes;
 }
 
 TEST(SamplerStratification, MultijitterProjectionsAreStratifiedInBothAxes) {
@@ -340,27 +400,29 @@ TEST(SamplerStratification, MultijitterProjectionsAreStratifiedInBothAxes) {
 }
 
 TEST(SamplerStratification, DimensionsAreNotCorrelated) {
-  for (const std::string& type : kAllSamplers) {
-    auto sampler = makeSampler(type, 16);
-    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
-    int count = 0;
-    for (int pixel = 0; pixel < 500; ++pixel)
-      for (int i = 0; i < 16; ++i) {
-        sampler->startPixelSample(pixel, 0, i, 0);
-        double x = sampler->get1D(), y = sampler->get1D();
-        sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
-        ++count;
-      }
-    double cov = sxy / count - sx / count * sy / count;
-    double r = cov / std::sqrt((sxx / count - sqr(sx / count)) * (syy / count - sqr(sy / count)));
-    EXPECT_LT(std::abs(r), 0.05) << type;
+  for (auto& [type, sampler] : allPatterns(16)) {
+    // Two 1D requests (for ldsampler one point's x and y) and the x of two separate 2D dimensions.
+    for (bool separate : {false, true}) {
+      double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+      int count = 0;
+      for (int pixel = 0; pixel < 500; ++pixel)
+        for (int i = 0; i < 16; ++i) {
+          sampler->startPixelSample(pixel, 0, i, 0);
+          double x = separate ? sampler->get2D().x : sampler->get1D();
+          double y = separate ? sampler->get2D().x : sampler->get1D();
+          sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
+          ++count;
+        }
+      double cov = sxy / count - sx / count * sy / count;
+      double r = cov / std::sqrt((sxx / count - sqr(sx / count)) * (syy / count - sqr(sy / count)));
+      EXPECT_LT(std::abs(r), 0.05) << type << (separate ? ", separate dimensions" : "");
+    }
   }
 }
 
 TEST(SamplerUniformity, ChiSquareAgainstUniform) {
   const int bins = 12;  // not aligned with any stratum
-  for (const std::string& type : kAllSamplers) {
-    auto sampler = makeSampler(type, 16);
+  for (auto& [type, sampler] : allPatterns(16)) {
     std::vector<double> observed(bins * bins, 0.0);
     int count = 0;
     for (int pixel = 0; pixel < 4000; ++pixel)

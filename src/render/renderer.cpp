@@ -135,7 +135,13 @@ void forEachTile(const PixelRect& window, const RenderSettings& settings, const 
   });
 }
 
-int pilotSamplesFor(int spp) { return std::clamp(spp / 4, 2, 16); }
+// A quarter of the budget, 2 to 16, rounded down to a power of two: the progressive pattern's
+// prefixes of that size are stratified.
+int pilotSamplesFor(int spp) {
+  int pilot = 2;
+  while (pilot * 2 <= std::min(spp / 4, 16)) pilot *= 2;
+  return pilot;
+}
 
 }  // namespace
 
@@ -209,7 +215,11 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
                   return true;
                 });
   } else {
-    // A pilot for every pixel, the plan, then the rest of each pixel's samples.
+    // A pilot for every pixel, the plan, then the rest of each pixel's samples, from a pattern
+    // whose every power-of-two prefix is stratified: with the scene's pattern the pilot and the
+    // rest were random subsets of it, and simulation3's variance per sample 41 % (64 spp) and 87 %
+    // (256 spp) above a uniform render's.
+    const std::unique_ptr<Sampler> progressive = pattern->withProgressivePattern();
     const int pilot = pilotSamplesFor(spp);
     const size_t pixelCount = size_t(width) * size_t(height);
     std::vector<PixelSums> sums(pixelCount);
@@ -226,7 +236,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
       nonFinite += pixelNonFinite;
       return finished;
     };
-    forEachTile(window, settings, *pattern, 0, 0, 2 * tileCount, cancelled,
+    forEachTile(window, settings, *progressive, 0, 0, 2 * tileCount, cancelled,
                 [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                   size_t i = windowIndex(x, y);
                   pilotPixels[i].seen = pixels.sees(x, y);
@@ -239,7 +249,7 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
         pilotPixels[i].sumSquares = sums[i].luminanceSquares;
       }
       plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
-      forEachTile(window, settings, *pattern, 0, tileCount, 2 * tileCount, cancelled,
+      forEachTile(window, settings, *progressive, 0, tileCount, 2 * tileCount, cancelled,
                   [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
                     size_t i = windowIndex(x, y);
                     return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);

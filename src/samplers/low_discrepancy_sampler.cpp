@@ -8,9 +8,14 @@ namespace columba {
 
 namespace {
 
-// Which of the pattern's points sample `index` gets in a dimension.
-inline uint32_t shuffled(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash) {
-  return permutationElementPowerOfTwo(index, sampleCount - 1, uint32_t(dimensionHash));
+// Which of the pattern's points sample `index` gets in a dimension: a random permutation, or for
+// the progressive pattern the nested scrambling of sobol.h applied to the index read top bit first
+// (each bit flipped as a function of the bits above it).
+inline uint32_t shuffled(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash, bool progressive) {
+  if (!progressive) return permutationElementPowerOfTwo(index, sampleCount - 1, uint32_t(dimensionHash));
+  if (sampleCount == 1) return 0;
+  const int shift = __builtin_clz(sampleCount - 1);  // 32 - log2(sampleCount)
+  return owenScrambleReversed(reverseBits(index << shift), uint32_t(dimensionHash)) >> shift;
 }
 
 // Scramble seeds of a 2D dimension's two coordinates.
@@ -24,8 +29,8 @@ inline float coordinate1(uint32_t point, uint32_t seed) {
 
 // The tables, a pass per step so that each loop vectorises; built for AVX2 too, chosen at run time.
 __attribute__((target_clones("avx2", "default"))) void fillShuffled(uint32_t sampleCount, uint64_t dimensionHash,
-                                                                    uint32_t* points) {
-  for (uint32_t i = 0; i < sampleCount; ++i) points[i] = shuffled(i, sampleCount, dimensionHash);
+                                                                    bool progressive, uint32_t* points) {
+  for (uint32_t i = 0; i < sampleCount; ++i) points[i] = shuffled(i, sampleCount, dimensionHash, progressive);
 }
 
 __attribute__((target_clones("avx2", "default"))) void fillScrambled(uint32_t count, const uint32_t* reversed,
@@ -45,8 +50,8 @@ __attribute__((target_clones("avx2", "default"))) void fillSobolDimension1(uint3
 
 }  // namespace
 
-Vec2 LowDiscrepancySampler::point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash) {
-  uint32_t point = shuffled(index, sampleCount, dimensionHash);
+Vec2 LowDiscrepancySampler::point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash, bool progressive) {
+  uint32_t point = shuffled(index, sampleCount, dimensionHash, progressive);
   uint64_t seeds = scrambleSeeds2D(dimensionHash);
   return {coordinate0(point, uint32_t(seeds)), coordinate1(point, uint32_t(seeds >> 32))};
 }
@@ -61,7 +66,7 @@ void LowDiscrepancySampler::fill(DimensionTable& t, uint64_t dimensionHash) {
   t.generation = state_.patternGeneration();
   t.values.resize(2 * size_t(n));
   scratch_.resize(2 * size_t(n));
-  fillShuffled(n, dimensionHash, scratch_.data());
+  fillShuffled(n, dimensionHash, progressive_, scratch_.data());
   uint64_t seeds = scrambleSeeds2D(dimensionHash);
   fillScrambled(n, scratch_.data(), uint32_t(seeds), t.values.data());
   uint32_t* sobol = scratch_.data() + n;
@@ -85,7 +90,7 @@ Vec2 LowDiscrepancySampler::get2D() { return nextPoint(); }
 Vec2 LowDiscrepancySampler::nextPoint() {
   uint64_t hash = state_.nextDimensionHash();
   if (const DimensionTable* t = table(hash)) return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
-  return point2D(state_.index, uint32_t(sampleCount_), hash);
+  return point2D(state_.index, uint32_t(sampleCount_), hash, progressive_);
 }
 
 int LowDiscrepancySampler::patternSize(int count) {

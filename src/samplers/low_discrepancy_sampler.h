@@ -13,6 +13,15 @@
 // 256 spp than separate 1D sequences (Mitsuba's ldsampler), and no change on scenes where the two
 // do not interact.
 //
+// Which sample index gets which point of a dimension is a random permutation per dimension. The
+// progressive pattern (withProgressivePattern) instead scrambles the index's bits from the most
+// significant down, which maps every aligned block of 2^k sample indices onto an aligned block of
+// the sequence, a (0, k, 2)-net: any power-of-two prefix of a pixel's samples is stratified by
+// itself. It pairs the dimensions less independently: on simulation3, 3 % more variance per
+// sample at 64 and 256 spp than the full permutation, so only adaptive sampling, whose pilot and
+// rest are such prefixes, uses it (there it lowers the variance per sample by 26 % at 64 spp and
+// 45 % at 256).
+//
 // The renderer draws a pixel's samples one after another, and every sample asks for the same
 // first dimensions: those are computed for all of the pixel's samples at once, the first time
 // the pixel asks for them, in a loop the compiler vectorises. The values are the same as one at
@@ -30,10 +39,14 @@ class Properties;
 class LowDiscrepancySampler : public Sampler {
  public:
   // sampleCount must be a power of two.
-  LowDiscrepancySampler(int sampleCount, uint64_t seed) : Sampler(sampleCount), seed_(seed) {}
+  LowDiscrepancySampler(int sampleCount, uint64_t seed, bool progressive = false)
+      : Sampler(sampleCount), seed_(seed), progressive_(progressive) {}
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<LowDiscrepancySampler>(*this); }
   std::unique_ptr<Sampler> withSampleCount(int count) const override {
-    return std::make_unique<LowDiscrepancySampler>(patternSize(count), seed_);
+    return std::make_unique<LowDiscrepancySampler>(patternSize(count), seed_, progressive_);
+  }
+  std::unique_ptr<Sampler> withProgressivePattern() const override {
+    return std::make_unique<LowDiscrepancySampler>(sampleCount_, seed_, true);
   }
   // The power of two at or above `count`.
   static int patternSize(int count);
@@ -42,7 +55,7 @@ class LowDiscrepancySampler : public Sampler {
   Vec2 get2D() override;
 
   // A dimension's value one sample at a time, without the per-pixel tables.
-  static Vec2 point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash);
+  static Vec2 point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash, bool progressive);
 
  private:
   // A dimension's values for every sample index of the current pattern: all x, then all y.
@@ -66,6 +79,7 @@ class LowDiscrepancySampler : public Sampler {
   Vec2 nextPoint();
 
   uint64_t seed_;
+  bool progressive_;
   bool hasPendingY_ = false;  // a 1D request took x of a point whose y is next
   float pendingY_ = 0.0f;
   PixelSampleState state_;

@@ -17,6 +17,11 @@ class Sampler : public Object {
   // sample_count (Mitsuba's set_sample_count): a render of `count` samples stratifies them
   // together, where the first `count` of a larger pattern would be a random subset of it.
   virtual std::unique_ptr<Sampler> withSampleCount(int count) const = 0;
+  // The same sampler with a pattern whose every power-of-two prefix of a pixel's samples is
+  // stratified by itself, for renders that take a pixel's samples a part at a time (adaptive
+  // sampling's pilot, then the rest). Samplers without such a pattern return a copy of themselves:
+  // a part of their pattern is then a random subset of it.
+  virtual std::unique_ptr<Sampler> withProgressivePattern() const { return clone(); }
   virtual void startPixelSample(int px, int py, int sampleIndex, uint64_t seed) = 0;
   // The next dimensions of the current sample, in [0, 1).
   virtual float get1D() = 0;
