@@ -11,11 +11,20 @@ namespace {
 // Which of the pattern's points sample `index` gets in a dimension: a random permutation, or for
 // the progressive pattern the nested scrambling of sobol.h applied to the index read top bit first
 // (each bit flipped as a function of the bits above it).
+inline uint32_t permuted(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash) {
+  return permutationElementPowerOfTwo(index, sampleCount - 1, uint32_t(dimensionHash));
+}
+// The index given as index << shift, shift = 32 - log2(sampleCount) (sampleCount > 1): its top bit
+// first.
+inline uint32_t scrambledFromTheTop(uint32_t shiftedIndex, int shift, uint64_t dimensionHash) {
+  return owenScrambleReversed(reverseBits(shiftedIndex), uint32_t(dimensionHash)) >> shift;
+}
+inline int scrambleShift(uint32_t sampleCount) { return __builtin_clz(sampleCount - 1); }
 inline uint32_t shuffled(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash, bool progressive) {
-  if (!progressive) return permutationElementPowerOfTwo(index, sampleCount - 1, uint32_t(dimensionHash));
+  if (!progressive) return permuted(index, sampleCount, dimensionHash);
   if (sampleCount == 1) return 0;
-  const int shift = __builtin_clz(sampleCount - 1);  // 32 - log2(sampleCount)
-  return owenScrambleReversed(reverseBits(index << shift), uint32_t(dimensionHash)) >> shift;
+  const int shift = scrambleShift(sampleCount);
+  return scrambledFromTheTop(index << shift, shift, dimensionHash);
 }
 
 // Scramble seeds of a 2D dimension's two coordinates.
@@ -30,7 +39,17 @@ inline float coordinate1(uint32_t point, uint32_t seed) {
 // The tables, a pass per step so that each loop vectorises; built for AVX2 too, chosen at run time.
 __attribute__((target_clones("avx2", "default"))) void fillShuffled(uint32_t sampleCount, uint64_t dimensionHash,
                                                                     bool progressive, uint32_t* points) {
-  for (uint32_t i = 0; i < sampleCount; ++i) points[i] = shuffled(i, sampleCount, dimensionHash, progressive);
+  // A loop per kind, without branches, so that each vectorises.
+  if (!progressive) {
+    for (uint32_t i = 0; i < sampleCount; ++i) points[i] = permuted(i, sampleCount, dimensionHash);
+  } else if (sampleCount == 1) {
+    points[0] = 0;
+  } else {
+    // Two passes: GCC does not vectorise the bit reversal of the loop counter itself.
+    const int shift = scrambleShift(sampleCount);
+    for (uint32_t i = 0; i < sampleCount; ++i) points[i] = i << shift;
+    for (uint32_t i = 0; i < sampleCount; ++i) points[i] = scrambledFromTheTop(points[i], shift, dimensionHash);
+  }
 }
 
 __attribute__((target_clones("avx2", "default"))) void fillScrambled(uint32_t count, const uint32_t* reversed,
