@@ -242,6 +242,53 @@ TEST(BarbuleBSDF, SampleWeightIsItsLobesValueOverItsDensity) {
   EXPECT_GT(trt, 10000);
 }
 
+// A caller that reads no pdf (BSDFVertexRequest::samplePdf false, the direct integrator without
+// emitter samples) gets an R sample's weight in closed form, F G_o v W cos(theta_i) / (H |cos_i|
+// s_R), in which the NDF, the visible-normal density and the half vector cancel; a TRT sample skips
+// R's density. The weight must be the one the full computation gives for the same sample. They
+// differ only where the sampled normal lies on the edge of what reflects (theta at +-thetaD, the
+// offset at the end of the lit arc): recomputed from the half vector, rounding can put it outside,
+// and the full computation then drops the sample.
+TEST(BarbuleBSDF, AWeightWithoutPdfIsTheWeightWithIt) {
+  int compared = 0, differing = 0;
+  for (bool byCaller : {false, true}) {
+    BSDFContext ctx;
+    ctx.passThroughByCaller = byCaller;
+    for (const ParameterSet& set : parameterSets()) {
+      BarbuleBSDF bsdf(set.params, BarbuleBSDF::Role::CameraIncident);
+      PCG32 rng(5);
+      for (const Vec3& wi : incidentDirections())
+        for (int i = 0; i < 2000; ++i) {
+          BSDFVertexRequest request;
+          request.sample = true;
+          request.uComponent = rng.nextFloat();
+          request.u = Vec2(rng.nextFloat(), rng.nextFloat());
+          std::optional<BSDFSample> full = bsdf.queryVertex(ctx, wi, kWavelengths, request).sampled;
+          request.samplePdf = false;
+          std::optional<BSDFSample> quick = bsdf.queryVertex(ctx, wi, kWavelengths, request).sampled;
+          if (!full && !quick) continue;
+          ++compared;
+          if (!full || !quick) {
+            ++differing;
+            continue;
+          }
+          ASSERT_EQ(full->wo, quick->wo) << set.name;
+          ASSERT_EQ(full->passThrough, quick->passThrough);
+          if (!quick->passThrough) {
+            EXPECT_EQ(quick->pdf, 0.0f);
+          }
+          bool same = true;
+          for (int k = 0; k < kSpectrumSamples; ++k)
+            same = same && std::abs(full->weight[k] - quick->weight[k]) <= 1e-4f * std::abs(full->weight[k]) + 1e-7f;
+          differing += !same;
+        }
+    }
+  }
+  std::printf("%d of %d samples weigh differently without the pdf\n", differing, compared);
+  EXPECT_GT(compared, 100000);
+  EXPECT_LE(differing, compared / 2000);
+}
+
 namespace {
 
 // Integral over omega_o of each lobe's f |cos theta_o|, by the midpoint rule on an equal-area grid

@@ -359,9 +359,15 @@ BarbuleBSDF::LobeDensities BarbuleBSDF::samplingPdfs(const PointModel& point, co
       if (visible > 0.0f) density.reflection = scattering * shareR * normalPdf / visible / (4.0f * cosHalf);
     }
   }
-  density.trt =
-      scattering * choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() * std::abs(out.w.z) * kInvPi;
+  density.trt = trtSamplingPdf(in, choice, out);
   return density;
+}
+
+float BarbuleBSDF::trtSamplingPdf(const Incident& in, const LobeChoice& choice, const Outgoing& out) {
+  if (!in.scatters) return 0.0f;
+  // The offset uniform on the lit width and TRT's share there, then wo cosine-distributed.
+  return (1.0f - choice.transmission) * choice.trtShareIntegral(out.common.lo, out.common.hi) / in.arc.width() *
+         std::abs(out.w.z) * kInvPi;
 }
 
 Spectrum BarbuleBSDF::evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const {
@@ -425,13 +431,13 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
     q.toLight =
         request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   }
-  if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u);
+  if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u, request.samplePdf);
   if (request.passThrough) q.passThrough = Spectrum(transmission(point.geometry, in));
   return q;
 }
 
 std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                                                float uComponent, Vec2 u) const {
+                                                float uComponent, Vec2 u, bool withPdf) const {
   const BarbuleCrossSection& geometry = point.geometry;
   const Vec3& wi = in.w;
   BSDFSample bs;
@@ -453,6 +459,8 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   const Vec2 localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
   const bool reflected = u.x < shareR;
   float mirrorVisible = -1.0f;  // the share of visible angles an R sample is drawn with
+  Vec3 m;                       // an R sample's normal
+  Vec2 mWorld;                  // and its in-plane part
   if (reflected) {
     // theta among the angles whose mirror direction a neighbour does not mask: the others could
     // only be rejected below.
@@ -460,12 +468,14 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
     mirrorVisible = angles.visibleFraction();
     if (!(mirrorVisible > 0.0f)) return std::nullopt;
     float theta = angles.sample(u.y);
-    bs.wo = reflect(wi, barbuleNormal(angles.worldNormal(), std::cos(theta), std::sin(theta)));
+    mWorld = angles.worldNormal();
+    m = barbuleNormal(mWorld, std::cos(theta), std::sin(theta));
+    bs.wo = reflect(wi, m);
   } else {
-    Vec3 m = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);
+    Vec3 facing = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);
     // What u.x has left within the TRT share drives the direction with u.y.
     Vec3 w = sampleCosineHemisphere(Vec2(clampf((u.x - shareR) / (1.0f - shareR), 0.0f, 1.0f), u.y));
-    bs.wo = dot(w, m) >= 0.0f ? w : -w;
+    bs.wo = dot(w, facing) >= 0.0f ? w : -w;
   }
   // The scattering point must be visible from wo.
   LitArc woArc = geometry.litArc(inPlane(bs.wo).dir);
@@ -478,6 +488,27 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
     bs.weight = f.value / bs.pdf;
     return bs;
   }
+  if (!withPdf && reflected) {
+    // f_R |cos_o| / p_R in closed form, at the sampled normal m (docs/model.md section 8). With
+    // A = omega_i's projection on m's in-plane normal, rho the radius of curvature and M the mass
+    // of the longitudinal density ((A cos theta + B sin theta)+ over |theta| < thetaD),
+    //   f_R |cos_o| = F D S_i S_o / (4 |cos_i|),  D = rho / (H 2 sin(thetaD) cos(theta_m)),
+    //   S_i = 2 sin(thetaD) A / M  (longitudinalShadowing; S_o likewise for omega_o),
+    //   p_R = s_R p_m / (v 4 omega_i . m),  p_m = rho A (omega_i . m) / (cos(theta_i) W M cos(theta_m))
+    // (s_R the R share drawn with, v the visible share of angles, W the lit width, cos(theta_i)
+    // the length of omega_i's in-plane part: visibleNormalPdf), so that
+    //   f_R |cos_o| / p_R = F S_o v W cos(theta_i) / (H |cos_i| s_R):
+    // rho, M, theta_m and the half vector cancel. The general path below computes each factor and
+    // agrees with this within float rounding (BarbuleBSDF.AWeightWithoutPdfIsTheWeightWithIt).
+    const float scattering = 1.0f - choice.transmission;
+    float shadowOut = longitudinalShadowing(inPlaneProjection(bs.wo, mWorld), bs.wo.y);
+    float scale = shadowOut * mirrorVisible * in.arc.width() * in.plane.cosTheta /
+                  (geometry.spacing() * std::abs(wi.z) * scattering * shareR);
+    FreeStandingFilm::Reflectance film = point.film.reflectance(dot(wi, m));
+    if (!(scale > 0.0f) || bs.wo.z == 0.0f) return std::nullopt;
+    bs.weight = (0.5f * scale) * (film.s + film.p);
+    return bs;
+  }
   // Each lobe is estimated by the samples it draws: an R sample weighs f_R |cos| over R's density,
   // a TRT sample f_TRT |cos| over TRT's, and bs.pdf is their sum, the density of wo. For any
   // function g of wo, E[weight g] is then the integral of (f_R + f_TRT) |cos| g, so MIS weights
@@ -485,8 +516,10 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
   // mixture's eval / pdf instead, simulation3's variance per sample was the same, 0.0950 against
   // 0.0954, and the time 9 % longer.)
   Outgoing out = outgoing(point, in, bs.wo, woArc);
-  LobeDensities density = samplingPdfs(point, in, choice, out, mirrorVisible);
-  bs.pdf = density.total();
+  // Without the pdf, a TRT sample needs only its own lobe's density.
+  LobeDensities density = withPdf ? samplingPdfs(point, in, choice, out, mirrorVisible)
+                                  : LobeDensities{0.0f, trtSamplingPdf(in, choice, out)};
+  bs.pdf = withPdf ? density.total() : 0.0f;
   const float lobeDensity = reflected ? density.reflection : density.trt;
   if (!(lobeDensity > 0.0f) || bs.wo.z == 0.0f) return std::nullopt;
   Spectrum value = reflected ? reflection(point, in, out) : trt(point, in, out);

@@ -130,9 +130,11 @@ class BarbuleBSDF : public BSDF {
   static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
   LobeDensities samplingPdfs(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
                              float mirrorVisible = -1.0f) const;
-  // sample, once the point's model, omega_i's quantities and the lobe choice are known.
+  static float trtSamplingPdf(const Incident& in, const LobeChoice& choice, const Outgoing& out);
+  // sample, once the point's model, omega_i's quantities and the lobe choice are known; without
+  // `withPdf` the sample's pdf is left 0.
   std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                                     float uComponent, Vec2 u) const;
+                                     float uComponent, Vec2 u, bool withPdf = true) const;
 
   BarbuleParameters params_;
   Role role_;

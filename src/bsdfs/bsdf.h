@@ -59,6 +59,9 @@ struct BSDFVertexRequest {
   bool sample = false;            // draw a continuation from uComponent and u
   float uComponent = 0.0f;
   Vec2 u;
+  // false: the caller reads only the sample's direction and weight (it weighs no other strategy
+  // against it), and the BSDF may leave the sample's pdf 0 where working it out costs extra.
+  bool samplePdf = true;
   bool passThrough = false;
 };
 struct BSDFVertexQueries {

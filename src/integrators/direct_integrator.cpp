@@ -48,6 +48,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
       request.sample = true;
       request.uComponent = sampler.get1D();
       request.u = sampler.get2D();
+      request.samplePdf = emitterSamples_ > 0;  // for MIS only
       request.passThrough = !passThrough && bsdf.hasPassThrough();
       BSDFVertexQueries queries = bsdf.queryVertex(ctx, wi, wl, request);
       if (request.passThrough) passThrough = queries.passThrough;
