@@ -99,6 +99,40 @@ bool oneInEachCell(const std::vector<int>& cells, int count) {
   return true;
 }
 
+// The smallest t for which the 2^k `points` put exactly 2^t in every elementary interval of
+// 2^(k-t) cells (2^a x 2^(k-t-a) for every a): the t of a (t, k, 2)-net, 0 the best possible.
+int netQuality(const std::vector<Vec2>& points) {
+  int k = 0;
+  while ((size_t(1) << k) < points.size()) ++k;
+  for (int t = 0; t < k; ++t) {
+    bool all = true;
+    for (int a = 0; a <= k - t && all; ++a) {
+      const int nx = 1 << a, ny = 1 << (k - t - a);
+      std::vector<int> counts(size_t(nx) * ny, 0);
+      for (Vec2 u : points) ++counts[size_t(int(u.y * ny)) * nx + int(u.x * nx)];
+      for (int c : counts) all = all && c == (1 << t);
+    }
+    if (all) return t;
+  }
+  return k;
+}
+
+// Point `point` (the point-th 2D request) of samples [begin, begin + count) of a pixel.
+std::vector<Vec2> pointOfSamples(Sampler& sampler, int pixel, int point, int begin, int count) {
+  std::vector<Vec2> values;
+  for (int i = begin; i < begin + count; ++i) {
+    sampler.startPixelSample(pixel, 2, i, 9);
+    for (int d = 0; d < point; ++d) sampler.get2D();
+    values.push_back(sampler.get2D());
+  }
+  return values;
+}
+
+// The low-discrepancy sampler's first four points come from one Sobol sequence; each is a
+// (t, 2)-sequence with at most this t for 4 to 512 samples. The later points are padded
+// (0, 2)-sequences.
+const int kLowDiscrepancyPointQuality[] = {2, 1, 1, 2, 0, 0};
+
 }  // namespace
 
 TEST(SamplerFactories, RoundSampleCountsAsMitsubaDoes) {
@@ -222,6 +256,8 @@ TEST(SamplerStratification, EveryOneDimensionalStratumGetsOneSample) {
     }
 }
 
+// The fifth 2D point of a sample: for ldsampler a padded one (its first four are nets of lower
+// quality, tested below).
 TEST(SamplerStratification, TwoDimensionalGridCellsGetOneSampleEach) {
   for (const std::string& type : kStratifiedSamplers)
     for (int n : {16, 64}) {
@@ -231,6 +267,7 @@ TEST(SamplerStratification, TwoDimensionalGridCellsGetOneSampleEach) {
         std::vector<int> cells;
         for (int i = 0; i < n; ++i) {
           sampler->startPixelSample(pixel, 1, i, 0);
+          for (int skipped = 0; skipped < 4; ++skipped) sampler->get2D();
           Vec2 u = sampler->get2D();
           cells.push_back(int(u.y * res) * res + int(u.x * res));
         }
@@ -239,13 +276,13 @@ TEST(SamplerStratification, TwoDimensionalGridCellsGetOneSampleEach) {
     }
 }
 
-// Two 1D requests of a sample, with 2D ones between them, are the two coordinates of one point
-// of a (0, 2)-sequence: jointly stratified over every elementary interval.
+// Two 1D requests of a sample, with 2D ones between them, are the two coordinates of one point:
+// jointly stratified as that point is (point 0 and point 2 here).
 TEST(SamplerStratification, LowDiscrepancyPairsOneDimensionalRequests) {
   const int log2n = 6, n = 1 << log2n;
   auto sampler = makeSampler("ldsampler", n);
   for (int pixel = 0; pixel < 20; ++pixel) {
-    std::vector<Vec2> first, second;
+    std::vector<Vec2> first, second, firstAsPoint, secondAsPoint;
     for (int i = 0; i < n; ++i) {
       sampler->startPixelSample(pixel, 4, i, 3);
       float a = sampler->get1D();
@@ -256,37 +293,64 @@ TEST(SamplerStratification, LowDiscrepancyPairsOneDimensionalRequests) {
       float d = sampler->get1D();
       first.emplace_back(a, b);
       second.emplace_back(c, d);
+      sampler->startPixelSample(pixel, 4, i, 3);
+      firstAsPoint.push_back(sampler->get2D());
+      sampler->get2D();
+      secondAsPoint.push_back(sampler->get2D());
     }
-    for (const std::vector<Vec2>* points : {&first, &second})
-      for (int k = 0; k <= log2n; ++k) {
-        const int nx = 1 << k, ny = n / nx;
-        std::vector<int> cells;
-        for (Vec2 u : *points) cells.push_back(int(u.y * ny) * nx + int(u.x * nx));
-        EXPECT_TRUE(oneInEachCell(cells, n)) << nx << " x " << ny << ", pixel " << pixel;
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(first[i].x, firstAsPoint[i].x);
+      ASSERT_EQ(first[i].y, firstAsPoint[i].y);
+      ASSERT_EQ(second[i].x, secondAsPoint[i].x);
+      ASSERT_EQ(second[i].y, secondAsPoint[i].y);
+    }
+    EXPECT_LE(netQuality(first), kLowDiscrepancyPointQuality[0]) << "pixel " << pixel;
+    EXPECT_LE(netQuality(second), kLowDiscrepancyPointQuality[2]) << "pixel " << pixel;
+  }
+}
+
+// Every point of the scene's pattern and of the progressive one, over all of a pixel's samples
+// and over every aligned block of 2^k of them, is a net of its point's quality.
+TEST(SamplerStratification, LowDiscrepancyPointsAreNetsOfTheirQuality) {
+  for (int log2n = 2; log2n <= 9; ++log2n) {
+    const int n = 1 << log2n;
+    auto shuffled = makeSampler("ldsampler", n);
+    auto progressive = shuffled->withProgressivePattern();
+    for (int pixel = 0; pixel < 6; ++pixel)
+      for (int point = 0; point < 6; ++point) {
+        std::vector<Vec2> all = pointOfSamples(*shuffled, pixel, point, 0, n);
+        EXPECT_LE(netQuality(all), kLowDiscrepancyPointQuality[point]) << "n " << n << ", point " << point;
+        for (int k = 2; k <= log2n; ++k)
+          for (int begin = 0; begin < n; begin += 1 << k)
+            EXPECT_LE(netQuality(pointOfSamples(*progressive, pixel, point, begin, 1 << k)),
+                      kLowDiscrepancyPointQuality[point])
+                << "progressive, samples [" << begin << ", " << begin + (1 << k) << "), point " << point;
       }
   }
 }
 
-TEST(SamplerStratification, LowDiscrepancyFillsAllElementaryIntervals) {
-  for (int log2n : {4, 6}) {
-    const int n = 1 << log2n;
-    auto sampler = makeSampler("ldsampler", n);
-    for (int pixel = 0; pixel < 20; ++pixel)
-      for (int dimension = 0; dimension < 3; ++dimension) {
-        std::vector<Vec2> points;
-        for (int i = 0; i < n; ++i) {
-          sampler->startPixelSample(pixel, 2, i, 9);
-          for (int d = 0; d < dimension; ++d) sampler->get2D();
-          points.push_back(sampler->get2D());
-        }
-        // Intervals of 2^a x 2^b cells with a + b = log2 n.
-        for (int a = 0; a <= log2n; ++a) {
-          const int nx = 1 << a, ny = n / nx;
-          std::vector<int> cells;
-          for (Vec2 u : points) cells.push_back(int(u.y * ny) * nx + int(u.x * nx));
-          EXPECT_TRUE(oneInEachCell(cells, n)) << nx << " x " << ny << ", pixel " << pixel << ", dim " << dimension;
-        }
-      }
+// The first four points are stratified together: any coordinate of one and any of another form a
+// (t, 2)-net with t <= 3 at 256 samples. The padded points' coordinates are paired at random,
+// which is a far worse net.
+TEST(SamplerStratification, LowDiscrepancyFirstPointsAreStratifiedTogether) {
+  const int n = 256;
+  auto sampler = makeSampler("ldsampler", n);
+  for (int pixel = 0; pixel < 4; ++pixel) {
+    std::vector<std::vector<Vec2>> points;
+    for (int point = 0; point < 6; ++point) points.push_back(pointOfSamples(*sampler, pixel, point, 0, n));
+    auto coordinate = [&](int point, int axis, int i) { return axis == 0 ? points[point][i].x : points[point][i].y; };
+    auto pairQuality = [&](int p, int a, int q, int b) {
+      std::vector<Vec2> pairs;
+      for (int i = 0; i < n; ++i) pairs.emplace_back(coordinate(p, a, i), coordinate(q, b, i));
+      return netQuality(pairs);
+    };
+    for (int p = 0; p < 4; ++p)
+      for (int q = p + 1; q < 4; ++q)
+        for (int a = 0; a < 2; ++a)
+          for (int b = 0; b < 2; ++b)
+            EXPECT_LE(pairQuality(p, a, q, b), 3) << "points " << p << ", " << q << ", pixel " << pixel;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) EXPECT_GE(pairQuality(4, a, 5, b), 5) << "padded points, pixel " << pixel;
   }
 }
 
@@ -310,6 +374,7 @@ TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
             PixelSampleState reference;
             reference.start(pixel, 1, i, hashCombine(seed, 0), uint32_t(n));
             std::optional<float> pendingY;
+            uint32_t point = 0;
             for (int d = 0; d < 12; ++d) {
               if ((d + i + pass) % 3 != 0 && pendingY) {
                 ASSERT_EQ(sampler->get1D(), *pendingY) << "n " << n << ", pixel " << pixel << ", sample " << i;
@@ -317,7 +382,7 @@ TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
                 ++checked;
                 continue;
               }
-              Vec2 expected = LowDiscrepancySampler::point2D(reference.index, uint32_t(n),
+              Vec2 expected = LowDiscrepancySampler::point2D(point++, reference.index, uint32_t(n),
                                                              reference.nextDimensionHash(), progressive);
               if ((d + i + pass) % 3 == 0) {
                 Vec2 got = sampler->get2D();
@@ -334,42 +399,26 @@ TEST(SamplerDeterminism, LowDiscrepancyTablesMatchPointByPointValues) {
     }
 }
 
-// The progressive pattern: every aligned block of 2^k sample indices (a power-of-two prefix
-// among them) fills all elementary intervals of 2^k cells, in every dimension. The scene's own
-// pattern does so only for the whole pattern: its prefixes are random subsets of it.
+// The progressive pattern of the padded points (from the fifth on): every aligned block of 2^k
+// sample indices (a power-of-two prefix among them) fills all elementary intervals of 2^k cells.
+// The scene's own pattern does so only for the whole pattern: its prefixes are random subsets of
+// it.
 TEST(SamplerStratification, ProgressiveLowDiscrepancyBlocksFillAllElementaryIntervals) {
   const int log2n = 6, n = 1 << log2n;
   auto progressive = makeSampler("ldsampler", n)->withProgressivePattern();
   auto shuffled = makeSampler("ldsampler", n);
   int shuffledPrefixesStratified = 0, shuffledPrefixes = 0;
   for (int pixel = 0; pixel < 20; ++pixel)
-    for (int dimension = 0; dimension < 3; ++dimension) {
-      // Dimension `dimension` of samples [0, n) of both patterns, sample index -> point.
-      auto points = [&](Sampler& sampler) {
-        std::vector<Vec2> values;
-        for (int i = 0; i < n; ++i) {
-          sampler.startPixelSample(pixel, 4, i, 5);
-          for (int d = 0; d < dimension; ++d) sampler.get2D();
-          values.push_back(sampler.get2D());
-        }
-        return values;
-      };
-      const std::vector<Vec2> p = points(*progressive), q = points(*shuffled);
-      // Whether points [begin, begin + 2^k) fill every interval of 2^a x 2^(k-a) cells.
+    for (int point = int(LowDiscrepancySampler::kSobolPoints); point < 7; ++point) {
+      const std::vector<Vec2> p = pointOfSamples(*progressive, pixel, point, 0, n),
+                              q = pointOfSamples(*shuffled, pixel, point, 0, n);
       auto fills = [](const std::vector<Vec2>& values, int begin, int k) {
-        for (int a = 0; a <= k; ++a) {
-          const int nx = 1 << a, ny = (1 << k) / nx;
-          std::vector<int> cells;
-          for (int i = begin; i < begin + (1 << k); ++i)
-            cells.push_back(int(values[i].y * ny) * nx + int(values[i].x * nx));
-          if (!oneInEachCell(cells, 1 << k)) return false;
-        }
-        return true;
+        return netQuality(std::vector<Vec2>(values.begin() + begin, values.begin() + begin + (1 << k))) == 0;
       };
       for (int k = 1; k <= log2n; ++k) {
         for (int begin = 0; begin < n; begin += 1 << k)
           EXPECT_TRUE(fills(p, begin, k))
-              << "block [" << begin << ", " << begin + (1 << k) << "), pixel " << pixel << ", dim " << dimension;
+              << "block [" << begin << ", " << begin + (1 << k) << "), pixel " << pixel << ", point " << point;
         if (k >= 2 && k < log2n) {
           ++shuffledPrefixes;
           shuffledPrefixesStratified += fills(q, 0, k);
@@ -439,14 +488,19 @@ TEST(SamplerUniformity, ChiSquareAgainstUniform) {
   }
 }
 
+namespace {
+// The bump exp(-a (u - c)^2) and its integral over [0, 1], in closed form.
+double bump(double u, double a, double c) { return std::exp(-a * sqr(u - c)); }
+double bumpIntegral(double a, double c) {
+  return 0.5 * std::sqrt(M_PI / a) * (std::erf(std::sqrt(a) * (1.0 - c)) + std::erf(std::sqrt(a) * c));
+}
+}  // namespace
+
 TEST(SamplerIntegration, LowDiscrepancyBeatsIndependent) {
   // A smooth bump whose integral over the unit square is known in closed form.
   const double a = 4.0, cx = 0.3, cy = 0.6;
-  auto f = [&](Vec2 u) { return std::exp(-a * (sqr(u.x - cx) + sqr(u.y - cy))); };
-  auto axisIntegral = [&](double c) {
-    return 0.5 * std::sqrt(M_PI / a) * (std::erf(std::sqrt(a) * (1.0 - c)) + std::erf(std::sqrt(a) * c));
-  };
-  const double exact = axisIntegral(cx) * axisIntegral(cy);
+  auto f = [&](Vec2 u) { return bump(u.x, a, cx) * bump(u.y, a, cy); };
+  const double exact = bumpIntegral(a, cx) * bumpIntegral(a, cy);
   const int n = 256, pixels = 200;
   std::map<std::string, double> rmsError;
   for (const std::string& type : kAllSamplers) {
@@ -467,6 +521,46 @@ TEST(SamplerIntegration, LowDiscrepancyBeatsIndependent) {
         << type << " " << rmsError[type] << " vs independent " << rmsError["independent"];
   // Independent sampling itself is unbiased with the expected O(1/sqrt(n)) error.
   EXPECT_LT(rmsError["independent"], 0.05);
+}
+
+// A product of bumps over the four coordinates of two points: the first points, stratified
+// together, integrate it with less error than two padded points, each stratified only by itself.
+TEST(SamplerIntegration, LowDiscrepancyFirstPointsIntegrateTogether) {
+  const double a = 4.0, centres[4] = {0.3, 0.6, 0.45, 0.7};
+  auto f = [&](Vec2 u, Vec2 v) {
+    return bump(u.x, a, centres[0]) * bump(u.y, a, centres[1]) * bump(v.x, a, centres[2]) * bump(v.y, a, centres[3]);
+  };
+  double exact = 1.0;
+  for (double c : centres) exact *= bumpIntegral(a, c);
+  const int n = 256, pixels = 200;
+  auto sampler = makeSampler("ldsampler", n);
+  auto rmsError = [&](int first, int second) {
+    double squaredError = 0;
+    for (int pixel = 0; pixel < pixels; ++pixel) {
+      std::vector<Vec2> u = pointOfSamples(*sampler, pixel, first, 0, n),
+                        v = pointOfSamples(*sampler, pixel, second, 0, n);
+      double sum = 0;
+      for (int i = 0; i < n; ++i) sum += f(u[i], v[i]);
+      squaredError += sqr(sum / n - exact);
+    }
+    return std::sqrt(squaredError / pixels);
+  };
+  const double together = rmsError(0, 2), padded = rmsError(4, 5);
+  EXPECT_LT(together, 0.5 * padded) << "points 0 and 2: " << together << ", padded points 4 and 5: " << padded;
+  EXPECT_LT(padded, 0.01);
+}
+
+// Each dimension of the table is a (0, 1)-sequence: the first 2^m points fill the 2^m intervals
+// of length 2^-m, one each; dimension 1 agrees with its byte-table form.
+TEST(SobolSequence, EveryDimensionIsStratified) {
+  for (int dimension = 0; dimension < kSobolDimensions; ++dimension)
+    for (int m = 1; m <= 12; ++m) {
+      std::vector<int> cells;
+      for (uint32_t i = 0; i < (1u << m); ++i)
+        cells.push_back(int(reverseBits(sobolReversed(dimension, i)) >> (32 - m)));
+      EXPECT_TRUE(oneInEachCell(cells, 1 << m)) << "dimension " << dimension << ", m " << m;
+    }
+  for (uint32_t index = 0; index < 65536; ++index) ASSERT_EQ(sobolReversed(1, index), sobolDimension1Reversed(index));
 }
 
 TEST(SobolSequence, SecondDimensionMatchesItsGeneratorMatrix) {

@@ -216,9 +216,9 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
                 });
   } else {
     // A pilot for every pixel, the plan, then the rest of each pixel's samples, from a pattern
-    // whose every power-of-two prefix is stratified: with the scene's pattern the pilot and the
-    // rest were random subsets of it, and simulation3's variance per sample 41 % (64 spp) and 87 %
-    // (256 spp) above a uniform render's.
+    // whose every power-of-two prefix is stratified: with ldsampler's padded pattern the pilot and
+    // the rest were random subsets of it, and simulation3's variance per sample 41 % (64 spp) and
+    // 87 % (256 spp) above a uniform render's.
     const std::unique_ptr<Sampler> progressive = pattern->withProgressivePattern();
     const int pilot = pilotSamplesFor(spp);
     const size_t pixelCount = size_t(width) * size_t(height);

@@ -57,22 +57,28 @@ __attribute__((target_clones("avx2", "default"))) void fillScrambled(uint32_t co
   for (uint32_t i = 0; i < count; ++i) out[i] = fractionToFloat(owenScrambleReversed(reversed[i], seed));
 }
 
-// sobolDimension1Reversed of points below `count`, a power of two, as the xor of the generator
+// sobolReversed(dimension, .) of points below `count`, a power of two, as the xor of the generator
 // columns of their set bits, a bit at a time across all points.
-__attribute__((target_clones("avx2", "default"))) void fillSobolDimension1(uint32_t count, const uint32_t* points,
-                                                                           uint32_t* out) {
+__attribute__((target_clones("avx2", "default"))) void fillSobolReversed(uint32_t count, int dimension,
+                                                                         const uint32_t* points, uint32_t* out) {
+  const uint32_t* columns = sobolReversedColumns(dimension);
   for (uint32_t i = 0; i < count; ++i) out[i] = 0;
-  uint32_t column = 1;  // (1 + x)^k over GF(2)
-  for (uint32_t k = 0; (1u << k) < count; ++k, column ^= column << 1)
-    for (uint32_t i = 0; i < count; ++i) out[i] ^= (0u - ((points[i] >> k) & 1u)) & column;
+  for (uint32_t k = 0; (1u << k) < count; ++k)
+    for (uint32_t i = 0; i < count; ++i) out[i] ^= (0u - ((points[i] >> k) & 1u)) & columns[k];
 }
 
 }  // namespace
 
-Vec2 LowDiscrepancySampler::point2D(uint32_t index, uint32_t sampleCount, uint64_t dimensionHash, bool progressive) {
-  uint32_t point = shuffled(index, sampleCount, dimensionHash, progressive);
+Vec2 LowDiscrepancySampler::point2D(uint32_t point, uint32_t index, uint32_t sampleCount, uint64_t dimensionHash,
+                                    bool progressive) {
   uint64_t seeds = scrambleSeeds2D(dimensionHash);
-  return {coordinate0(point, uint32_t(seeds)), coordinate1(point, uint32_t(seeds >> 32))};
+  if (point < kSobolPoints) {
+    const auto [dx, dy] = kSobolPointDimensions[point];
+    return {fractionToFloat(owenScrambleReversed(sobolReversed(dx, index), uint32_t(seeds))),
+            fractionToFloat(owenScrambleReversed(sobolReversed(dy, index), uint32_t(seeds >> 32)))};
+  }
+  uint32_t shuffledIndex = shuffled(index, sampleCount, dimensionHash, progressive);
+  return {coordinate0(shuffledIndex, uint32_t(seeds)), coordinate1(shuffledIndex, uint32_t(seeds >> 32))};
 }
 
 void LowDiscrepancySampler::startPixelSample(int px, int py, int sampleIndex, uint64_t seed) {
@@ -80,16 +86,27 @@ void LowDiscrepancySampler::startPixelSample(int px, int py, int sampleIndex, ui
   hasPendingY_ = false;
 }
 
-void LowDiscrepancySampler::fill(DimensionTable& t, uint64_t dimensionHash) {
+void LowDiscrepancySampler::fill(DimensionTable& t, uint32_t point, uint64_t dimensionHash) {
   const uint32_t n = uint32_t(sampleCount_);
   t.generation = state_.patternGeneration();
   t.values.resize(2 * size_t(n));
   scratch_.resize(2 * size_t(n));
-  fillShuffled(n, dimensionHash, progressive_, scratch_.data());
-  uint64_t seeds = scrambleSeeds2D(dimensionHash);
-  fillScrambled(n, scratch_.data(), uint32_t(seeds), t.values.data());
+  uint32_t* indices = scratch_.data();
   uint32_t* sobol = scratch_.data() + n;
-  fillSobolDimension1(n, scratch_.data(), sobol);
+  const uint64_t seeds = scrambleSeeds2D(dimensionHash);
+  if (point < kSobolPoints) {
+    // Sample index i takes point i of the sequence in both of the point's dimensions.
+    for (uint32_t i = 0; i < n; ++i) indices[i] = i;
+    const auto [dx, dy] = kSobolPointDimensions[point];
+    fillSobolReversed(n, dx, indices, sobol);
+    fillScrambled(n, sobol, uint32_t(seeds), t.values.data());
+    fillSobolReversed(n, dy, indices, sobol);
+    fillScrambled(n, sobol, uint32_t(seeds >> 32), t.values.data() + n);
+    return;
+  }
+  fillShuffled(n, dimensionHash, progressive_, indices);
+  fillScrambled(n, indices, uint32_t(seeds), t.values.data());  // dimension 0: the point itself
+  fillSobolReversed(n, 1, indices, sobol);
   fillScrambled(n, sobol, uint32_t(seeds >> 32), t.values.data() + n);
 }
 
@@ -109,7 +126,7 @@ Vec2 LowDiscrepancySampler::get2D() { return nextPoint(); }
 Vec2 LowDiscrepancySampler::nextPoint() {
   uint64_t hash = state_.nextDimensionHash();
   if (const DimensionTable* t = table(hash)) return {t->values[state_.index], t->values[sampleCount_ + state_.index]};
-  return point2D(state_.index, uint32_t(sampleCount_), hash, progressive_);
+  return point2D(state_.dimension - 1, state_.index, uint32_t(sampleCount_), hash, progressive_);
 }
 
 int LowDiscrepancySampler::patternSize(int count) {
