@@ -371,6 +371,35 @@ TEST_F(ImageFiles, PairStaysOldWhenThePNGCannotBePutInPlace) {
   EXPECT_EQ(entries(), std::vector<std::string>{"q.png"});
 }
 
+// With writer threads the pair's files are written side by side, and OpenEXR compresses on
+// several threads: the files are the same, and a failure of either still leaves the old pair.
+TEST_F(ImageFiles, PairWrittenSideBySideIsTheSameAndFailsTheSame) {
+  const ImageMetadata metadata = {{"Seed", "3"}};
+  std::map<int, std::pair<std::string, std::string>> bytes;
+  for (int threads : {1, 3}) {
+    setImageWriterThreads(threads);
+    const std::string exr = path("t" + std::to_string(threads) + ".exr");
+    const std::string png = path("t" + std::to_string(threads) + ".png");
+    writeEXRAndPNG(exr, png, testImage(), metadata);
+    bytes[threads] = {fileBytes(exr), fileBytes(png)};
+    // The PNG's directory does not exist: its temporary file cannot be made, while the EXR's is.
+    const std::string oldEXR = fileBytes(exr);
+    try {
+      writeEXRAndPNG(exr, path("missing/t.png"), Image(2, 2), metadata);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("missing/t.png"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(fileBytes(exr), oldEXR);
+  }
+  setImageWriterThreads(1);
+  EXPECT_EQ(bytes[1].first, bytes[3].first);
+  EXPECT_EQ(bytes[1].second, bytes[3].second);
+  std::vector<std::string> names = entries();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"t1.exr", "t1.png", "t3.exr", "t3.png"}));
+}
+
 TEST_F(ImageFiles, OutputPathsAreCheckedBeforeWork) {
   EXPECT_EQ(checkOutputImagePath(path("a.exr")), ImageFormat::EXR);
   EXPECT_EQ(checkOutputImagePath(path("a.EXR")), ImageFormat::EXR);

@@ -18,6 +18,7 @@
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/pieces.h"
+#include "io/image.h"
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
@@ -100,6 +101,7 @@ std::string frameLabel(const SweepFrame& frame) {
 int runRender(const RenderOptions& options) {
   const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
   const int threads = parseCount("--threads", options.threads, 1, 65536);
+  setImageWriterThreads(threads);
   const int bins = parseCount("--bins", options.scene.bins, 1, 470);
   std::optional<PieceIndex> part, pass;
   if (!options.part.empty()) part = parsePieceIndex("--part", options.part, 65536);

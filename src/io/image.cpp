@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <png.h>
@@ -20,11 +21,13 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include "core/error.h"
 #include "core/spectrum.h"
 #include "core/version.h"
@@ -32,6 +35,8 @@
 namespace columba {
 
 namespace {
+
+int writerThreads = 1;  // setImageWriterThreads
 
 void checkImage(const std::string& path, const Image& image) {
   const size_t pixels = size_t(std::max(image.width, 0)) * size_t(std::max(image.height, 0));
@@ -200,13 +205,29 @@ void replaceTogether(const std::vector<PendingFile>& files) {
     for (const std::string& p : paths)
       if (!p.empty()) std::remove(p.c_str());
   };
-  for (const PendingFile& file : files) {
-    temporaries.push_back(file.path + ".tmp" + suffix);
+  // The temporary files, side by side when there are threads for it.
+  std::vector<std::exception_ptr> failures(files.size());
+  for (const PendingFile& file : files) temporaries.push_back(file.path + ".tmp" + suffix);
+  auto writeOne = [&](size_t i) {
     try {
-      file.write(temporaries.back());
+      files[i].write(temporaries[i]);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (size_t i = 1; i < files.size() && writerThreads > 1; ++i) helpers.emplace_back(writeOne, i);
+  for (size_t i = 0; i < files.size(); ++i)
+    if (i == 0 || writerThreads <= 1) writeOne(i);
+  for (std::thread& helper : helpers) helper.join();
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (!failures[i]) continue;
+    removeAll(temporaries);
+    try {
+      std::rethrow_exception(failures[i]);
     } catch (const std::exception& e) {
-      removeAll(temporaries);
-      throw std::runtime_error(std::string("cannot write ") + file.format + " '" + file.path + "': " + e.what());
+      throw std::runtime_error(std::string("cannot write ") + files[i].format + " '" + files[i].path +
+                               "': " + e.what());
     }
   }
 
@@ -258,6 +279,11 @@ std::string spectralChannelName(float lambdaNm) {
   std::string centre = fmt::format("{:g}", double(lambdaNm));
   std::replace(centre.begin(), centre.end(), '.', ',');
   return "S0." + centre + "nm";
+}
+
+void setImageWriterThreads(int threads) {
+  writerThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  Imf::setGlobalThreadCount(writerThreads > 1 ? writerThreads : 0);
 }
 
 void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata) {

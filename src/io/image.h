@@ -60,6 +60,10 @@ struct EXRImageFile {
   int frameWidth = 0, frameHeight = 0;
 };
 
+// Threads the writers below may use (1 until set; 0 sets one per core): OpenEXR compresses an
+// EXR's blocks of lines on them, and writeEXRAndPNG writes its two files side by side.
+void setImageWriterThreads(int threads);
+
 // Writers go through a temporary file renamed into place, so a failed or interrupted write
 // never replaces a good file. They throw std::runtime_error naming the path on failure.
 void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata = {});  // float32 RGB
