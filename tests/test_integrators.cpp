@@ -95,6 +95,38 @@ TEST(Integrator, AreaLightSeenThroughMISMatchesEitherStrategyAlone) {
   EXPECT_NEAR(both, emitterOnly, 0.02f * emitterOnly);
 }
 
+// A constant environment beside an area light: with both kinds of samples, emitter sampling leaves
+// the environment to the BSDF samples (Scene::EmitterSet) and draws only the light. Every mix of
+// strategies must give the closed form L = rho (L_env (1 - k) + L_disk k), k = r^2 / (r^2 + h^2)
+// the share of the hemisphere's projected solid angle that a disk of radius r at height h covers
+// on its axis (and hides of the environment).
+TEST(Integrator, ConstantEnvironmentBesideAnAreaLightMatchesTheClosedForm) {
+  const float rho = 0.5f, environment = 0.8f, disk = 4.0f, h = 1.5f, k = 1.0f / (1.0f + h * h);
+  const float expected = rho * (environment * (1.0f - k) + disk * k);
+  auto render = [&](const std::string& integrator) {
+    // The camera between the plane and the disk, which would hide the patch from above.
+    std::string xml = R"(<scene version="3.0.0">)" + integrator + cameraLookingDown(1.0f, 8, 1024, "ldsampler") + R"(
+      <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
+        <bsdf type="diffuse"><float name="reflectance" value="0.5"/></bsdf></shape>
+      <shape type="disk"><transform name="to_world"><rotate x="1" angle="180"/><translate z="1.5"/></transform>
+        <emitter type="area"><spectrum name="radiance" value="4"/></emitter></shape>
+      <emitter type="constant"><spectrum name="radiance" value="0.8"/></emitter></scene>)";
+    return meanColour(renderSceneString(xml), 0, 0, 8, 8);
+  };
+  auto direct = [](int emitterSamples, int bsdfSamples) {
+    return R"(<integrator type="direct"><integer name="emitter_samples" value=")" + std::to_string(emitterSamples) +
+           R"("/><integer name="bsdf_samples" value=")" + std::to_string(bsdfSamples) + R"("/></integrator>)";
+  };
+  // The path integrator stops after the first vertex: the disk's own diffuse back would reflect
+  // the plane's light into it, which the closed form leaves out.
+  for (const std::string& integrator :
+       {std::string(R"(<integrator type="path"><integer name="max_depth" value="2"/></integrator>)"), direct(1, 1),
+        direct(1, 0), direct(0, 1)}) {
+    SCOPED_TRACE(integrator);
+    expectGrey(render(integrator), expected, 0.015f);
+  }
+}
+
 TEST(Renderer, ImagesAreBitIdenticalForAnyThreadCount) {
   std::string xml = R"(<scene version="3.0.0"><integrator type="path"/>
       <sensor type="perspective"><transform name="to_world"><lookat origin="0, -4, 2" target="0, 0, 0.5" up="0, 0, 1"/></transform>

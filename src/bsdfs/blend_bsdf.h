@@ -20,6 +20,9 @@ class BlendBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return first_->hasPassThrough() || second_->hasPassThrough(); }
   bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
+  bool samplesAllItScatters() const override {
+    return first_->samplesAllItScatters() && second_->samplesAllItScatters();
+  }
 
  private:
   // The second BSDF's weight at the shading point; a texture's value is clamped to [0, 1].

@@ -108,6 +108,10 @@ class BSDF : public Object {
   virtual bool hasPassThrough() const { return false; }
   // True when all scattering is delta: emitter sampling is pointless there.
   virtual bool isDeltaOnly() const { return false; }
+  // True when `sample` can draw every direction where the BSDF has a value (pdf > 0 there), so
+  // that light it finds needs no emitter sample beside it (Scene::EmitterSet). False where a
+  // user's parameters switch a strategy off.
+  virtual bool samplesAllItScatters() const { return true; }
 };
 
 inline float cosTheta(const Vec3& w) { return w.z; }

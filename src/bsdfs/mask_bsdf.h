@@ -20,6 +20,7 @@ class MaskBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return true; }
   bool isDeltaOnly() const override { return nested_->isDeltaOnly(); }
+  bool samplesAllItScatters() const override { return nested_->samplesAllItScatters(); }
 
  private:
   // The opacity at the shading point; a texture's value is clamped to [0, 1].

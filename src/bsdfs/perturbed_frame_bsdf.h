@@ -19,6 +19,7 @@ class PerturbedFrameBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const final;
   bool hasPassThrough() const final { return nested_->hasPassThrough(); }
   bool isDeltaOnly() const final { return nested_->isDeltaOnly(); }
+  bool samplesAllItScatters() const final { return nested_->samplesAllItScatters(); }
 
   // The perturbed frame at the shading point, in the local shading frame.
   virtual Frame perturbedFrame(const BSDFContext& ctx) const = 0;

@@ -37,6 +37,9 @@ struct PrincipledMaterial {
 class PrincipledBSDF : public PointMaterialBSDF<PrincipledMaterial> {
  public:
   explicit PrincipledBSDF(PrincipledParameters parameters);
+  bool samplesAllItScatters() const override {
+    return p_.diffuseSamplingRate > 0.0f && p_.specularSamplingRate > 0.0f && p_.clearcoatSamplingRate > 0.0f;
+  }
 
  private:
   using Material = PrincipledMaterial;

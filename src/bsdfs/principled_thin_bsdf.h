@@ -33,6 +33,10 @@ struct PrincipledThinMaterial {
 class PrincipledThinBSDF : public PointMaterialBSDF<PrincipledThinMaterial> {
  public:
   explicit PrincipledThinBSDF(PrincipledThinParameters parameters);
+  bool samplesAllItScatters() const override {
+    return p_.specularReflectionSamplingRate > 0.0f && p_.specularTransmissionSamplingRate > 0.0f &&
+           p_.diffuseReflectionSamplingRate > 0.0f && p_.diffuseTransmissionSamplingRate > 0.0f;
+  }
 
  private:
   using Material = PrincipledThinMaterial;

@@ -19,6 +19,7 @@ class TwoSidedBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
   bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
+  bool samplesAllItScatters() const override { return front_->samplesAllItScatters() && back_->samplesAllItScatters(); }
 
  private:
   std::shared_ptr<const BSDF> front_, back_;

@@ -13,6 +13,11 @@ class ConstantEmitter : public EmitterAtInfinity {
   float pdfDirection(const Vec3& d) const override;
 
   bool isInfinite() const override { return true; }
+  // Its samples are uniform over the sphere, half of them below the surface, and its radiance
+  // is the same in every direction: a BSDF sample, which follows the surface's own lobes, finds
+  // it as well or better (pbrt-v4 likewise leaves a uniform infinite light to BSDF sampling
+  // where MIS compensates for it).
+  bool leftToBSDFSamples() const override { return true; }
 
  private:
   SpectralDistribution radiance_;

@@ -52,6 +52,9 @@ class Emitter : public Object {
 
   virtual bool isDelta() const { return false; }
   virtual bool isInfinite() const { return false; }
+  // Whether a BSDF sample finds this emitter's light at least as well as the emitter's own
+  // samples do, so that vertices drawing both leave it to the BSDF sample (Scene::EmitterSet).
+  virtual bool leftToBSDFSamples() const { return false; }
   // Area emitters learn their shape when the shape is built.
   virtual void attachTo(const Shape* shape) {}
 };

@@ -25,12 +25,16 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     // Pass-through is covered by continuing the camera ray below, so BSDF samples need not draw it.
     BSDFContext ctx = hit->bsdfContext();
     ctx.passThroughByCaller = true;
+    // With both kinds of samples, emitters that the BSDF samples find as well are left to them.
+    const Scene::EmitterSet emitterSet = emitterSamples_ > 0 && bsdfSamples_ > 0 && bsdf.samplesAllItScatters()
+                                             ? Scene::EmitterSet::BesideBSDFSamples
+                                             : Scene::EmitterSet::All;
 
     // The pass-through weight is asked for together with the first emitter sample's evaluation, or
     // else with the first BSDF sample.
     std::optional<Spectrum> passThrough;
     for (int i = 0; i < emitterSamples_ && !bsdf.isDeltaOnly(); ++i) {
-      std::optional<LightSample> light = sampleLight(scene, *hit, wl, sampler.get2D());
+      std::optional<LightSample> light = sampleLight(scene, *hit, wl, sampler.get2D(), emitterSet);
       if (!light) continue;
       BSDFVertexRequest request;
       request.woLight = &light->woLocal;
@@ -59,7 +63,7 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
       std::optional<SurfaceInteraction> next;
       Spectrum tr = scene.traceThrough(hit->spawnRay(woWorld), wl, rays, next);
       if (tr.isZero()) continue;
-      EmitterHit seen = emitterSeenAlong(scene, hit->p, woWorld, next, wl);
+      EmitterHit seen = emitterSeenAlong(scene, hit->p, woWorld, next, wl, emitterSet);
       if (seen.radiance.isZero()) continue;
       float w = (bs->delta || emitterSamples_ == 0) ? 1.0f : powerHeuristic(nB * bs->pdf, nE * seen.lightPdf);
       L += beta * bs->weight * tr * seen.radiance * (w / nB);

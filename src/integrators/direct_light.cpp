@@ -2,10 +2,10 @@
 
 namespace columba {
 
-std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl,
-                                       Vec2 u) {
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u,
+                                       Scene::EmitterSet set) {
   LightSample light;
-  light.emitter = scene.sampleEmitter(u.x, &light.pmf);
+  light.emitter = scene.sampleEmitter(u.x, &light.pmf, set);
   if (!light.emitter) return std::nullopt;
   auto es = light.emitter->sample(hit.p, u, wl);
   if (!es || es->pdf <= 0.0f) return std::nullopt;
@@ -32,16 +32,17 @@ std::optional<DirectLightSample> connectToLight(const Scene& scene, const Surfac
 }
 
 EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,
-                            const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl) {
+                            const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl,
+                            Scene::EmitterSet set) {
   EmitterHit result;
   if (!hit) {
     for (const Emitter* e : scene.infiniteEmitters()) {
       result.radiance += e->radianceFromDirection(direction, wl);
-      result.lightPdf += e->pdfDirection(direction) * scene.emitterPmf();
+      result.lightPdf += e->pdfDirection(direction) * scene.emitterPmf(*e, set);
     }
   } else if (const Emitter* e = hit->shape->emitter.get()) {
     result.radiance = e->radianceAt(*hit, -direction, wl);
-    if (!result.radiance.isZero()) result.lightPdf = e->pdfHit(from, *hit) * scene.emitterPmf();
+    if (!result.radiance.isZero()) result.lightPdf = e->pdfHit(from, *hit) * scene.emitterPmf(*e, set);
   }
   return result;
 }

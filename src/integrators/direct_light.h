@@ -22,19 +22,21 @@ struct LightSample {
   float pmf = 0.0f;  // probability of choosing `emitter`
   Vec3 woLocal;      // the direction toward it in the hit's shading frame
 };
-std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl,
-                                       Vec2 u);
+std::optional<LightSample> sampleLight(const Scene& scene, const SurfaceInteraction& hit, const Wavelengths& wl, Vec2 u,
+                                       Scene::EmitterSet set);
 std::optional<DirectLightSample> connectToLight(const Scene& scene, const SurfaceInteraction& hit,
                                                 const LightSample& light, const BSDFEvalPdf& f, const Wavelengths& wl,
                                                 uint64_t& rays);
 
 // Radiance of the emitters a ray that left `from` sees at `hit` (or at infinity if there is no
-// hit), with the density emitter sampling from `from` would have chosen that direction.
+// hit), with the density emitter sampling from `from`, drawing from `set`, would have chosen that
+// direction.
 struct EmitterHit {
   Spectrum radiance;
   float lightPdf = 0.0f;
 };
 EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,
-                            const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl);
+                            const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl,
+                            Scene::EmitterSet set = Scene::EmitterSet::All);
 
 }  // namespace columba

@@ -40,12 +40,15 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
   bool deltaBounce = true;  // the camera, like a delta vertex, takes no MIS weight
   float prevBsdfPdf = 0.0f;
   Vec3 prevP;
+  // What the last vertex's emitter sampling drew from (an emitter found by its BSDF sample is
+  // weighed against it).
+  Scene::EmitterSet prevEmitterSet = Scene::EmitterSet::All;
   while (true) {
     ++rays;
     std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     Vec3 dir = normalize(ray.d);
     if (!(depth == 0 && hideEmitters_)) {
-      EmitterHit seen = emitterSeenAlong(scene, prevP, dir, hit, wl);
+      EmitterHit seen = emitterSeenAlong(scene, prevP, dir, hit, wl, prevEmitterSet);
       if (!seen.radiance.isZero()) L += beta * seen.radiance * hitWeight(deltaBounce, prevBsdfPdf, seen.lightPdf);
     }
     if (!hit) break;
@@ -56,7 +59,11 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     // Emitter sampling and BSDF sampling, with one call to the BSDF for both.
     Vec2 uLight = sampler.get2D();
     bool sampleEmitters = !bsdf.isDeltaOnly() && strategy_ != Strategy::BSDFOnly;
-    std::optional<LightSample> light = sampleEmitters ? sampleLight(scene, *hit, wl, uLight) : std::nullopt;
+    // With MIS, emitters that this vertex's BSDF sample finds as well are left to it.
+    const Scene::EmitterSet emitterSet = strategy_ == Strategy::MIS && bsdf.samplesAllItScatters()
+                                             ? Scene::EmitterSet::BesideBSDFSamples
+                                             : Scene::EmitterSet::All;
+    std::optional<LightSample> light = sampleEmitters ? sampleLight(scene, *hit, wl, uLight, emitterSet) : std::nullopt;
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();
     BSDFVertexRequest request;
@@ -84,6 +91,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     }
     deltaBounce = bs->delta;
     prevBsdfPdf = bs->pdf;
+    prevEmitterSet = emitterSet;
     prevP = hit->p;
     ++depth;
     if (depth >= rrDepth_) {

@@ -45,8 +45,11 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
                        "the scene has a top-level object that is not a shape, emitter, sensor, integrator or bsdf");
     }
   }
-  for (const auto& e : emitters_)
+  for (const auto& e : emitters_) {
+    allEmitters_.push_back(e.get());
+    if (!e->leftToBSDFSamples()) emittersBesideBSDFSamples_.push_back(e.get());
     if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
+  }
   if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);
   if (!integrator_ && !particleTracer_)
     integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);

@@ -36,18 +36,29 @@ class Scene {
 
   const std::vector<std::shared_ptr<Emitter>>& emitters() const { return emitters_; }
   const std::vector<const Emitter*>& infiniteEmitters() const { return infiniteEmitters_; }
-  // Emitter choice for next-event estimation (uniform over emitters). `u` is remapped to a fresh
+  // The emitters next-event estimation draws from: all of them, or, at a vertex that also draws a
+  // BSDF sample and weighs the two by MIS, those that BSDF samples do not find as well
+  // (Emitter::leftToBSDFSamples: a constant environment). With a constant environment and one
+  // area light, the light then gets every emitter sample instead of half of them.
+  enum class EmitterSet { All, BesideBSDFSamples };
+  // Emitter choice for next-event estimation, uniform over the set. `u` is remapped to a fresh
   // uniform value in [0, 1) for reuse (as Mitsuba does), unchanged when there is one emitter.
   // Inline: `u` is usually half of a Vec2 that would otherwise be reloaded from memory.
-  const Emitter* sampleEmitter(float& u, float* pmf) const {
-    if (emitters_.empty()) return nullptr;
-    float scaled = u * float(emitters_.size());
-    int i = std::min(int(scaled), int(emitters_.size()) - 1);
+  const Emitter* sampleEmitter(float& u, float* pmf, EmitterSet set = EmitterSet::All) const {
+    const std::vector<const Emitter*>& choices = emittersOf(set);
+    if (choices.empty()) return nullptr;
+    float scaled = u * float(choices.size());
+    int i = std::min(int(scaled), int(choices.size()) - 1);
     u = std::min(scaled - float(i), kOneMinusEpsilon);
-    *pmf = emitterPmf();
-    return emitters_[size_t(i)].get();
+    *pmf = 1.0f / float(choices.size());
+    return choices[size_t(i)];
   }
-  float emitterPmf() const { return emitters_.empty() ? 0.0f : 1.0f / float(emitters_.size()); }
+  // The probability that sampleEmitter picks `emitter` from the set (0 if the set leaves it out).
+  float emitterPmf(const Emitter& emitter, EmitterSet set = EmitterSet::All) const {
+    if (set == EmitterSet::BesideBSDFSamples && emitter.leftToBSDFSamples()) return 0.0f;
+    const std::vector<const Emitter*>& choices = emittersOf(set);
+    return choices.empty() ? 0.0f : 1.0f / float(choices.size());
+  }
 
   // The sphere around the shapes (radius 0 without shapes), which lights at infinity shine through.
   const SceneSphere& boundingSphere() const { return boundingSphere_; }
@@ -65,7 +76,12 @@ class Scene {
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<std::shared_ptr<Shape>> shapes_;  // indexed by Embree geometry ID
+  const std::vector<const Emitter*>& emittersOf(EmitterSet set) const {
+    return set == EmitterSet::All ? allEmitters_ : emittersBesideBSDFSamples_;
+  }
+
   std::vector<std::shared_ptr<Emitter>> emitters_;
+  std::vector<const Emitter*> allEmitters_, emittersBesideBSDFSamples_;
   std::vector<const Emitter*> infiniteEmitters_;
   std::shared_ptr<Sensor> sensor_;
   std::shared_ptr<Integrator> integrator_;
