@@ -26,9 +26,10 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
     BSDFContext ctx = hit->bsdfContext();
     ctx.passThroughByCaller = true;
     // With both kinds of samples, emitters that the BSDF samples find as well are left to them.
-    const Scene::EmitterSet emitterSet = emitterSamples_ > 0 && bsdfSamples_ > 0 && bsdf.samplesAllItScatters()
-                                             ? Scene::EmitterSet::BesideBSDFSamples
-                                             : Scene::EmitterSet::All;
+    const Scene::EmitterSet emitterSet =
+        emitterSamples_ > 0 && bsdfSamples_ > 0 && scene.leavesEmittersToBSDFSamples() && bsdf.samplesAllItScatters()
+            ? Scene::EmitterSet::BesideBSDFSamples
+            : Scene::EmitterSet::All;
 
     // The pass-through weight is asked for together with the first emitter sample's evaluation, or
     // else with the first BSDF sample.

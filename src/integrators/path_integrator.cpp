@@ -60,9 +60,10 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     Vec2 uLight = sampler.get2D();
     bool sampleEmitters = !bsdf.isDeltaOnly() && strategy_ != Strategy::BSDFOnly;
     // With MIS, emitters that this vertex's BSDF sample finds as well are left to it.
-    const Scene::EmitterSet emitterSet = strategy_ == Strategy::MIS && bsdf.samplesAllItScatters()
-                                             ? Scene::EmitterSet::BesideBSDFSamples
-                                             : Scene::EmitterSet::All;
+    const Scene::EmitterSet emitterSet =
+        strategy_ == Strategy::MIS && scene.leavesEmittersToBSDFSamples() && bsdf.samplesAllItScatters()
+            ? Scene::EmitterSet::BesideBSDFSamples
+            : Scene::EmitterSet::All;
     std::optional<LightSample> light = sampleEmitters ? sampleLight(scene, *hit, wl, uLight, emitterSet) : std::nullopt;
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();

@@ -215,10 +215,10 @@ void replaceTogether(const std::vector<PendingFile>& files) {
       failures[i] = std::current_exception();
     }
   };
+  const bool sideBySide = writerThreads > 1;
   std::vector<std::thread> helpers;
-  for (size_t i = 1; i < files.size() && writerThreads > 1; ++i) helpers.emplace_back(writeOne, i);
-  for (size_t i = 0; i < files.size(); ++i)
-    if (i == 0 || writerThreads <= 1) writeOne(i);
+  for (size_t i = 1; sideBySide && i < files.size(); ++i) helpers.emplace_back(writeOne, i);
+  for (size_t i = 0; i < (sideBySide ? 1 : files.size()); ++i) writeOne(i);
   for (std::thread& helper : helpers) helper.join();
   for (size_t i = 0; i < files.size(); ++i) {
     if (!failures[i]) continue;

@@ -14,9 +14,10 @@ constexpr uint32_t reverseBits(uint32_t v) {
 }
 
 // Points are generated with their bits reversed, the order in which Owen scrambling works.
-// Dimension 0 (the van der Corput radical inverse) reversed is the index itself. Dimension 1 has the generator columns
-// v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's triangle mod 2); reversed, r_k holds the coefficients of (1 +
-// x)^k over GF(2), xor-ed together for the set bits of the index.
+// Dimension 0 (the van der Corput radical inverse) reversed is the index itself. Dimension 1 has
+// the generator columns v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) (Pascal's triangle mod 2);
+// reversed, r_k holds the coefficients of (1 + x)^k over GF(2), xor-ed together for the set bits
+// of the index.
 namespace detail {
 // r_k summed over the set bits k of a byte.
 struct SobolDimension1ByteTable {

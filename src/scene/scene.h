@@ -53,6 +53,8 @@ class Scene {
     *pmf = 1.0f / float(choices.size());
     return choices[size_t(i)];
   }
+  // Whether the two sets differ: only then is a vertex's set worth deciding.
+  bool leavesEmittersToBSDFSamples() const { return emittersBesideBSDFSamples_.size() != allEmitters_.size(); }
   // The probability that sampleEmitter picks `emitter` from the set (0 if the set leaves it out).
   float emitterPmf(const Emitter& emitter, EmitterSet set = EmitterSet::All) const {
     if (set == EmitterSet::BesideBSDFSamples && emitter.leftToBSDFSamples()) return 0.0f;
