@@ -188,7 +188,7 @@ TEST(BarbuleBSDF, ACallerCarryingPassThroughGetsScatteringSamplesFollowingTheirP
             if (!s) return std::nullopt;
             return axisAsPole(s->wo);
           },
-          [&](const Vec3& w) { return double(bsdf.pdf(byCaller, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48,
+          [&](const Vec3& w) { return double(bsdf.pdf(byCaller, wi, fromAxisAsPole(w), kWavelengths)); }, 600000, 48,
           48, 10);
       EXPECT_GT(result.pValue, threshold)
           << parameters.name << " wi " << wi.x << " " << wi.y << " " << wi.z << ": " << result.message;

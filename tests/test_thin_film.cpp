@@ -218,3 +218,35 @@ TEST(ThinFilm, FreeStandingFilmWeightedProductsMatchThePairwiseProducts) {
       for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_NEAR(r[k], expected[k], 2e-5f * (1.0f + expected[k])) << i;
   }
 }
+
+TEST(ThinFilm, FreeStandingFilmAveragesOverWavelengthsMatchTheAirySum) {
+  // Against the complex Airy amplitudes in double precision: the mean over the wavelengths of
+  // (R_s + R_p) / 2 and of w (T_s^2 + T_p^2) / 2, in both implementations where the processor
+  // runs both.
+  const Wavelengths wl = Wavelengths::fixed({405.0f, 498.0f, 577.0f, 689.0f});
+  const float nAir = 1.000277f, thickness = 0.58f;
+  const RefractiveIndex keratin = RefractiveIndex::keratin();
+  FreeStandingFilm film(keratin, nAir, thickness, wl);
+  const Spectrum weight(FloatLanes{0.03f, 0.5f, 1.0f, 0.2f});
+  PCG32 rng(9);
+  for (int i = 0; i < 500; ++i) {
+    FloatLanes cosines;
+    for (int j = 0; j < kLaneCount; ++j) cosines[j] = 0.001f + 0.999f * rng.nextFloat();
+    std::vector<FreeStandingFilm::Averages> results = {film.averagesOverWavelengths(cosines, weight),
+                                                       film.averagesOverWavelengthsPortable(cosines, weight)};
+    if (hasAvx2()) results.push_back(film.averagesOverWavelengthsAvx2(cosines, weight));
+    for (int j = 0; j < kLaneCount; ++j) {
+      double reflectance = 0.0, transmittanceSqr = 0.0;
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        ThinFilmAmplitudes a = thinFilmAmplitudes(cosines[j], nAir, keratin(wl[k]), nAir, thickness, wl[k]);
+        double ts = a.transmittanceFactor * std::norm(a.ts), tp = a.transmittanceFactor * std::norm(a.tp);
+        reflectance += 0.5 * (std::norm(a.rs) + std::norm(a.rp)) / kSpectrumSamples;
+        transmittanceSqr += weight[k] * 0.5 * (ts * ts + tp * tp) / kSpectrumSamples;
+      }
+      for (const FreeStandingFilm::Averages& r : results) {
+        ASSERT_NEAR(r.reflectance[j], reflectance, 2e-4) << i << " cos " << cosines[j];
+        ASSERT_NEAR(r.weightedTransmittanceSqr[j], transmittanceSqr, 2e-4) << i << " cos " << cosines[j];
+      }
+    }
+  }
+}

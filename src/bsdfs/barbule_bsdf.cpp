@@ -313,24 +313,21 @@ BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const I
   choice.hMin = in.arc.hMin;
   choice.nodeSpacing = in.arc.width() / float(choice.nodes - 1);
   float meanWeight = 0.0f;  // of R + TRT over the lit offsets: the trapezoid rule, as s(h) is linear
-  // The nodes' normals and incidence cosines, four at a time.
-  std::array<float, kMaxLobeShareNodes> cosines{};
+  // The nodes' normals, incidence cosines and lobe weights, four nodes at a time.
   for (int first = 0; first < choice.nodes; first += kLaneCount) {
     FloatLanes h;
     for (int j = 0; j < kLaneCount; ++j)
       h[j] = choice.hMin + float(std::min(first + j, choice.nodes - 1)) * choice.nodeSpacing;
-    FloatLanes c = inPlaneProjection(in.w, geometry.worldNormalsAtOffsets(in.arc, h));
-    for (int j = 0; j < kLaneCount && first + j < choice.nodes; ++j) cosines[first + j] = c[j];
-  }
-  for (int k = 0; k < choice.nodes; ++k) {
-    FreeStandingFilm::Reflectance film = point.film.reflectance(cosines[k]);
-    float weightR = (0.5f * (film.s + film.p)).average();
-    float weightTRT =
-        (point.melanin * 0.5f * ((1.0f - film.s) * (1.0f - film.s) + (1.0f - film.p) * (1.0f - film.p))).average();
-    float total = weightR + weightTRT;
-    choice.trtShare[k] = total > 0.0f ? clampf(weightTRT / total, kMinLobeShare, 1.0f - kMinLobeShare) : 0.5f;
-    bool end = k == 0 || k == choice.nodes - 1;
-    meanWeight += (end ? 0.5f : 1.0f) * total / float(choice.nodes - 1);
+    FloatLanes cosines = inPlaneProjection(in.w, geometry.worldNormalsAtOffsets(in.arc, h));
+    FreeStandingFilm::Averages film = point.film.averagesOverWavelengths(cosines, point.melanin);
+    for (int j = 0; j < kLaneCount && first + j < choice.nodes; ++j) {
+      const int k = first + j;
+      float weightR = film.reflectance[j], weightTRT = film.weightedTransmittanceSqr[j];
+      float total = weightR + weightTRT;
+      choice.trtShare[k] = total > 0.0f ? clampf(weightTRT / total, kMinLobeShare, 1.0f - kMinLobeShare) : 0.5f;
+      bool end = k == 0 || k == choice.nodes - 1;
+      meanWeight += (end ? 0.5f : 1.0f) * total / float(choice.nodes - 1);
+    }
   }
   if (passThroughByCaller) return choice;
   float energyScatter = in.coverage * std::max(meanWeight, kMinLobeShare), energyT = 1.0f - in.coverage;

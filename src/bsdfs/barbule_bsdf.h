@@ -54,7 +54,7 @@ inline constexpr int kMaxLobeShareNodes = 8;
 struct BarbuleQuadrature {
   int offsetNodes = 4;
   int thetaNodes = 1;
-  int lobeShareNodes = 3;
+  int lobeShareNodes = 4;
 };
 
 class BarbuleBSDF : public BSDF {

@@ -108,4 +108,55 @@ __attribute__((target("avx2,fma"))) Spectrum FreeStandingFilm::weightedTransmitt
   return Spectrum(laneSums(perWavelength[0], perWavelength[1], perWavelength[2], perWavelength[3]));
 }
 
+FreeStandingFilm::Averages FreeStandingFilm::averagesOverWavelengths(FloatLanes cosIncidence,
+                                                                     const Spectrum& transmittanceWeight) const {
+  return hasAvx2() ? averagesOverWavelengthsAvx2(cosIncidence, transmittanceWeight)
+                   : averagesOverWavelengthsPortable(cosIncidence, transmittanceWeight);
+}
+
+FreeStandingFilm::Averages FreeStandingFilm::averagesOverWavelengthsPortable(
+    FloatLanes cosIncidence, const Spectrum& transmittanceWeight) const {
+  // A wavelength at a time, the four cosines in lanes.
+  FloatLanes cSqr = clampedCosSqr(cosIncidence);
+  Averages sum{};
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    FloatLanes r, tSqr;
+    reflectanceAndTransmittanceSqr(terms(mediumAt(k), cSqr), r, tSqr);
+    sum.reflectance += r;
+    sum.weightedTransmittanceSqr += transmittanceWeight[k] * tSqr;
+  }
+  const float mean = 1.0f / float(kSpectrumSamples);
+  return {sum.reflectance * mean, sum.weightedTransmittanceSqr * mean};
+}
+
+namespace {
+// Lane k of `v` in the low four lanes and lane k + 1 in the high four.
+__attribute__((target("avx2,fma"), always_inline)) inline FloatLanes8 pairOf(FloatLanes v, int k) {
+  return FloatLanes8{v[k], v[k], v[k], v[k], v[k + 1], v[k + 1], v[k + 1], v[k + 1]};
+}
+}  // namespace
+
+__attribute__((target("avx2,fma"))) FreeStandingFilm::Averages FreeStandingFilm::averagesOverWavelengthsAvx2(
+    FloatLanes cosIncidence, const Spectrum& transmittanceWeight) const {
+  // Two wavelengths at a time: wavelength k in the low four lanes, k + 1 in the high four.
+  struct MediumPair {
+    FloatLanes8 etaSqr, invEtaSqr, bsSqr, halfPhaseScale;
+  };
+  static_assert(kSpectrumSamples % 2 == 0);
+  FloatLanes8 cSqr = clampedCosSqr(joinLanes(cosIncidence, cosIncidence));
+  FloatLanes8 reflectance{}, weightedTSqr{};
+  for (int k = 0; k < kSpectrumSamples; k += 2) {
+    MediumPair m{pairOf(medium_.etaSqr, k), pairOf(medium_.invEtaSqr, k), pairOf(medium_.bsSqr, k),
+                 pairOf(medium_.halfPhaseScale, k)};
+    FloatLanes8 qSqr = pairOf(medium_.etaSqrMinusOne, k) + cSqr;
+    FloatLanes8 r, tSqr;
+    reflectanceAndTransmittanceSqr(terms(m, cSqr, qSqr, sqrtLanes(qSqr)), r, tSqr);
+    reflectance += r;
+    weightedTSqr += pairOf(transmittanceWeight.lanes, k) * tSqr;
+  }
+  const float mean = 1.0f / float(kSpectrumSamples);
+  return {(lowLanes(reflectance) + highLanes(reflectance)) * mean,
+          (lowLanes(weightedTSqr) + highLanes(weightedTSqr)) * mean};
+}
+
 }  // namespace columba

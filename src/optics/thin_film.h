@@ -65,6 +65,18 @@ class FreeStandingFilm {
   __attribute__((target("avx2,fma"))) Spectrum weightedTransmittanceProductsAvx2(FloatLanes weight, FloatLanes cos1,
                                                                                  FloatLanes cos2) const;
 
+  // At four incidence cosines, one per lane, averages over the path's wavelengths of the
+  // reflectance (R_s + R_p) / 2 and of the transmittance of two crossings at the same angle
+  // weighted per wavelength, w (T_s^2 + T_p^2) / 2. On processors with AVX2 and FMA two
+  // wavelengths are evaluated at once in eight lanes.
+  struct Averages {
+    FloatLanes reflectance, weightedTransmittanceSqr;
+  };
+  Averages averagesOverWavelengths(FloatLanes cosIncidence, const Spectrum& transmittanceWeight) const;
+  Averages averagesOverWavelengthsPortable(FloatLanes cosIncidence, const Spectrum& transmittanceWeight) const;
+  __attribute__((target("avx2,fma"))) Averages averagesOverWavelengthsAvx2(FloatLanes cosIncidence,
+                                                                           const Spectrum& transmittanceWeight) const;
+
  private:
   // The film's constants at the path's wavelengths, one per lane as in a Spectrum (the kernels
   // below work on the lanes themselves), or one wavelength in every lane.
@@ -106,6 +118,16 @@ class FreeStandingFilm {
     return c * c;
   }
   static FloatLanes product(const Terms& a, const Terms& b);
+  // R = (R_s + R_p) / 2 and (T_s^2 + T_p^2) / 2 from one crossing's terms, one division for both.
+  template <typename Lanes>
+  __attribute__((always_inline)) static void reflectanceAndTransmittanceSqr(const TermsOf<Lanes>& t, Lanes& r,
+                                                                            Lanes& tSqr) {
+    Lanes sDen = t.aSqr + t.sBSqrS, pDen = t.aSqr + t.pBSqrS;
+    Lanes inv = 1.0f / (sDen * pDen);
+    r = 0.5f * (t.sBSqrS * pDen + t.pBSqrS * sDen) * inv;
+    Lanes ts = t.aSqr * pDen * inv, tp = t.aSqr * sDen * inv;
+    tSqr = 0.5f * (ts * ts + tp * tp);
+  }
 
   Medium medium_{};  // at the path's wavelengths
 };
