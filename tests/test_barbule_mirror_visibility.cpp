@@ -128,7 +128,7 @@ TEST(MirrorVisibleAngles, SamplesAreLitAndFollowTheRestrictedDensity) {
       std::vector<double> thetas;
       int unlit = 0;
       for (int s = 0; s < samples; ++s) {
-        float theta = angles.sample((s + 0.5f) / samples);
+        float theta = angles.sample((s + 0.5f) / samples).theta;
         thetas.push_back(theta);
         Vec3 wo = mirror(wi, angles.worldNormal(), theta);
         unlit += !geometry.isLit(geometry.litArc(inPlane(wo).dir), localNormal);

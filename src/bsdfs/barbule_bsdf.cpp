@@ -464,9 +464,9 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const PointModel& point, const I
     MirrorVisibleAngles angles(geometry, localNormal, wi);
     mirrorVisible = angles.visibleFraction();
     if (!(mirrorVisible > 0.0f)) return std::nullopt;
-    float theta = angles.sample(u.y);
+    AngleCosSin theta = angles.sample(u.y);
     mWorld = angles.worldNormal();
-    m = barbuleNormal(mWorld, std::cos(theta), std::sin(theta));
+    m = barbuleNormal(mWorld, theta.cosTheta, theta.sinTheta);
     bs.wo = reflect(wi, m);
   } else {
     Vec3 facing = barbuleNormal(geometry.toWorld(localNormal), 1.0f, 0.0f);

@@ -127,14 +127,20 @@ bool MirrorVisibleAngles::visibleAt(double a) const {
   return true;
 }
 
-float MirrorVisibleAngles::sample(float u) const {
+AngleCosSin MirrorVisibleAngles::sample(float u) const {
   const float target = u * visibleMass_;
   int k = 0;
   while (k + 1 < intervalCount_ && intervals_[k + 1].massBelow <= target) ++k;
   const Interval& piece = intervals_[k];
   // Within the piece, the full range's inverse CDF at the mass below the target.
-  const float below = longitudinal_.massBelow(piece.lo) + (target - piece.massBelow);
-  return clampf(longitudinal_.sample(below / mass_), piece.lo, piece.hi);
+  AngleCosSin angle = longitudinal_.angleAtMass(longitudinal_.massBelow(piece.lo) + (target - piece.massBelow));
+  if (!(angle.theta >= piece.lo && angle.theta <= piece.hi)) {
+    // Past an end by rounding: at the end.
+    angle.theta = clampf(angle.theta, piece.lo, piece.hi);
+    angle.cosTheta = std::cos(angle.theta);
+    angle.sinTheta = std::sin(angle.theta);
+  }
+  return angle;
 }
 
 }  // namespace columba

@@ -29,8 +29,9 @@ class MirrorVisibleAngles {
   // The share of theta's density (LongitudinalDensity: proportional to omega_i . m) on the visible
   // angles: 1 where no neighbour masks the mirror direction, 0 where every angle is masked.
   float visibleFraction() const { return visibleMass_ > 0.0f && mass_ > 0.0f ? visibleMass_ / mass_ : 0.0f; }
-  // theta drawn from that density restricted to the visible angles (visibleFraction() > 0).
-  float sample(float u) const;
+  // theta drawn from that density restricted to the visible angles (visibleFraction() > 0), with
+  // its cosine and sine.
+  AngleCosSin sample(float u) const;
   // The world in-plane normal this was built with.
   Vec2 worldNormal() const { return worldNormal_; }
 

@@ -30,13 +30,19 @@ LongitudinalDensity::LongitudinalDensity(float A, float B)
   shadowing_ = mass_ > 0.0f ? clampf(2.0f * A * kSinBarbuleThetaD / mass_, 0.0f, 1.0f) : 0.0f;
 }
 
-float LongitudinalDensity::sample(float u) const {
-  // F(theta) = A sin(theta) - B cos(theta) = R sin(theta - delta) with R = |(A, B)|,
-  // delta = atan2(B, A); the density is proportional to F'.
-  float R = std::sqrt(A_ * A_ + B_ * B_);
-  float target = primitiveMin_ + u * mass_;
-  float theta = std::atan2(B_, A_) + safeAsin(target / R);
-  return clampf(theta, thetaMin_, thetaMax_);
+AngleCosSin LongitudinalDensity::angleAtMass(float mass) const {
+  // F(theta) = A sin(theta) - B cos(theta) = R sin(theta - delta) with R = |(A, B)|, cos(delta) = A / R
+  // and sin(delta) = B / R; the density is proportional to F'. On asin's branch theta - delta has
+  // the sine s below and the cosine sqrt(1 - s^2).
+  const float R = std::sqrt(A_ * A_ + B_ * B_);
+  const float s = clampf((primitiveMin_ + mass) / R, -1.0f, 1.0f), c = std::sqrt(1.0f - s * s);
+  AngleCosSin angle;
+  angle.cosTheta = (A_ * c - B_ * s) / R;
+  angle.sinTheta = (B_ * c + A_ * s) / R;
+  // Beyond +-pi/2 theta lies outside every range the density can have (within +-thetaD), and
+  // clamping puts it at the range's end whichever value stands for it.
+  angle.theta = angle.cosTheta > 0.0f ? safeAsin(angle.sinTheta) : std::copysign(kHalfPi, angle.sinTheta);
+  return angle;
 }
 
 float LongitudinalDensity::mean() const {

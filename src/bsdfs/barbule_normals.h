@@ -54,6 +54,11 @@ inline auto inPlaneProjection(const Vec3& w, const N& n) {
 // Density of theta on [-thetaD, thetaD] proportional to (A cos(theta) + B sin(theta))+, the
 // projected area of the normals at one phi seen from a direction with in-plane part
 // A = cos(theta_w) cos(gamma_w - phi - mu) > 0 and longitudinal part B = sin(theta_w).
+// An angle with its cosine and sine.
+struct AngleCosSin {
+  float theta, cosTheta, sinTheta;
+};
+
 class LongitudinalDensity {
  public:
   LongitudinalDensity(float A, float B);
@@ -61,7 +66,10 @@ class LongitudinalDensity {
   float thetaMin() const { return thetaMin_; }
   float thetaMax() const { return thetaMax_; }
   // Inverse CDF in closed form: theta = delta + asin(...), delta = atan2(B, A).
-  float sample(float u) const;
+  float sample(float u) const { return clampf(angleAtMass(u * mass_).theta, thetaMin_, thetaMax_); }
+  // The angle where the density's mass from thetaMin reaches `mass`, with its cosine and sine, not
+  // clamped to the range: those of theta - delta and delta combined (one asin, no atan2 or sincos).
+  AngleCosSin angleAtMass(float mass) const;
   float pdf(float theta) const;
   // The density's mass below theta within the range, and on the whole range (the projected area of
   // the normals at this phi seen from w, over D_theta).
