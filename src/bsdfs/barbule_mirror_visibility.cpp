@@ -25,29 +25,6 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
   const double nQn = metric(localNormal, localNormal, invBSqr), nQw = metric(localNormal, in, invBSqr);
   const double wQw = metric(in, in, invBSqr);
 
-  // The values of a where visibility can change: facing (a = A), and per neighbour where the ray
-  // starts or stops meeting it (the quadratic's roots) and where e Q v changes sign.
-  std::array<double, 7> bounds{};
-  int boundCount = 0;
-  bounds[boundCount++] = A_;
-  for (int side = 0; side < 2; ++side) {
-    const Vec2 centre = side == 0 ? geometry.neighbourOffset() : geometry.neighbourOffset() * -1.0f;
-    const Vec2 e = p - centre;
-    const double K = metric(e, e, invBSqr) - 1.0;  // > 0: the point lies outside its neighbours
-    alpha_[side] = metric(e, localNormal, invBSqr);
-    beta_[side] = metric(e, in, invBSqr);
-    // (a alpha - beta)^2 - K (v Q v) with v Q v = a^2 nQn - 2 a nQw + wQw.
-    q2_[side] = alpha_[side] * alpha_[side] - K * nQn;
-    q1_[side] = alpha_[side] * beta_[side] - K * nQw;
-    q0_[side] = beta_[side] * beta_[side] - K * wQw;
-    if (alpha_[side] != 0.0) bounds[boundCount++] = beta_[side] / alpha_[side];
-    double r0, r1;
-    if (solveQuadratic(q2_[side], -2.0 * q1_[side], q0_[side], r0, r1)) {
-      bounds[boundCount++] = r0;
-      bounds[boundCount++] = r1;
-    }
-  }
-
   // a(theta) = 2 cos(theta) (A cos(theta) + B sin(theta)) = A + R cos(2 theta - delta) over
   // [thetaMin, thetaMax]: its range there, from the ends and, where a' = 2 (B cos(2 theta) -
   // A sin(2 theta)) changes sign, its maximum A + R.
@@ -69,6 +46,34 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
   const double aLo = std::min(aAtMin, aAtMax);
   const bool peakInside = slope(thetaMin) > 0.0 && slope(thetaMax) < 0.0;
   const double aHi = peakInside ? A_ + R : std::max(aAtMin, aAtMax);
+  // The values of a where visibility can change: facing (a = A), and per neighbour where the ray
+  // starts or stops meeting it (the quadratic's roots) and where e Q v changes sign.
+  std::array<double, 7> bounds{};
+  int boundCount = 0;
+  bounds[boundCount++] = A_;
+  for (int side = 0; side < 2; ++side) {
+    const Vec2 centre = side == 0 ? geometry.neighbourOffset() : geometry.neighbourOffset() * -1.0f;
+    const Vec2 e = p - centre;
+    const double K = metric(e, e, invBSqr) - 1.0;  // > 0: the point lies outside its neighbours
+    alpha_[side] = metric(e, localNormal, invBSqr);
+    beta_[side] = metric(e, in, invBSqr);
+    // (a alpha - beta)^2 - K (v Q v) with v Q v = a^2 nQn - 2 a nQw + wQw.
+    q2_[side] = alpha_[side] * alpha_[side] - K * nQn;
+    q1_[side] = alpha_[side] * beta_[side] - K * nQw;
+    q0_[side] = beta_[side] * beta_[side] - K * wQw;
+    if (alpha_[side] != 0.0) bounds[boundCount++] = beta_[side] / alpha_[side];
+    double r0, r1;
+    // Only roots within (aLo, aHi) can cut the range: solved for only where the quadratic changes
+    // sign over it or has its vertex inside (it usually has neither).
+    auto f = [&](double a) { return (q2_[side] * a - 2.0 * q1_[side]) * a + q0_[side]; };
+    const bool mayCut =
+        f(aLo) * f(aHi) <= 0.0 || (q2_[side] != 0.0 && q1_[side] / q2_[side] > aLo && q1_[side] / q2_[side] < aHi);
+    if (mayCut && solveQuadratic(q2_[side], -2.0 * q1_[side], q0_[side], r0, r1)) {
+      bounds[boundCount++] = r0;
+      bounds[boundCount++] = r1;
+    }
+  }
+
   // Where a(theta) crosses a bound within the range. Usually none does (the range of theta is
   // narrow): then visibility is the same at every angle.
   std::array<float, 2 * 7 + 2> cuts{};
