@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include "chi_square.h"
 #include "core/illuminant.h"
 #include "core/rng.h"
@@ -35,6 +36,25 @@ TEST(Spectrum, D65IsWhiteWithUnitLuminance) {
   // Published values of the table (CIE 15:2004 Table T.1), relative to 560 nm.
   EXPECT_NEAR(d65(460.0f) / d65(560.0f), 1.17812f, 1e-5f);
   EXPECT_NEAR(d65(702.5f) / d65(560.0f), 0.5f * (0.716091f + 0.72979f), 1e-5f);
+}
+
+TEST(Spectrum, AtAPathsWavelengthsD65AndSpectraAreTheirValuesAtEach) {
+  // The four-lane lookups against the scalar ones, bit for bit, including wavelengths beyond the
+  // table and at its ends.
+  const std::vector<SpectralDistribution> spectra = {
+      SpectralDistribution::constant(0.7f).timesD65(), SpectralDistribution::fromRGB(Vec3(0.2f, 0.5f, 0.9f), false),
+      SpectralDistribution::fromRGB(Vec3(0.8f, 0.3f, 0.1f), false).timesD65()};
+  PCG32 rng(4);
+  for (int i = 0; i < 10000; ++i) {
+    Wavelengths wl = Wavelengths::fixed(
+        {250.0f + 650.0f * rng.nextFloat(), 300.0f, 830.0f, kLambdaMin + (kLambdaMax - kLambdaMin) * rng.nextFloat()});
+    Spectrum lanes = d65(wl);
+    for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(lanes[k], d65(wl[k])) << wl[k];
+    for (const SpectralDistribution& s : spectra) {
+      Spectrum values = s.sample(wl);
+      for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(values[k], s.eval(wl[k])) << wl[k];
+    }
+  }
 }
 
 TEST(Spectrum, FlatSpectrumIsNotWhiteBalanced) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include "core/fast_math.h"
 #include "core/spectrum.h"
 
 namespace columba {
@@ -45,5 +46,19 @@ float inverseLuminance() {
 }  // namespace
 
 float d65(float lambda) { return relativeD65(lambda) * inverseLuminance(); }
+
+Spectrum d65(const Wavelengths& wl) {
+  // relativeD65's interpolation in lanes (the same operations, so the same values).
+  const FloatLanes lambda{wl[0], wl[1], wl[2], wl[3]};
+  const FloatLanes x = clampLanes((lambda - kFirstNm) / kStepNm, 0.0f, float(kD65.size() - 1));
+  FloatLanes below, above, f;
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    int i = std::min(int(x[k]), int(kD65.size()) - 2);
+    below[k] = kD65[i];
+    above[k] = kD65[i + 1];
+    f[k] = x[k] - float(i);
+  }
+  return Spectrum((below * (1.0f - f) + above * f) * inverseLuminance());
+}
 
 }  // namespace columba

@@ -319,6 +319,12 @@ float SpectralDistribution::eval(float lambda) const {
   return timesD65_ ? value * d65(lambda) : value;
 }
 
+Spectrum SpectralDistribution::sample(const Wavelengths& wl) const {
+  Spectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = evalShape(wl[i]);
+  return timesD65_ ? s * d65(wl) : s;
+}
+
 float SpectralDistribution::evalShape(float lambda) const {
   switch (kind_) {
     case Kind::Constant:

@@ -133,11 +133,7 @@ class SpectralDistribution {
   float eval(float lambda) const;
   // A single value at every wavelength.
   bool isConstant() const { return kind_ == Kind::Constant && !timesD65_; }
-  Spectrum sample(const Wavelengths& wl) const {
-    Spectrum s;
-    for (int i = 0; i < kSpectrumSamples; ++i) s[i] = eval(wl[i]);
-    return s;
-  }
+  Spectrum sample(const Wavelengths& wl) const;
   // Mean over the visible range, for light selection and diagnostics.
   float meanValue() const;
   // Luminance as a reflectance under D65, relative to a white reflector: the value of a constant,
