@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <typeinfo>
+
 #include "builtin/builtin_plugins.h"
+#include "core/rng.h"
 #include "scene/scene.h"
 
 using namespace columba;
@@ -36,6 +39,38 @@ TEST(Shapes, AnalyticShapesHitWhereExpected) {
   // The elliptical disk reaches 3 along x but only 1 along y.
   EXPECT_TRUE(scene->intersect(Ray{Vec3(12.9f, 0, 1), Vec3(0, 0, -1)}).has_value());
   EXPECT_FALSE(scene->intersect(Ray{Vec3(10, 1.1f, 1), Vec3(0, 0, -1)}).has_value());
+}
+
+TEST(Shapes, AFewAnalyticShapesTestedInTurnHitWhatEmbreeHits) {
+  // Up to four analytic shapes are intersected in turn; a fifth (far away, never hit) makes the
+  // scene go through Embree. Both must find the same nearest hit, bit for bit, for rays among and
+  // through overlapping shapes, from inside the sphere and the cylinder too.
+  const std::string shapes = R"(
+    <shape type="sphere"><point name="center" x="0" y="0" z="0"/><float name="radius" value="1"/></shape>
+    <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="30"/><scale value="1.5"/></transform></shape>
+    <shape type="disk"><transform name="to_world"><rotate y="1" angle="70"/><translate x="0.3"/></transform></shape>
+    <shape type="cylinder"><point name="p0" x="-1" y="-0.5" z="-1"/><point name="p1" x="1" y="0.5" z="1"/>
+      <float name="radius" value="0.4"/></shape>)";
+  auto inTurn = sceneWith(shapes);
+  auto throughEmbree = sceneWith(shapes + R"(<shape type="sphere"><point name="center" x="100" y="0" z="0"/></shape>)");
+  PCG32 rng(8);
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Vec3 o(4.0f * rng.nextFloat() - 2.0f, 4.0f * rng.nextFloat() - 2.0f, 4.0f * rng.nextFloat() - 2.0f);
+    Vec3 target(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f);
+    Ray ray{o, target - o};
+    ray.tmin = i % 2 ? 1e-3f : 0.0f;
+    ray.tmax = i % 3 ? 10.0f : 0.7f;
+    auto a = inTurn->intersect(ray), b = throughEmbree->intersect(ray);
+    ASSERT_EQ(a.has_value(), b.has_value()) << i;
+    if (!a) continue;
+    ++hits;
+    ASSERT_EQ(a->t, b->t) << i;
+    ASSERT_EQ(typeid(*a->shape), typeid(*b->shape)) << i;
+    ASSERT_EQ(a->p.x, b->p.x) << i;
+    ASSERT_EQ(a->ng.z, b->ng.z) << i;
+  }
+  EXPECT_GT(hits, 10000);
 }
 
 TEST(Shapes, SurfaceAreasFollowTheirTransforms) {

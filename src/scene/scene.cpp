@@ -7,6 +7,7 @@
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "sensors/perspective_sensor.h"
+#include "shapes/analytic_shape.h"
 #include "shapes/shape_group.h"
 
 namespace columba {
@@ -15,6 +16,9 @@ namespace {
 // A ray can cross at most this many pass-through layers: bounds the work of a shadow ray in a
 // dense feather coat and guarantees termination.
 constexpr int kMaxPassThroughLayers = 256;
+// Up to this many analytic shapes are intersected in turn rather than through Embree. With one
+// rectangle (simulation1 and 3) that takes 10 % fewer instructions per sample.
+constexpr size_t kShapesTestedInTurn = 4;
 
 void throwOnEmbreeError(RTCDevice device) {
   RTCError code = rtcGetDeviceError(device);
@@ -66,6 +70,16 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   }
   rtcCommitScene(scene_);
   throwOnEmbreeError(device_);
+  if (shapes_.size() <= kShapesTestedInTurn) {
+    for (const auto& shape : shapes_) {
+      const auto* analytic = dynamic_cast<const AnalyticShape*>(shape.get());
+      if (!analytic) {
+        testedInTurn_.clear();
+        break;
+      }
+      testedInTurn_.push_back(analytic);
+    }
+  }
   RTCBounds bounds;
   rtcGetSceneBounds(scene_, &bounds);
   const Vec3 lo(bounds.lower_x, bounds.lower_y, bounds.lower_z), hi(bounds.upper_x, bounds.upper_y, bounds.upper_z);
@@ -84,6 +98,7 @@ Scene::~Scene() {
 }
 
 std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
+  if (!testedInTurn_.empty()) return intersectInTurn(ray);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
@@ -106,6 +121,24 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
   // A hit through an instance belongs to the instance, which finds the group's shape by geomID.
   const unsigned shape = rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID ? rh.hit.geomID : rh.hit.instID[0];
   return shapes_[shape]->interaction(ray, hit);
+}
+
+std::optional<SurfaceInteraction> Scene::intersectInTurn(const Ray& ray) const {
+  // What Embree asks of each shape's user geometry, in geometry ID order: the nearest hit within
+  // (tmin, tmax), each test bounded by the nearest hit so far.
+  HitRecord hit;
+  hit.t = ray.tmax;
+  bool found = false;
+  for (size_t i = 0; i < testedInTurn_.size(); ++i) {
+    float t;
+    if (!testedInTurn_[i]->intersectPrimitive(0, ray.o, ray.d, ray.tmin, hit.t, t)) continue;
+    hit.t = t;
+    hit.geomID = unsigned(i);
+    found = true;
+  }
+  if (!found) return std::nullopt;
+  hit.ng = testedInTurn_[hit.geomID]->primitiveNormal(0, ray.o + ray.d * hit.t);
+  return shapes_[hit.geomID]->interaction(ray, hit);
 }
 
 Spectrum Scene::traceThrough(Ray ray, const Wavelengths& wl, uint64_t& rays,

@@ -1,5 +1,7 @@
 #pragma once
-// A loaded scene: shapes in an Embree BVH, emitters, the sensor and the integrator.
+// A loaded scene: shapes in an Embree BVH, emitters, the sensor and the integrator. A scene of a
+// few analytic shapes (a sample in a scatterometer set-up) is intersected shape by shape instead:
+// there Embree's traversal and callback cost more than the shapes' own tests.
 #include <embree3/rtcore.h>
 
 #include <memory>
@@ -13,6 +15,7 @@
 
 namespace columba {
 
+class AnalyticShape;
 class Integrator;
 class ParticleTracerIntegrator;
 
@@ -78,6 +81,9 @@ class Scene {
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<std::shared_ptr<Shape>> shapes_;  // indexed by Embree geometry ID
+  // Every shape, when the scene is intersected shape by shape; otherwise empty.
+  std::vector<const AnalyticShape*> testedInTurn_;
+  std::optional<SurfaceInteraction> intersectInTurn(const Ray& ray) const;
   const std::vector<const Emitter*>& emittersOf(EmitterSet set) const {
     return set == EmitterSet::All ? allEmitters_ : emittersBesideBSDFSamples_;
   }
