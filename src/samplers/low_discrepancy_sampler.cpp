@@ -96,18 +96,27 @@ void LowDiscrepancySampler::fill(DimensionTable& t, uint32_t point, uint64_t dim
   const uint64_t seeds = scrambleSeeds2D(dimensionHash);
   if (point < kSobolPoints) {
     // Sample index i takes point i of the sequence in both of the point's dimensions.
-    for (uint32_t i = 0; i < n; ++i) indices[i] = i;
     const auto [dx, dy] = kSobolPointDimensions[point];
-    fillSobolReversed(n, dx, indices, sobol);
-    fillScrambled(n, sobol, uint32_t(seeds), t.values.data());
-    fillSobolReversed(n, dy, indices, sobol);
-    fillScrambled(n, sobol, uint32_t(seeds >> 32), t.values.data() + n);
+    fillScrambled(n, sequence(dx), uint32_t(seeds), t.values.data());
+    fillScrambled(n, sequence(dy), uint32_t(seeds >> 32), t.values.data() + n);
     return;
   }
   fillShuffled(n, dimensionHash, progressive_, indices);
   fillScrambled(n, indices, uint32_t(seeds), t.values.data());  // dimension 0: the point itself
   fillSobolReversed(n, 1, indices, sobol);
   fillScrambled(n, sobol, uint32_t(seeds >> 32), t.values.data() + n);
+}
+
+const uint32_t* LowDiscrepancySampler::sequence(int dimension) {
+  std::vector<uint32_t>& points = sequences_[size_t(dimension)];
+  const uint32_t n = uint32_t(sampleCount_);
+  if (points.size() != n) {
+    std::vector<uint32_t> indices(n);
+    for (uint32_t i = 0; i < n; ++i) indices[i] = i;
+    points.resize(n);
+    fillSobolReversed(n, dimension, indices.data(), points.data());
+  }
+  return points.data();
 }
 
 float LowDiscrepancySampler::get1D() {

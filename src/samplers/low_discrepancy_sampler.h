@@ -39,13 +39,15 @@
 //
 // The renderer draws a pixel's samples one after another, and every sample asks for the same
 // first points: those are computed for all of the pixel's samples at once, the first time the
-// pixel asks for them, in a loop the compiler vectorises. The values are the same as one at a
+// pixel asks for them, in a loop the compiler vectorises; the first four points' unscrambled
+// sequence is the same for every pixel and is computed once. The values are the same as one at a
 // time.
 #include <array>
 #include <memory>
 #include <vector>
 #include "samplers/pixel_sample_state.h"
 #include "samplers/sampler.h"
+#include "samplers/sobol.h"
 
 namespace columba {
 
@@ -96,6 +98,9 @@ class LowDiscrepancySampler : public Sampler {
     return &t;
   }
   void fill(DimensionTable& t, uint32_t point, uint64_t dimensionHash);
+  // The Sobol sequence's first sampleCount points in `dimension`, bit-reversed and not scrambled:
+  // the same for every pixel, so computed once.
+  const uint32_t* sequence(int dimension);
   // The next dimension's point (get2D, and the pairs get1D serves).
   Vec2 nextPoint();
 
@@ -105,6 +110,7 @@ class LowDiscrepancySampler : public Sampler {
   float pendingY_ = 0.0f;
   PixelSampleState state_;
   std::array<DimensionTable, kTabulatedDimensions> tables_;
+  std::array<std::vector<uint32_t>, kSobolDimensions> sequences_;
   std::vector<uint32_t> scratch_;
 };
 
