@@ -66,8 +66,8 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
     // Only roots within (aLo, aHi) can cut the range: solved for only where the quadratic changes
     // sign over it or has its vertex inside (it usually has neither).
     auto f = [&](double a) { return (q2_[side] * a - 2.0 * q1_[side]) * a + q0_[side]; };
-    const bool mayCut =
-        f(aLo) * f(aHi) <= 0.0 || (q2_[side] != 0.0 && q1_[side] / q2_[side] > aLo && q1_[side] / q2_[side] < aHi);
+    const double vertex = q2_[side] != 0.0 ? q1_[side] / q2_[side] : aLo;  // aLo: a line has none inside
+    const bool mayCut = f(aLo) * f(aHi) <= 0.0 || (vertex > aLo && vertex < aHi);
     if (mayCut && solveQuadratic(q2_[side], -2.0 * q1_[side], q0_[side], r0, r1)) {
       bounds[boundCount++] = r0;
       bounds[boundCount++] = r1;

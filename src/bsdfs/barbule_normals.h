@@ -51,14 +51,14 @@ inline auto inPlaneProjection(const Vec3& w, const N& n) {
   return w.z * n.x + w.x * n.y;
 }
 
-// Density of theta on [-thetaD, thetaD] proportional to (A cos(theta) + B sin(theta))+, the
-// projected area of the normals at one phi seen from a direction with in-plane part
-// A = cos(theta_w) cos(gamma_w - phi - mu) > 0 and longitudinal part B = sin(theta_w).
 // An angle with its cosine and sine.
 struct AngleCosSin {
   float theta, cosTheta, sinTheta;
 };
 
+// Density of theta on [-thetaD, thetaD] proportional to (A cos(theta) + B sin(theta))+, the
+// projected area of the normals at one phi seen from a direction with in-plane part
+// A = cos(theta_w) cos(gamma_w - phi - mu) > 0 and longitudinal part B = sin(theta_w).
 class LongitudinalDensity {
  public:
   LongitudinalDensity(float A, float B);

@@ -24,12 +24,19 @@ constexpr std::array<float, 107> kD65 = {
     63.5927f, 55.0054f, 46.4182f, 56.6118f, 66.8054f, 65.0941f, 63.3828f, 63.8434f, 64.304f,  61.8779f,  // 750-795
     59.4519f, 55.7054f, 51.959f,  54.6998f, 57.4406f, 58.8765f, 60.3125f};                               // 800-830
 
-float relativeD65(float lambda) {
-  float x = std::clamp((lambda - kFirstNm) / kStepNm, 0.0f, float(kD65.size() - 1));
-  int i = std::min(int(x), int(kD65.size()) - 2);
-  float f = x - float(i);
-  return kD65[i] * (1.0f - f) + kD65[i + 1] * f;
+// Linear interpolation of the table at four wavelengths, one per lane.
+FloatLanes relativeD65(FloatLanes lambda) {
+  const FloatLanes x = clampLanes((lambda - kFirstNm) / kStepNm, 0.0f, float(kD65.size() - 1));
+  FloatLanes below, above, f;
+  for (int k = 0; k < kLaneCount; ++k) {
+    int i = std::min(int(x[k]), int(kD65.size()) - 2);
+    below[k] = kD65[i];
+    above[k] = kD65[i + 1];
+    f[k] = x[k] - float(i);
+  }
+  return below * (1.0f - f) + above * f;
 }
+float relativeD65(float lambda) { return relativeD65(lambda + FloatLanes{})[0]; }
 
 // 1 / luminance of the tabulated D65, on the 1 nm grid the colour matching functions are integrated on.
 float inverseLuminance() {
@@ -48,17 +55,7 @@ float inverseLuminance() {
 float d65(float lambda) { return relativeD65(lambda) * inverseLuminance(); }
 
 Spectrum d65(const Wavelengths& wl) {
-  // relativeD65's interpolation in lanes (the same operations, so the same values).
-  const FloatLanes lambda{wl[0], wl[1], wl[2], wl[3]};
-  const FloatLanes x = clampLanes((lambda - kFirstNm) / kStepNm, 0.0f, float(kD65.size() - 1));
-  FloatLanes below, above, f;
-  for (int k = 0; k < kSpectrumSamples; ++k) {
-    int i = std::min(int(x[k]), int(kD65.size()) - 2);
-    below[k] = kD65[i];
-    above[k] = kD65[i + 1];
-    f[k] = x[k] - float(i);
-  }
-  return Spectrum((below * (1.0f - f) + above * f) * inverseLuminance());
+  return Spectrum(relativeD65(FloatLanes{wl[0], wl[1], wl[2], wl[3]}) * inverseLuminance());
 }
 
 }  // namespace columba
