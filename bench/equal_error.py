@@ -57,9 +57,16 @@ def file_digest(h, path):
             h.update(block)
 
 
+# What renders converge to, part of the cache key: a cached image from a renderer that converged
+# to another image (before camera samples were splatted over their filter's footprint, border
+# pixels were filtered over positions beyond the film, and the Gaussian was not windowed) is not
+# reused.
+CONVERGED_IMAGE_CONVENTION = "splatted camera samples; pixels over their filter's mass on the film"
+
+
 def converged(columba, cache, name, scene, inputs, defines, ref_spp, threads, work):
     """The converged image (mean of two halves) and its own relative RMSE estimate."""
-    h = hashlib.sha256()
+    h = hashlib.sha256(CONVERGED_IMAGE_CONVENTION.encode())
     for path in [scene] + inputs:
         file_digest(h, path)
     h.update(repr((sorted(defines), ref_spp)).encode())

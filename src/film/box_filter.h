@@ -10,9 +10,8 @@ class Properties;
 class BoxFilter : public ReconstructionFilter {
  public:
   float radius() const override { return 0.5f; }
-  // The normalised filter: 1 on the pixel's square, 0 outside.
-  float eval(Vec2 offset) const override;
-  Vec2 sample(Vec2 u) const override { return {u.x - 0.5f, u.y - 0.5f}; }
+  // 1 on [-1/2, 1/2), half-open so that a sample on the border between two pixels counts for one.
+  float eval(float offset) const override { return offset >= -0.5f && offset < 0.5f ? 1.0f : 0.0f; }
 };
 
 // <rfilter type="box"/>: no parameters.

@@ -1,34 +1,32 @@
 #include "film/gaussian_filter.h"
 
+#include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
-#include "core/fast_math.h"
+#include "core/math.h"
 #include "core/properties.h"
 
 namespace columba {
 
 GaussianFilter::GaussianFilter(float stddev) : stddev_(stddev), radius_(4.0f * stddev) {
-  cdfLimit_ = std::erf(radius_ / (stddev_ * std::sqrt(2.0)));
-  axisNormalization_ = 1.0 / (stddev_ * std::sqrt(2.0 * kPiDouble) * cdfLimit_);
+  const double s = stddev_, r = radius_, atRadius = std::exp(-r * r / (2.0 * s * s));
+  const double mass = s * std::sqrt(2.0 * kPiDouble) * std::erf(r / (s * std::sqrt(2.0))) - 2.0 * r * atRadius;
+  atRadius_ = float(atRadius);
+  normalization_ = float(1.0 / mass);
 }
 
-double GaussianFilter::evalAxis(double x) const {
-  if (std::abs(x) > radius_) return 0.0;
-  return axisNormalization_ * std::exp(-x * x / (2.0 * double(stddev_) * stddev_));
+float GaussianFilter::eval(float offset) const {
+  if (!(std::abs(offset) <= radius_)) return 0.0f;
+  return normalization_ * std::max(0.0f, std::exp(-offset * offset / (2.0f * stddev_ * stddev_)) - atRadius_);
 }
-
-float GaussianFilter::eval(Vec2 offset) const { return float(evalAxis(offset.x) * evalAxis(offset.y)); }
-
-// Inverts the truncated normal's CDF, erf(x / (stddev sqrt 2)) mapped from [-limit, limit].
-float GaussianFilter::sampleAxis(float u) const {
-  float offset = std::sqrt(2.0f) * stddev_ * erfInverse((2.0f * u - 1.0f) * cdfLimit_);
-  return clampf(offset, -radius_, radius_);
-}
-
-Vec2 GaussianFilter::sample(Vec2 u) const { return {sampleAxis(u.x), sampleAxis(u.y)}; }
 
 std::shared_ptr<Object> makeGaussianFilter(const Properties& props) {
   float stddev = props.getFloat("stddev", 0.5f);
   if (!(stddev > 0.0f) || !std::isfinite(stddev)) throw props.error("stddev", "must be a positive number");
+  if (!(4.0f * stddev <= kMaxFilterRadius))
+    throw props.error("stddev", fmt::format("must be at most {} pixels, so that the filter's radius (4 stddev) is at "
+                                            "most {}",
+                                            kMaxFilterRadius / 4.0f, kMaxFilterRadius));
   return std::make_shared<GaussianFilter>(stddev);
 }
 

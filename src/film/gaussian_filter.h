@@ -1,7 +1,7 @@
 #pragma once
-// The Gaussian filter (Mitsuba 3's `gaussian`): a separable normal distribution of standard
-// deviation `stddev` pixels truncated at radius 4 stddev, sampled exactly by inverting its CDF
-// with a closed-form inverse error function (no tables to miss in the cache per camera sample).
+// The Gaussian filter (Mitsuba 3's `gaussian`): on each axis a windowed Gaussian of standard
+// deviation `stddev` pixels, exp(-x^2 / (2 stddev^2)) less its value at the radius, 4 stddev, so
+// that it falls to zero there without a step; normalised.
 #include <memory>
 #include "film/reconstruction_filter.h"
 
@@ -13,16 +13,12 @@ class GaussianFilter : public ReconstructionFilter {
  public:
   explicit GaussianFilter(float stddev = 0.5f);
   float radius() const override { return radius_; }
-  // The normalised filter, i.e. the density of sample().
-  float eval(Vec2 offset) const override;
-  Vec2 sample(Vec2 u) const override;
+  float eval(float offset) const override;
 
  private:
   float stddev_, radius_;
-  double axisNormalization_;  // 1 / the integral of the truncated 1D Gaussian
-  float cdfLimit_;            // erf(radius / (stddev sqrt 2))
-  double evalAxis(double x) const;
-  float sampleAxis(float u) const;
+  float atRadius_;       // exp(-radius^2 / (2 stddev^2))
+  float normalization_;  // 1 / the integral of the windowed Gaussian
 };
 
 // <rfilter type="gaussian">: stddev (0.5).

@@ -1,5 +1,6 @@
 #include "film/tent_filter.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -8,22 +9,14 @@
 
 namespace columba {
 
-float TentFilter::evalAxis(float x) const { return std::max(0.0f, 1.0f - std::abs(x) / radius_) / radius_; }
-
-float TentFilter::eval(Vec2 offset) const { return evalAxis(offset.x) * evalAxis(offset.y); }
-
-// With s = 1 + x/r, the CDF is s^2 / 2 on the rising half (u < 1/2), mirrored on the falling half.
-float TentFilter::sampleAxis(float u) const {
-  const float x = u < 0.5f ? std::sqrt(2.0f * u) - 1.0f : 1.0f - std::sqrt(2.0f - 2.0f * u);
-  return clampf(x * radius_, -radius_, radius_);
-}
-
-Vec2 TentFilter::sample(Vec2 u) const { return {sampleAxis(u.x), sampleAxis(u.y)}; }
+float TentFilter::eval(float offset) const { return std::max(0.0f, 1.0f - std::abs(offset) / radius_) / radius_; }
 
 std::shared_ptr<Object> makeTentFilter(const Properties& props) {
   const float radius = props.getFloat("radius", 1.0f);
   if (!(radius > 0.0f) || !std::isfinite(radius))
     throw props.error("radius", "radius must be positive, not " + std::to_string(radius));
+  if (!(radius <= kMaxFilterRadius))
+    throw props.error("radius", fmt::format("radius must be at most {} pixels, not {}", kMaxFilterRadius, radius));
   return std::make_shared<TentFilter>(radius);
 }
 

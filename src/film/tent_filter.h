@@ -1,6 +1,6 @@
 #pragma once
 // The tent filter (Mitsuba's `tent`): on each axis a triangle falling linearly from the pixel's
-// centre to zero at `radius` pixels (1 by default), sampled exactly by inverting its CDF.
+// centre to zero at `radius` pixels (1 by default).
 #include <memory>
 #include "film/reconstruction_filter.h"
 
@@ -12,14 +12,11 @@ class TentFilter : public ReconstructionFilter {
  public:
   explicit TentFilter(float radius = 1.0f) : radius_(radius) {}
   float radius() const override { return radius_; }
-  // The normalised filter, i.e. the density of sample(): (1 - |x|/r)(1 - |y|/r) / r^2.
-  float eval(Vec2 offset) const override;
-  Vec2 sample(Vec2 u) const override;
+  // (1 - |x| / r) / r within the radius.
+  float eval(float offset) const override;
 
  private:
   float radius_;
-  float evalAxis(float x) const;
-  float sampleAxis(float u) const;
 };
 
 // <rfilter type="tent">: radius (1).

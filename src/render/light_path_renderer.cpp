@@ -65,12 +65,13 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
   const uint64_t total = pixels * uint64_t(spp);
   const uint64_t perBlock = std::max(kMinSamplesPerBlock, (pixels + 3) / 4);
   const uint64_t blocks = (total + perBlock - 1) / perBlock;
-  const size_t bufferBytes = size_t(pixels) * 3 * sizeof(float);
+  const size_t bufferBytes = size_t(pixels) * 3 * sizeof(double);
   const size_t buffers =
       std::min<size_t>({std::max<size_t>(1, kBufferBudgetBytes / bufferBytes), kMaxBuffers, size_t(blocks)});
 
   const auto threadLimit = limitThreads(settings.threads);
-  std::vector<SplatBuffer> blockBuffers(buffers, SplatBuffer(window, film.filter()));
+  const FilterFootprint footprint(film.filter());
+  std::vector<SplatBuffer> blockBuffers(buffers, SplatBuffer(window, footprint));
   std::vector<double> sums(size_t(pixels) * 3, 0.0);
   std::atomic<uint64_t> rays{0}, nonFinite{0};
   std::atomic<int> blocksDone{0};
@@ -119,8 +120,8 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
     tbb::parallel_for(tbb::blocked_range<size_t>(0, sums.size()), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t b = 0; b < count; ++b) {
         if (!finished[b]) continue;
-        const std::vector<float>& block = blockBuffers[b].sums();
-        for (size_t i = range.begin(); i != range.end(); ++i) sums[i] += double(block[i]);
+        const std::vector<double>& block = blockBuffers[b].sums();
+        for (size_t i = range.begin(); i != range.end(); ++i) sums[i] += block[i];
       }
     });
     for (size_t b = 0; b < count; ++b)
@@ -128,14 +129,17 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
   }
 
   // Each sample's importance spreads over the whole film: the film's pixel count over the
-  // samples makes each pixel the mean of its camera samples.
+  // samples, and each pixel's filter mass on the film (as a camera sample's splats are divided),
+  // make each pixel what camera samples estimate.
   Image image = film.makeImage();
   const double scale = samplesDone > 0 ? double(film.width()) * double(film.height()) / double(samplesDone) : 0.0;
   for (int y = 0; y < window.height(); ++y)
     for (int x = 0; x < window.width(); ++x) {
       float* p = image.pixel(x, y);
       const size_t i = (size_t(y) * size_t(window.width()) + size_t(x)) * 3;
-      for (int c = 0; c < 3; ++c) p[c] = float(sums[i + size_t(c)] * scale);
+      const double mass =
+          footprint.massWithin(window.x0 + x, film.width()) * footprint.massWithin(window.y0 + y, film.height());
+      for (int c = 0; c < 3; ++c) p[c] = float(sums[i + size_t(c)] * scale / mass);
     }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.rays = rays;

@@ -14,26 +14,26 @@
 #include "render/light_path_renderer.h"
 #include "render/sample_allocation.h"
 #include "render/thread_limit.h"
+#include "render/tiled_splats.h"
 #include "samplers/sampler_parameters.h"
 
 namespace columba {
 
 namespace {
-constexpr int kTileSize = 16;
 
 // Bins of equal width over a wavelength range, for spectral output.
 struct WavelengthBins {
   int count = 0;
   float lo = 0.0f, width = 1.0f;
 
-  // Adds one camera sample's estimate of every bin's mean radiance to `sums`: each of the path's
-  // wavelengths has the sampling density as its marginal, so L / (pdf * bin width), averaged over
-  // the wavelengths, estimates the bin's integral of L divided by its width.
-  void accumulate(const Spectrum& L, const Wavelengths& wl, double* sums) const {
+  // Adds one camera sample's estimate of every bin's mean radiance, times `scale`, to `values`:
+  // each of the path's wavelengths has the sampling density as its marginal, so L / (pdf * bin
+  // width), averaged over the wavelengths, estimates the bin's integral of L divided by its width.
+  void accumulate(const Spectrum& L, const Wavelengths& wl, float scale, float* values) const {
     for (int k = 0; k < kSpectrumSamples; ++k) {
       int bin = int(std::floor((wl[k] - lo) / width));
       if (bin < 0 || bin >= count || !(wl.pdf[k] > 0.0f)) continue;
-      sums[bin] += double(L[k]) / (double(wl.pdf[k]) * width * kSpectrumSamples);
+      values[bin] += float(double(L[k]) * scale / (double(wl.pdf[k]) * width * kSpectrumSamples));
     }
   }
 };
@@ -44,95 +44,133 @@ WavelengthDensity wavelengthDensity(const RenderSettings& settings) {
   return settings.spectralBins > 0 ? WavelengthDensity::Visible : WavelengthDensity::RGBMatching;
 }
 
-// The camera ray of a sample of pixel (x, y): an offset drawn from the filter, then a point on
-// the lens, drawn only for sensors that have one (`lens`: sensor.needsApertureSample(), asked
-// once per render), so pinhole sensors' samples stay as they were.
-std::optional<Ray> cameraRay(const Sensor& sensor, bool lens, int x, int y, Sampler& sampler) {
-  const Vec2 offset = sensor.film().filter().sample(sampler.get2D());
-  const Vec2 aperture = lens ? sampler.get2D() : Vec2(0.5f, 0.5f);
-  return sensor.generateRay(Vec2(x + 0.5f + offset.x, y + 0.5f + offset.y), aperture);
-}
-
-// What a pixel's samples add up to: RGB, and the luminance and its square for adaptive sampling.
-struct PixelSums {
-  double rgb[3] = {0, 0, 0};
-  double luminance = 0.0, luminanceSquares = 0.0;
-  int taken = 0;  // sample indices drawn (those without a ray or with a non-finite value count too)
+// A camera sample of pixel (x, y): a film position uniform in the pixel, as Mitsuba draws it (the
+// filter weighs it for each pixel it reaches), then a point on the lens, drawn only for sensors
+// that have one (`lens`: sensor.needsApertureSample(), asked once per render), so pinhole
+// sensors' samples stay as they were.
+struct CameraSample {
+  Vec2 filmPosition;
+  std::optional<Ray> ray;
 };
+CameraSample cameraSample(const Sensor& sensor, bool lens, int x, int y, Sampler& sampler) {
+  const Vec2 u = sampler.get2D();
+  const Vec2 filmPosition(float(x) + u.x, float(y) + u.y);
+  const Vec2 aperture = lens ? sampler.get2D() : Vec2(0.5f, 0.5f);
+  return {filmPosition, sensor.generateRay(filmPosition, aperture)};
+}
 
 // Draws the samples of single pixels, for both kinds of render.
 struct PixelSampler {
   const Scene& scene;
   const Sensor& sensor;
   const Integrator& integrator;
-  const WavelengthBins& bins;
   WavelengthDensity wavelengths;
   uint64_t seed;
-  float reach;  // of a camera sample from its pixel's centre
-  bool lens;    // the sensor draws an aperture sample
+  bool lens;  // the sensor draws an aperture sample
 
-  bool sees(int x, int y) const {
-    return sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach));
-  }
-  // Adds samples [begin, end) of pixel (x, y) to `sums` and `binSums`; false when `stop()` asked to
-  // stop first (checked before every sample).
-  template <typename Stop>
-  bool add(Sampler& sampler, int x, int y, int begin, int end, PixelSums& sums, double* binSums, uint64_t& rays,
-           uint64_t& nonFinite, const Stop& stop) const {
+  bool sees(int x, int y) const { return sensor.seesAnyOf(Vec2(float(x), float(y)), Vec2(x + 1.0f, y + 1.0f)); }
+  // Draws samples [begin, end) of pixel (x, y), handing each with a finite value to
+  // `take(filmPosition, L, wl)`; returns false when `stop()` asked to stop first (checked before
+  // every sample). `taken` counts the sample indices drawn (those without a ray or with a
+  // non-finite value too).
+  template <typename Take, typename Stop>
+  bool draw(Sampler& sampler, int x, int y, int begin, int end, uint64_t& rays, uint64_t& nonFinite, int& taken,
+            const Take& take, const Stop& stop) const {
     for (int s = begin; s < end; ++s) {
       if (stop()) return false;
-      ++sums.taken;
+      ++taken;
       sampler.startPixelSample(x, y, s, seed);
       Wavelengths wl = Wavelengths::sample(sampler.get1D(), wavelengths);
-      std::optional<Ray> ray = cameraRay(sensor, lens, x, y, sampler);
-      if (!ray) continue;
-      Spectrum L = integrator.radiance(scene, *ray, sampler, wl, rays);
-      if (!L.isFinite()) {  // a numerical failure must not poison the pixel; it is counted
+      CameraSample sample = cameraSample(sensor, lens, x, y, sampler);
+      if (!sample.ray) continue;
+      Spectrum L = integrator.radiance(scene, *sample.ray, sampler, wl, rays);
+      if (!L.isFinite()) {  // a numerical failure must not poison the pixels; it is counted
         ++nonFinite;
         continue;
       }
-      if (bins.count > 0) bins.accumulate(L, wl, binSums);
-      Vec3 rgb = spectrumToRGB(L, wl);
-      sums.rgb[0] += rgb.x;
-      sums.rgb[1] += rgb.y;
-      sums.rgb[2] += rgb.z;
-      double luminance = 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
-      sums.luminance += luminance;
-      sums.luminanceSquares += luminance * luminance;
+      take(sample.filmPosition, L, wl);
     }
     return true;
   }
 };
 
-// The tiles of a window, rendered in parallel; `pixel(sampler, scratch, x, y, stop)` renders one
-// pixel (film coordinates) and returns false once a stop was requested. `scratch` holds
-// `scratchSize` doubles for the pixel to use, allocated once per group of tiles.
-template <typename RenderPixel>
-void forEachTile(const PixelRect& window, const RenderSettings& settings, const Sampler& prototype, size_t scratchSize,
-                 int progressBase, int progressTotal, std::atomic<bool>& cancelled, const RenderPixel& pixel) {
-  const int width = window.width(), height = window.height();
-  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+// Renders the window's pixels into `image` (and its spectral bins): every pixel within the
+// filter's reach of the window draws its samples [sampleBegin, sampleEnd(x, y)), each splatted
+// with weight 1 / their count (render/tiled_splats.h). Returns the sample indices the window's
+// own pixels drew (those beyond it are drawn too, and count in the rays).
+template <typename SampleEnd>
+uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& settings, TiledSplats& tiles,
+                            const PixelRect& window, const WavelengthBins& bins, const Sampler& pattern,
+                            int sampleBegin, const SampleEnd& sampleEnd, int progressBase, int progressTotal,
+                            Image& image, RenderStats& stats, std::atomic<bool>& cancelled) {
+  const int channels = 3 + bins.count;
+  std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<int> tilesDone{0};
-  tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& range) {
-    std::unique_ptr<Sampler> sampler = prototype.clone();
-    std::vector<double> scratch(scratchSize);
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.tileCount(), 1), [&](const tbb::blocked_range<int>& range) {
+    std::unique_ptr<Sampler> sampler = pattern.clone();
+    std::vector<float> values(static_cast<size_t>(channels));
     // Checked before every sample, so that a stop request is answered within one sample at any
     // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
-    auto stopRequested = [&] {
+    auto stop = [&] {
       if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
       cancelled = true;
       return true;
     };
     for (int tile = range.begin(); tile != range.end(); ++tile) {
-      // (x0, y0): the tile's corner in the window; (x, y): a pixel of the film.
-      const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-      for (int y = window.y0 + y0; y < window.y0 + std::min(y0 + kTileSize, height); ++y)
-        for (int x = window.x0 + x0; x < window.x0 + std::min(x0 + kTileSize, width); ++x)
-          if (!pixel(*sampler, scratch, x, y, stopRequested)) return;
-      int done = ++tilesDone;
+      const PixelRect rect = tiles.tilePixels(tile);
+      SplatBuffer& buffer = tiles.buffer(tile);
+      uint64_t tileRays = 0, tileNonFinite = 0, tileSamples = 0;
+      bool finished = true;
+      for (int y = rect.y0; y < rect.y1 && finished; ++y)
+        for (int x = rect.x0; x < rect.x1 && finished; ++x) {
+          const int end = sampleEnd(x, y);
+          const bool inWindow = x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
+          if (end <= sampleBegin) continue;
+          if (!pixels.sees(x, y)) {  // its samples would all be black: they count, but add nothing
+            if (inWindow) tileSamples += uint64_t(end - sampleBegin);
+            continue;
+          }
+          const float weight = 1.0f / float(end - sampleBegin);
+          int taken = 0;
+          auto take = [&](Vec2 filmPosition, const Spectrum& L, const Wavelengths& wl) {
+            const Vec3 rgb = spectrumToRGB(L, wl) * weight;
+            values[0] = rgb.x;
+            values[1] = rgb.y;
+            values[2] = rgb.z;
+            if (bins.count > 0) {
+              std::fill(values.begin() + 3, values.end(), 0.0f);
+              bins.accumulate(L, wl, weight, values.data() + 3);
+            }
+            buffer.add(filmPosition, values.data());
+          };
+          finished = pixels.draw(*sampler, x, y, sampleBegin, end, tileRays, tileNonFinite, taken, take, stop);
+          if (inWindow) tileSamples += uint64_t(taken);
+        }
+      rays += tileRays;
+      nonFinite += tileNonFinite;
+      if (!finished) {  // left out, as its pixels' splats are incomplete
+        tiles.discard(tile);
+        return;
+      }
+      samples += tileSamples;
+      const int done = ++tilesDone;
       if (settings.onTileDone) settings.onTileDone(progressBase + done, progressTotal);
     }
   });
+
+  const std::vector<double> values = tiles.resolve();
+  for (int iy = 0; iy < window.height(); ++iy)
+    for (int ix = 0; ix < window.width(); ++ix) {
+      const double* v = &values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(channels)];
+      float* p = image.pixel(ix, iy);
+      for (int c = 0; c < 3; ++c) p[c] = float(v[c]);
+      for (int b = 0; b < bins.count; ++b)
+        image.spectral.values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(bins.count) + size_t(b)] =
+            float(v[3 + b]);
+    }
+  stats.rays += rays;
+  stats.nonFiniteSamples += nonFinite;
+  return samples;
 }
 
 // A quarter of the budget, 2 to 16, rounded down to a power of two: the progressive pattern's
@@ -141,6 +179,59 @@ int pilotSamplesFor(int spp) {
   int pilot = 2;
   while (pilot * 2 <= std::min(spp / 4, 16)) pilot *= 2;
   return pilot;
+}
+
+// Tiles of a rectangle of pixels, for the pilot.
+struct PilotTiles {
+  PixelRect rect;
+  int across() const { return (rect.width() + TiledSplats::kTileSize - 1) / TiledSplats::kTileSize; }
+  int count() const { return across() * ((rect.height() + TiledSplats::kTileSize - 1) / TiledSplats::kTileSize); }
+};
+
+// The pilot of adaptive sampling over the rectangle of pixels `tiles.rect` (a window's, and those
+// within its filter's reach): each seen pixel's sums of its first `pilot` samples' luminance, row
+// by row.
+std::vector<PilotPixel> renderPilot(const PixelSampler& pixels, const RenderSettings& settings, const Sampler& pattern,
+                                    const PilotTiles& tiles, int pilot, int progressTotal, RenderStats& stats,
+                                    std::atomic<bool>& cancelled) {
+  const PixelRect& rect = tiles.rect;
+  std::vector<PilotPixel> pilotPixels(size_t(rect.width()) * size_t(rect.height()));
+  std::atomic<uint64_t> rays{0}, nonFinite{0};
+  std::atomic<int> tilesDone{0};
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.count(), 1), [&](const tbb::blocked_range<int>& range) {
+    std::unique_ptr<Sampler> sampler = pattern.clone();
+    auto stop = [&] {
+      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
+      cancelled = true;
+      return true;
+    };
+    for (int tile = range.begin(); tile != range.end(); ++tile) {
+      const int x0 = rect.x0 + (tile % tiles.across()) * TiledSplats::kTileSize;
+      const int y0 = rect.y0 + (tile / tiles.across()) * TiledSplats::kTileSize;
+      uint64_t tileRays = 0, tileNonFinite = 0;
+      for (int y = y0; y < std::min(y0 + TiledSplats::kTileSize, rect.y1); ++y)
+        for (int x = x0; x < std::min(x0 + TiledSplats::kTileSize, rect.x1); ++x) {
+          PilotPixel& p = pilotPixels[size_t(y - rect.y0) * size_t(rect.width()) + size_t(x - rect.x0)];
+          p.seen = pixels.sees(x, y);
+          if (!p.seen) continue;
+          int taken = 0;
+          auto take = [&](Vec2, const Spectrum& L, const Wavelengths& wl) {
+            const Vec3 rgb = spectrumToRGB(L, wl);
+            const double luminance = 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
+            p.sum += luminance;
+            p.sumSquares += luminance * luminance;
+          };
+          if (!pixels.draw(*sampler, x, y, 0, pilot, tileRays, tileNonFinite, taken, take, stop)) return;
+        }
+      rays += tileRays;
+      nonFinite += tileNonFinite;
+      const int done = ++tilesDone;
+      if (settings.onTileDone) settings.onTileDone(done, progressTotal);
+    }
+  });
+  stats.rays += rays;
+  stats.nonFiniteSamples += nonFinite;
+  return pilotPixels;
 }
 
 }  // namespace
@@ -177,105 +268,53 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   const auto threadLimit = limitThreads(settings.threads);
   // The scene's sampler with a pattern of this render's sample count.
   const std::unique_ptr<Sampler> pattern = sensor.sampler().withSampleCount(spp);
-  const PixelSampler pixels{scene,
-                            sensor,
-                            scene.integrator(),
-                            bins,
-                            wavelengthDensity(settings),
-                            settings.seed,
-                            film.filter().radius(),
-                            sensor.needsApertureSample()};
-  const int tileCount = ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
-  std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
+  const PixelSampler pixels{
+      scene, sensor, scene.integrator(), wavelengthDensity(settings), settings.seed, sensor.needsApertureSample()};
+  const FilterFootprint footprint(film.filter());
+  TiledSplats tiles(window, film.width(), film.height(), footprint, 3 + bins.count);
   std::atomic<bool> cancelled{false};
-  // Each pixel's value: its sums over its samples.
-  auto store = [&](int ix, int iy, const PixelSums& sums, const double* binSums, int count) {
-    float* p = image.pixel(ix, iy);
-    for (int c = 0; c < 3; ++c) p[c] = count > 0 ? float(sums.rgb[c] / count) : 0.0f;
-    for (int b = 0; b < bins.count; ++b)
-      image.spectral.values[(size_t(iy) * width + ix) * bins.count + b] = count > 0 ? float(binSums[b] / count) : 0.0f;
-  };
+  stats.rays = 0;
+  stats.nonFiniteSamples = 0;
   auto start = std::chrono::steady_clock::now();
 
   if (!settings.adaptive) {
     // Every pixel gets the samples [sampleBegin, sampleEnd).
-    const int count = sampleEnd - sampleBegin;
-    forEachTile(window, settings, *pattern, size_t(bins.count), 0, tileCount, cancelled,
-                [&](Sampler& sampler, std::vector<double>& binSums, int x, int y, const auto& stop) {
-                  PixelSums sums;
-                  std::fill(binSums.begin(), binSums.end(), 0.0);
-                  uint64_t pixelRays = 0, pixelNonFinite = 0;
-                  bool finished = !pixels.sees(x, y) || pixels.add(sampler, x, y, sampleBegin, sampleEnd, sums,
-                                                                   binSums.data(), pixelRays, pixelNonFinite, stop);
-                  rays += pixelRays;
-                  nonFinite += pixelNonFinite;
-                  if (!finished) return false;  // the unfinished pixel stays black
-                  samples += uint64_t(count);
-                  store(x - window.x0, y - window.y0, sums, binSums.data(), count);
-                  return true;
-                });
+    stats.samples = splatCameraSamples(
+        pixels, settings, tiles, window, bins, *pattern, sampleBegin, [&](int, int) { return sampleEnd; }, 0,
+        tiles.tileCount(), image, stats, cancelled);
   } else {
-    // A pilot for every pixel, the plan, then the rest of each pixel's samples, from a pattern
-    // whose every power-of-two prefix is stratified: with ldsampler's padded pattern the pilot and
-    // the rest were random subsets of it, and simulation3's variance per sample 41 % (64 spp) and
-    // 87 % (256 spp) above a uniform render's.
+    // A pilot for every pixel gives the plan; then every pixel draws its planned samples, the
+    // pilot's again among them (they are the same samples), so that each is splatted with weight
+    // 1 / the pixel's count. Both from a pattern whose every power-of-two prefix is stratified:
+    // with ldsampler's padded pattern the pilot and the rest were random subsets of it, and
+    // simulation3's variance per sample 41 % (64 spp) and 87 % (256 spp) above a uniform render's.
     const std::unique_ptr<Sampler> progressive = pattern->withProgressivePattern();
     const int pilot = pilotSamplesFor(spp);
-    const size_t pixelCount = size_t(width) * size_t(height);
-    std::vector<PixelSums> sums(pixelCount);
-    std::vector<double> binSums(pixelCount * size_t(bins.count), 0.0);
-    std::vector<PilotPixel> pilotPixels(pixelCount);
-    // A film pixel's place in the window's arrays.
-    auto windowIndex = [&](int x, int y) { return size_t(y - window.y0) * width + size_t(x - window.x0); };
-    auto addRange = [&](Sampler& sampler, int x, int y, int begin, int end, const auto& stop) {
-      size_t i = windowIndex(x, y);
-      uint64_t pixelRays = 0, pixelNonFinite = 0;
-      bool finished = pixels.add(sampler, x, y, begin, end, sums[i], binSums.data() + i * bins.count, pixelRays,
-                                 pixelNonFinite, stop);
-      rays += pixelRays;
-      nonFinite += pixelNonFinite;
-      return finished;
-    };
-    forEachTile(window, settings, *progressive, 0, 0, 2 * tileCount, cancelled,
-                [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
-                  size_t i = windowIndex(x, y);
-                  pilotPixels[i].seen = pixels.sees(x, y);
-                  return !pilotPixels[i].seen || addRange(sampler, x, y, 0, pilot, stop);
-                });
-    SamplePlan plan;
+    const PilotTiles pilotTiles{tiles.sources()};
+    const int progressTotal = pilotTiles.count() + tiles.tileCount();
+    const std::vector<PilotPixel> pilotPixels =
+        renderPilot(pixels, settings, *progressive, pilotTiles, pilot, progressTotal, stats, cancelled);
     if (!cancelled) {
-      for (size_t i = 0; i < pixelCount; ++i) {
-        pilotPixels[i].sum = sums[i].luminance;
-        pilotPixels[i].sumSquares = sums[i].luminanceSquares;
-      }
-      plan = planSamples(pilotPixels, width, height, {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
-      forEachTile(window, settings, *progressive, 0, tileCount, 2 * tileCount, cancelled,
-                  [&](Sampler& sampler, std::vector<double>&, int x, int y, const auto& stop) {
-                    size_t i = windowIndex(x, y);
-                    return plan.counts[i] <= pilot || addRange(sampler, x, y, pilot, plan.counts[i], stop);
-                  });
+      const PixelRect& planned = pilotTiles.rect;
+      const SamplePlan plan = planSamples(pilotPixels, planned.width(), planned.height(),
+                                          {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
+      auto count = [&](int x, int y) {
+        return plan.counts[size_t(y - planned.y0) * size_t(planned.width()) + size_t(x - planned.x0)];
+      };
+      stats.samples = splatCameraSamples(pixels, settings, tiles, window, bins, *progressive, 0, count,
+                                         pilotTiles.count(), progressTotal, image, stats, cancelled);
       stats.pilotSamples = pilot;
       stats.predictedRelativeError = plan.predictedRelativeError;
       bool any = false;
-      for (size_t i = 0; i < pixelCount; ++i) {
+      for (size_t i = 0; i < pilotPixels.size(); ++i) {
         if (!pilotPixels[i].seen) continue;
         stats.fewestSamples = any ? std::min(stats.fewestSamples, plan.counts[i]) : plan.counts[i];
         stats.mostSamples = any ? std::max(stats.mostSamples, plan.counts[i]) : plan.counts[i];
         any = true;
       }
     }
-    // Each pixel is the mean of the samples it took (all of its plan's unless stopped early).
-    for (int iy = 0; iy < height; ++iy)
-      for (int ix = 0; ix < width; ++ix) {
-        size_t i = size_t(iy) * width + ix;
-        samples += uint64_t(sums[i].taken);
-        store(ix, iy, sums[i], binSums.data() + i * bins.count, sums[i].taken);
-      }
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.rays = rays;
-  stats.samples = samples;
-  stats.nonFiniteSamples = nonFinite;
   stats.complete = !cancelled;
   return image;
 }
@@ -290,7 +329,6 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
   // Every stride-th pixel of every stride-th row, at most about 16,384 pixels.
   const int stride = std::max(1, int(std::ceil(std::sqrt(double(width) * double(height) / 16384.0))));
   const int sampledRows = (height + stride - 1) / stride;
-  const float reach = film.filter().radius();
   const bool lens = sensor.needsApertureSample();
   std::vector<uint64_t> blockCosts(size_t(sampledRows), 0);
   const auto threadLimit = limitThreads(settings.threads);
@@ -300,15 +338,15 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
       const int y = std::min(block * stride + stride / 2, height - 1);
       uint64_t cost = 0;
       for (int x = std::min(stride / 2, width - 1); x < width; x += stride) {
-        if (!sensor.seesAnyOf(Vec2(x + 0.5f - reach, y + 0.5f - reach), Vec2(x + 0.5f + reach, y + 0.5f + reach))) {
+        if (!sensor.seesAnyOf(Vec2(float(x), float(y)), Vec2(x + 1.0f, y + 1.0f))) {
           cost += 1;  // an unseen pixel costs next to nothing
           continue;
         }
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
         Wavelengths wl = Wavelengths::sample(sampler->get1D(), wavelengthDensity(settings));
-        if (std::optional<Ray> ray = cameraRay(sensor, lens, x, y, *sampler))
-          integrator.radiance(scene, *ray, *sampler, wl, rays);
+        if (const CameraSample sample = cameraSample(sensor, lens, x, y, *sampler); sample.ray)
+          integrator.radiance(scene, *sample.ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more
       }
       blockCosts[size_t(block)] = cost;

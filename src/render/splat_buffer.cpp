@@ -5,29 +5,43 @@
 
 namespace columba {
 
-SplatBuffer::SplatBuffer(const PixelRect& window, const ReconstructionFilter& filter)
-    : window_(window),
-      filter_(&filter),
-      radius_(filter.radius()),
-      sums_(size_t(window.width()) * size_t(window.height()) * 3, 0.0f) {}
+SplatBuffer::SplatBuffer(const PixelRect& rect, const FilterFootprint& footprint, int channels)
+    : rect_(rect),
+      footprint_(&footprint),
+      channels_(channels),
+      sums_(size_t(std::max(0, rect.width())) * size_t(std::max(0, rect.height())) * size_t(channels), 0.0) {}
 
-void SplatBuffer::add(Vec2 filmPosition, const Vec3& rgb) {
-  // Pixels whose centre x + 1/2 lies within the radius of the position.
-  const int x0 = std::max(window_.x0, int(std::ceil(filmPosition.x - radius_ - 0.5f)));
-  const int x1 = std::min(window_.x1 - 1, int(std::floor(filmPosition.x + radius_ - 0.5f)));
-  const int y0 = std::max(window_.y0, int(std::ceil(filmPosition.y - radius_ - 0.5f)));
-  const int y1 = std::min(window_.y1 - 1, int(std::floor(filmPosition.y + radius_ - 0.5f)));
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      const float w = filter_->eval(Vec2(filmPosition.x - (float(x) + 0.5f), filmPosition.y - (float(y) + 0.5f)));
-      if (w == 0.0f) continue;
-      float* p = &sums_[(size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0)) * 3];
-      p[0] += w * rgb.x;
-      p[1] += w * rgb.y;
-      p[2] += w * rgb.z;
+namespace {
+// The splat's loop, for a channel count known at compile time (kChannels > 0) or at run time. The
+// products are taken in double precision, as the sums are kept.
+template <int kChannels>
+void addWeighted(double* sums, const PixelRect& rect, int channels, const FilterFootprint::AxisWeights& wx,
+                 const FilterFootprint::AxisWeights& wy, const float* values) {
+  const int n = kChannels > 0 ? kChannels : channels;
+  const int x0 = std::max(rect.x0, wx.first), x1 = std::min(rect.x1, wx.first + wx.count);
+  const int y0 = std::max(rect.y0, wy.first), y1 = std::min(rect.y1, wy.first + wy.count);
+  double across[FilterFootprint::kMaxSpan];
+  for (int x = x0; x < x1; ++x) across[x - x0] = double(wx.weights[x - wx.first]);
+  for (int y = y0; y < y1; ++y) {
+    const double rowWeight = double(wy.weights[y - wy.first]);
+    double* p = sums + (size_t(y - rect.y0) * size_t(rect.width()) + size_t(x0 - rect.x0)) * size_t(n);
+    for (int x = x0; x < x1; ++x, p += n) {
+      const double w = rowWeight * across[x - x0];
+      for (int c = 0; c < n; ++c) p[c] += w * double(values[c]);
     }
+  }
+}
+}  // namespace
+
+void SplatBuffer::add(Vec2 filmPosition, const float* values) {
+  const FilterFootprint::AxisWeights wx = footprint_->axisWeights(int(std::floor(filmPosition.x)), filmPosition.x);
+  const FilterFootprint::AxisWeights wy = footprint_->axisWeights(int(std::floor(filmPosition.y)), filmPosition.y);
+  if (channels_ == 3)
+    addWeighted<3>(sums_.data(), rect_, channels_, wx, wy, values);
+  else
+    addWeighted<0>(sums_.data(), rect_, channels_, wx, wy, values);
 }
 
-void SplatBuffer::clear() { std::fill(sums_.begin(), sums_.end(), 0.0f); }
+void SplatBuffer::clear() { std::fill(sums_.begin(), sums_.end(), 0.0); }
 
 }  // namespace columba

@@ -9,7 +9,7 @@
 // 0 and 1 together reach t = 0 at every count).
 //   point 0 (in a render: the wavelengths and the first vertex's component choice): dimensions
 //     3 and 4, t <= 2;
-//   point 1 (the pixel filter): dimensions 1 and 2, t <= 1;
+//   point 1 (the position in the pixel): dimensions 1 and 2, t <= 1;
 //   point 2 (the first vertex's emitter or BSDF sample): dimensions 0 and 6, t <= 1;
 //   point 3: dimensions 5 and 7, t <= 2.
 // Measured against the padded pattern below for all points: on the paper's simulation3 (BSDF

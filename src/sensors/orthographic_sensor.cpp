@@ -31,7 +31,7 @@ std::optional<ImportanceSample> OrthographicSensor::sampleImportance(const Vec3&
   const float aspect = float(film().width()) / float(film().height());
   const Vec2 filmPosition((1.0f - p.x) * 0.5f * float(film().width()),
                           (1.0f - p.y * aspect) * 0.5f * float(film().height()));
-  if (!filmReaches(filmPosition)) return std::nullopt;
+  if (!onFilm(filmPosition)) return std::nullopt;
   const Vec3 start = toWorld_.point(Vec3(p.x, p.y, clip_.nearClip));
   const float t = dot(ref - start, direction_);
   if (!(t > 0.0f && t < clip_.farClip - clip_.nearClip)) return std::nullopt;

@@ -39,7 +39,7 @@ std::optional<ImportanceSample> PerspectiveSensor::importanceAlong(const Vec3& l
   const Vec3 q = lens / focusDistance() + local / local.z;
   const Vec2 uv = imageUV(Vec2(q.x, q.y), Vec2(tanHalfX_, tanHalfY_));
   const Vec2 filmPosition(uv.x * float(film().width()), uv.y * float(film().height()));
-  if (!filmReaches(filmPosition)) return std::nullopt;
+  if (!onFilm(filmPosition)) return std::nullopt;
   // Solid angles: the image plane's area dA = d(omega) / cos^3 theta in camera space, and the
   // world's solid angle is the camera's times |det M| / |M w|^3 (w unit, M to_world's linear part).
   const float cosTheta = local.z / length(local);

@@ -7,9 +7,8 @@
 
 namespace columba {
 
-bool Sensor::filmReaches(Vec2 p) const {
-  const float r = film_->filter().radius();
-  return p.x >= -r && p.x <= float(film_->width()) + r && p.y >= -r && p.y <= float(film_->height()) + r;
+bool Sensor::onFilm(Vec2 p) const {
+  return p.x >= 0.0f && p.x < float(film_->width()) && p.y >= 0.0f && p.y < float(film_->height());
 }
 
 std::shared_ptr<Film> sensorFilm(const Properties& props) {

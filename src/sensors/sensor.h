@@ -37,7 +37,7 @@ class Sensor : public Object {
   // then, so that pinhole sensors use the sampler's dimensions as they always have.
   virtual bool needsApertureSample() const { return false; }
   // Whether generateRay may return a ray anywhere in the film rectangle [lo, hi]: the renderer
-  // skips pixels whose filter footprint lies wholly where the sensor sees nothing.
+  // skips pixels that lie wholly where the sensor sees nothing.
   virtual bool seesAnyOf(Vec2 /*lo*/, Vec2 /*hi*/) const { return true; }
   // Light tracing. sampleImportance connects the point `ref` to the sensor, `u` picking the
   // point of the lens for sensors that have one; sampleImportanceFrom connects light arriving
@@ -54,8 +54,8 @@ class Sensor : public Object {
   virtual std::optional<ImportanceSample> sampleImportanceFrom(const Vec3& /*direction*/, Vec2 /*u*/) const {
     return std::nullopt;
   }
-  // Whether the film position `p` (pixels) is within the filter's reach of the film.
-  bool filmReaches(Vec2 p) const;
+  // Whether the film position `p` (pixels) lies on the film, where camera samples lie.
+  bool onFilm(Vec2 p) const;
   const Film& film() const { return *film_; }
   const Sampler& sampler() const { return *sampler_; }
 

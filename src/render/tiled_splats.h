@@ -1,0 +1,41 @@
+#pragma once
+// Camera samples splatted tile by tile, so that an image is bit-identical for any thread count and
+// any window of the film. Tiles lie on a grid fixed to the film; each splats the samples of its
+// pixels into a buffer of its own, the tile grown by the filter's reach; a pixel's value sums the
+// buffers in tile order, then divides by the pixel's filter mass on the film. A window renders the
+// pixels within reach of it too, so each of its pixels gets the same additions, in the same order,
+// as in a render of the whole film.
+#include <memory>
+#include <vector>
+#include "film/filter_footprint.h"
+#include "render/splat_buffer.h"
+
+namespace columba {
+
+class TiledSplats {
+ public:
+  static constexpr int kTileSize = 16;
+
+  TiledSplats(const PixelRect& window, int filmWidth, int filmHeight, const FilterFootprint& footprint, int channels);
+  int tileCount() const { return int(buffers_.size()); }
+  // The pixels whose samples reach the window: it, and those within the filter's reach of it.
+  const PixelRect& sources() const { return sources_; }
+  // The pixels of `tile` whose samples reach the window: the ones to render.
+  PixelRect tilePixels(int tile) const;
+  // The tile's buffer, made on first use; used by one thread at a time.
+  SplatBuffer& buffer(int tile);
+  // Left out of the image (a tile whose rendering stopped early).
+  void discard(int tile) { buffers_[size_t(tile)].reset(); }
+  // The window's pixels, row by row, `channels` values each.
+  std::vector<double> resolve() const;
+
+ private:
+  PixelRect window_, sources_;
+  int filmWidth_, filmHeight_;
+  int tilesX_ = 0, firstTileX_ = 0, firstTileY_ = 0;
+  const FilterFootprint* footprint_;
+  int channels_;
+  std::vector<std::unique_ptr<SplatBuffer>> buffers_;
+};
+
+}  // namespace columba
