@@ -1,8 +1,9 @@
 #pragma once
 // Renders a scene's image: tiles in parallel (oneTBB), every pixel's samples drawn from a
-// sampler seeded by (pixel, sample index, seed) only, so the image is bit-identical for any
-// thread count. A scene whose integrator is `ptracer` is rendered by light tracing instead
-// (render/light_path_renderer.h).
+// sampler seeded by (pixel, sample index, seed) only and splatted over the pixels their filter
+// reaches, tile by tile into buffers summed in a fixed order (render/tiled_splats.h), so the image
+// is bit-identical for any thread count. A scene whose integrator is `ptracer` is rendered by
+// light tracing instead (render/light_path_renderer.h).
 #include <atomic>
 #include <functional>
 #include <vector>
@@ -26,8 +27,9 @@ struct RenderSettings {
   // A piece of the render. `window` (empty: the film's crop window, normally the whole film)
   // limits it to those pixels of the film, and the image returned holds just them.
   // [sampleBegin, sampleEnd) limits every pixel to those of its sample indices 0 .. spp - 1
-  // (sampleEnd 0: spp), and each pixel holds their mean. A pixel's samples depend only on
-  // (pixel, sample index, seed), so a window of a render is bit for bit the same pixels of the
+  // (sampleEnd 0: spp), and each pixel holds their estimate, linear in them. A pixel's samples
+  // depend only on (pixel, sample index, seed), and a window also draws those of the pixels
+  // within its filter's reach, so a window of a render is bit for bit the same pixels of the
   // whole render.
   PixelRect window;
   int sampleBegin = 0, sampleEnd = 0;
@@ -41,7 +43,7 @@ struct RenderSettings {
 
 struct RenderStats {
   double seconds = 0.0;
-  uint64_t samples = 0;
+  uint64_t samples = 0;  // of the image's own pixels (a window draws those within reach of it too)
   uint64_t rays = 0;
   uint64_t nonFiniteSamples = 0;  // radiance estimates with a NaN or infinity, left out of their pixels
   bool complete = true;           // false when cancelled
