@@ -84,7 +84,7 @@ TEST(FilterFootprint, WeightsFollowTheFilter) {
     const FilterFootprint::AxisWeights axis = boxFootprint.axisWeights(3, 3.0f + u);
     ASSERT_EQ(axis.first, 3);
     ASSERT_EQ(axis.count, 1);
-    EXPECT_EQ(axis.weights[0], 1.0f) << "position 3 + " << u;
+    EXPECT_EQ(axis.weights[0], 1.0) << "position 3 + " << u;
   }
 }
 

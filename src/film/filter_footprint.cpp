@@ -44,7 +44,7 @@ FilterFootprint::AxisWeights FilterFootprint::axisWeights(int pixel, float posit
   const float between = t - float(node);
   for (int i = 0; i < axis.count; ++i) {
     const float* at = &table_[size_t(node + (axis.count - 1 - i) * kStepsPerPixel)];
-    axis.weights[i] = at[0] + between * (at[1] - at[0]);
+    axis.weights[i] = double(at[0] + between * (at[1] - at[0]));
   }
   return axis;
 }

@@ -32,7 +32,7 @@ class FilterFootprint {
   static constexpr int kMaxSpan = 2 * kMaxFilterReach + 1;
   struct AxisWeights {
     int first = 0, count = 0;
-    float weights[kMaxSpan];
+    double weights[kMaxSpan];  // in double precision, as splats are summed
   };
   AxisWeights axisWeights(int pixel, float position) const;
   // The splatted filter's mass over the squares of the pixels [0, length) of an axis, seen from

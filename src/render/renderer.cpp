@@ -133,6 +133,7 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
           const float weight = 1.0f / float(end - sampleBegin);
           int taken = 0;
           auto take = [&](Vec2 filmPosition, const Spectrum& L, const Wavelengths& wl) {
+            if (L.isZero()) return;  // it would add zeros
             const Vec3 rgb = spectrumToRGB(L, wl) * weight;
             values[0] = rgb.x;
             values[1] = rgb.y;

@@ -20,13 +20,12 @@ void addWeighted(double* sums, const PixelRect& rect, int channels, const Filter
   const int n = kChannels > 0 ? kChannels : channels;
   const int x0 = std::max(rect.x0, wx.first), x1 = std::min(rect.x1, wx.first + wx.count);
   const int y0 = std::max(rect.y0, wy.first), y1 = std::min(rect.y1, wy.first + wy.count);
-  double across[FilterFootprint::kMaxSpan];
-  for (int x = x0; x < x1; ++x) across[x - x0] = double(wx.weights[x - wx.first]);
+  const double* across = wx.weights + (x0 - wx.first);
   for (int y = y0; y < y1; ++y) {
-    const double rowWeight = double(wy.weights[y - wy.first]);
+    const double rowWeight = wy.weights[y - wy.first];
     double* p = sums + (size_t(y - rect.y0) * size_t(rect.width()) + size_t(x0 - rect.x0)) * size_t(n);
-    for (int x = x0; x < x1; ++x, p += n) {
-      const double w = rowWeight * across[x - x0];
+    for (int i = 0; i < x1 - x0; ++i, p += n) {
+      const double w = rowWeight * across[i];
       for (int c = 0; c < n; ++c) p[c] += w * double(values[c]);
     }
   }
