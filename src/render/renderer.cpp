@@ -159,16 +159,17 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
     }
   });
 
-  const std::vector<double> values = tiles.resolve();
-  for (int iy = 0; iy < window.height(); ++iy)
+  tiles.resolve([&](int y, const double* values) {
+    const int iy = y - window.y0;
     for (int ix = 0; ix < window.width(); ++ix) {
-      const double* v = &values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(channels)];
+      const double* v = values + size_t(ix) * size_t(channels);
       float* p = image.pixel(ix, iy);
       for (int c = 0; c < 3; ++c) p[c] = float(v[c]);
       for (int b = 0; b < bins.count; ++b)
         image.spectral.values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(bins.count) + size_t(b)] =
             float(v[3 + b]);
     }
+  });
   stats.rays += rays;
   stats.nonFiniteSamples += nonFinite;
   return samples;

@@ -1,7 +1,5 @@
 #include "render/tiled_splats.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 
 namespace columba {
@@ -42,30 +40,23 @@ SplatBuffer& TiledSplats::buffer(int tile) {
   return *b;
 }
 
-std::vector<double> TiledSplats::resolve() const {
-  const int width = window_.width(), height = window_.height();
-  std::vector<double> values(size_t(width) * size_t(height) * size_t(channels_), 0.0);
-  // Rows in parallel; within a row, the tiles in order.
-  tbb::parallel_for(tbb::blocked_range<int>(window_.y0, window_.y1), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y) {
-      double* row = &values[size_t(y - window_.y0) * size_t(width) * size_t(channels_)];
-      for (const std::unique_ptr<SplatBuffer>& b : buffers_) {
-        if (!b) continue;
-        const PixelRect& r = b->rect();
-        if (y < r.y0 || y >= r.y1) continue;
-        const double* sums = &b->sums()[size_t(y - r.y0) * size_t(r.width()) * size_t(channels_)];
-        double* out = row + size_t(r.x0 - window_.x0) * size_t(channels_);
-        for (size_t i = 0; i < size_t(r.width()) * size_t(channels_); ++i) out[i] += sums[i];
-      }
-      const double massY = footprint_->massWithin(y, filmHeight_);
-      for (int x = window_.x0; x < window_.x1; ++x) {
-        const double mass = footprint_->massWithin(x, filmWidth_) * massY;
-        double* p = row + size_t(x - window_.x0) * size_t(channels_);
-        for (int c = 0; c < channels_; ++c) p[c] = mass > 0.0 ? p[c] / mass : 0.0;
-      }
-    }
-  });
-  return values;
+void TiledSplats::resolveRow(int y, double* values) const {
+  const size_t n = size_t(channels_);
+  std::fill(values, values + size_t(window_.width()) * n, 0.0);
+  for (const std::unique_ptr<SplatBuffer>& b : buffers_) {
+    if (!b) continue;
+    const PixelRect& r = b->rect();
+    if (y < r.y0 || y >= r.y1) continue;
+    const double* sums = &b->sums()[size_t(y - r.y0) * size_t(r.width()) * n];
+    double* out = values + size_t(r.x0 - window_.x0) * n;
+    for (size_t i = 0; i < size_t(r.width()) * n; ++i) out[i] += sums[i];
+  }
+  const double massY = footprint_->massWithin(y, filmHeight_);
+  for (int x = window_.x0; x < window_.x1; ++x) {
+    const double mass = footprint_->massWithin(x, filmWidth_) * massY;
+    double* p = values + size_t(x - window_.x0) * n;
+    for (size_t c = 0; c < n; ++c) p[c] = mass > 0.0 ? p[c] / mass : 0.0;
+  }
 }
 
 }  // namespace columba

@@ -5,6 +5,8 @@
 // buffers in tile order, then divides by the pixel's filter mass on the film. A window renders the
 // pixels within reach of it too, so each of its pixels gets the same additions, in the same order,
 // as in a render of the whole film.
+#include <tbb/parallel_for.h>
+
 #include <memory>
 #include <vector>
 #include "film/filter_footprint.h"
@@ -26,8 +28,10 @@ class TiledSplats {
   SplatBuffer& buffer(int tile);
   // Left out of the image (a tile whose rendering stopped early).
   void discard(int tile) { buffers_[size_t(tile)].reset(); }
-  // The window's pixels, row by row, `channels` values each.
-  std::vector<double> resolve() const;
+  // Hands each row of the window's pixels, `channels` values per pixel, to `row(y, values)`, from
+  // several threads at once.
+  template <typename Row>
+  void resolve(const Row& row) const;
 
  private:
   PixelRect window_, sources_;
@@ -36,6 +40,20 @@ class TiledSplats {
   const FilterFootprint* footprint_;
   int channels_;
   std::vector<std::unique_ptr<SplatBuffer>> buffers_;
+
+  // Row y's pixels: the buffers' sums in tile order, divided by each pixel's filter mass.
+  void resolveRow(int y, double* values) const;
 };
+
+template <typename Row>
+void TiledSplats::resolve(const Row& row) const {
+  tbb::parallel_for(tbb::blocked_range<int>(window_.y0, window_.y1), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<double> values(size_t(window_.width()) * size_t(channels_));
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      resolveRow(y, values.data());
+      row(y, values.data());
+    }
+  });
+}
 
 }  // namespace columba
