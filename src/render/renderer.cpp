@@ -94,6 +94,17 @@ struct PixelSampler {
   }
 };
 
+// Whether a stop was requested (it then marks the render cancelled). Checked before every sample,
+// so that a stop request is answered within one sample at any sample count (a relaxed load of a
+// flag that is rarely written costs next to nothing).
+auto stopRequested(const RenderSettings& settings, std::atomic<bool>& cancelled) {
+  return [&settings, &cancelled] {
+    if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
+    cancelled = true;
+    return true;
+  };
+}
+
 // Renders the window's pixels into `image` (and its spectral bins): every pixel within the
 // filter's reach of the window draws its samples [sampleBegin, sampleEnd(x, y)), each splatted
 // with weight 1 / their count (render/tiled_splats.h). Returns the sample indices the window's
@@ -109,13 +120,7 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles.tileCount(), 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = pattern.clone();
     std::vector<float> values(static_cast<size_t>(channels));
-    // Checked before every sample, so that a stop request is answered within one sample at any
-    // sample count (a relaxed load of a flag that is rarely written costs next to nothing).
-    auto stop = [&] {
-      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
-      cancelled = true;
-      return true;
-    };
+    const auto stop = stopRequested(settings, cancelled);
     for (int tile = range.begin(); tile != range.end(); ++tile) {
       const PixelRect rect = tiles.tilePixels(tile);
       SplatBuffer& buffer = tiles.buffer(tile);
@@ -202,11 +207,7 @@ std::vector<PilotPixel> renderPilot(const PixelSampler& pixels, const RenderSett
   std::atomic<int> tilesDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles.count(), 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = pattern.clone();
-    auto stop = [&] {
-      if (!settings.cancel || !settings.cancel->load(std::memory_order_relaxed)) return false;
-      cancelled = true;
-      return true;
-    };
+    const auto stop = stopRequested(settings, cancelled);
     for (int tile = range.begin(); tile != range.end(); ++tile) {
       const int x0 = rect.x0 + (tile % tiles.across()) * TiledSplats::kTileSize;
       const int y0 = rect.y0 + (tile / tiles.across()) * TiledSplats::kTileSize;
