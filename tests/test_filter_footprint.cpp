@@ -61,7 +61,7 @@ TEST(FilterFootprint, ReachesThePixelsWhoseCentresLieWithinTheRadius) {
 }
 
 TEST(FilterFootprint, WeightsFollowTheFilter) {
-  // Linear between nodes 1/256 pixel apart: exact for the box and the tent, whose kinks are nodes;
+  // Linear between nodes 1/256 pixel apart: exact for the box and these tents, whose kinks are nodes;
   // for the Gaussian within (1/256)^2 / 8 of its second derivative, about 1e-5 of its peak.
   for (const auto& filter : allFilters()) {
     const FilterFootprint footprint(*filter);

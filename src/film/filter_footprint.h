@@ -9,12 +9,14 @@
 // film: Mitsuba's filtered image, whose pixel is their ratio. Columba divides by the expected
 // weight, summed from the filter's mass over the film's pixels, rather than by the sampled
 // weights: then an image is linear in its samples, so renders of sample ranges merge exactly,
-// and a pixel's value does not depend on how many samples its neighbours took.
+// and with each pixel's samples weighted 1 / their count, a pixel's expected value does not depend
+// on how many samples each of its neighbours took.
 //
 // The filter as splatted is the filter's values at steps of 1 / kStepsPerPixel pixel, linear in
 // between: a table lookup instead of an exponential per weight. The masses are that function's,
 // so the estimate stays unbiased for it; it differs from the filter by about 1e-5 of its peak
-// (Gaussian, stddev 0.5), and exactly follows the box and tent filters, whose kinks lie on steps.
+// (Gaussian, stddev 0.5), and follows the box exactly, and the tent where its kinks lie on steps
+// (radii that are multiples of 1/256 pixel, such as Mitsuba's default 1).
 #include <vector>
 #include "film/reconstruction_filter.h"
 
