@@ -55,6 +55,8 @@ TEST(FilterFactories, MitsubaParametersAndRadii) {
   EXPECT_THROW(makeGaussianFilter(gaussianProperties(-1.0f)), InputError);
   EXPECT_NO_THROW(makeGaussianFilter(gaussianProperties(4.0f)));
   EXPECT_THROW(makeGaussianFilter(gaussianProperties(4.5f)), InputError);
+  EXPECT_NO_THROW(makeGaussianFilter(gaussianProperties(0.125f)));
+  for (float narrow : {0.1f, 1e-6f, 1e-40f}) EXPECT_THROW(makeGaussianFilter(gaussianProperties(narrow)), InputError);
 }
 
 TEST(FilterEval, IsANormalisedDensityWithinTheRadius) {
@@ -85,7 +87,8 @@ TEST(FilterFactories, TentTakesMitsubasRadius) {
   Properties wide = filterProperties("tent", "radius", 2.0f);
   EXPECT_FLOAT_EQ(std::dynamic_pointer_cast<ReconstructionFilter>(makeTentFilter(wide))->radius(), 2.0f);
   EXPECT_NO_THROW(wide.checkAllUsed());
-  for (float bad : {0.0f, -1.0f, 17.0f})
+  EXPECT_NO_THROW(makeTentFilter(filterProperties("tent", "radius", 0.5f)));
+  for (float bad : {0.0f, -1.0f, 0.4f, 17.0f})
     EXPECT_THROW(makeTentFilter(filterProperties("tent", "radius", bad)), InputError);
 }
 

@@ -23,6 +23,11 @@ float GaussianFilter::eval(float offset) const {
 std::shared_ptr<Object> makeGaussianFilter(const Properties& props) {
   float stddev = props.getFloat("stddev", 0.5f);
   if (!(stddev > 0.0f) || !std::isfinite(stddev)) throw props.error("stddev", "must be a positive number");
+  if (!(4.0f * stddev >= kMinFilterRadius))
+    throw props.error("stddev",
+                      fmt::format("must be at least {} pixels, so that the filter's radius (4 stddev) reaches "
+                                  "the centre of the pixel of every sample, not {}",
+                                  kMinFilterRadius / 4.0f, stddev));
   if (!(4.0f * stddev <= kMaxFilterRadius))
     throw props.error("stddev", fmt::format("must be at most {} pixels, so that the filter's radius (4 stddev) is at "
                                             "most {}",

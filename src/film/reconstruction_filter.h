@@ -11,6 +11,9 @@ namespace columba {
 // radius - 1/2 must not exceed it.
 inline constexpr int kMaxFilterReach = 16;
 inline constexpr float kMaxFilterRadius = float(kMaxFilterReach) + 0.5f;
+// The narrowest filter: every sample must reach its own pixel's centre, or a pixel would count
+// few of its samples, or none (a filter narrower than this renders a mostly black image).
+inline constexpr float kMinFilterRadius = 0.5f;
 
 class ReconstructionFilter : public Object {
  public:

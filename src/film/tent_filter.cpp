@@ -15,6 +15,10 @@ std::shared_ptr<Object> makeTentFilter(const Properties& props) {
   const float radius = props.getFloat("radius", 1.0f);
   if (!(radius > 0.0f) || !std::isfinite(radius))
     throw props.error("radius", "radius must be positive, not " + std::to_string(radius));
+  if (!(radius >= kMinFilterRadius))
+    throw props.error("radius", fmt::format("radius must be at least {} pixels, so that it reaches the centre of the "
+                                            "pixel of every sample, not {}",
+                                            kMinFilterRadius, radius));
   if (!(radius <= kMaxFilterRadius))
     throw props.error("radius", fmt::format("radius must be at most {} pixels, not {}", kMaxFilterRadius, radius));
   return std::make_shared<TentFilter>(radius);
