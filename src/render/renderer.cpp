@@ -105,15 +105,16 @@ auto stopRequested(const RenderSettings& settings, std::atomic<bool>& cancelled)
   };
 }
 
-// Renders the window's pixels into `image` (and its spectral bins): every pixel within the
+// Renders the tiles' window into `image` (and its spectral bins): every pixel within the
 // filter's reach of the window draws its samples [sampleBegin, sampleEnd(x, y)), each splatted
 // with weight 1 / their count (render/tiled_splats.h). Returns the sample indices the window's
 // own pixels drew (those beyond it are drawn too, and count in the rays).
 template <typename SampleEnd>
 uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& settings, TiledSplats& tiles,
-                            const PixelRect& window, const WavelengthBins& bins, const Sampler& pattern,
-                            int sampleBegin, const SampleEnd& sampleEnd, int progressBase, int progressTotal,
-                            Image& image, RenderStats& stats, std::atomic<bool>& cancelled) {
+                            const WavelengthBins& bins, const Sampler& pattern, int sampleBegin,
+                            const SampleEnd& sampleEnd, int progressBase, int progressTotal, Image& image,
+                            RenderStats& stats, std::atomic<bool>& cancelled) {
+  const PixelRect& window = tiles.window();
   const int channels = 3 + bins.count;
   std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<int> tilesDone{0};
@@ -188,33 +189,24 @@ int pilotSamplesFor(int spp) {
   return pilot;
 }
 
-// Tiles of a rectangle of pixels, for the pilot.
-struct PilotTiles {
-  PixelRect rect;
-  int across() const { return (rect.width() + TiledSplats::kTileSize - 1) / TiledSplats::kTileSize; }
-  int count() const { return across() * ((rect.height() + TiledSplats::kTileSize - 1) / TiledSplats::kTileSize); }
-};
-
-// The pilot of adaptive sampling over the rectangle of pixels `tiles.rect` (a window's, and those
-// within its filter's reach): each seen pixel's sums of its first `pilot` samples' luminance, row
-// by row.
+// The pilot of adaptive sampling over the pixels whose samples reach the window (tiles.sources()),
+// tile by tile: each seen pixel's sums of its first `pilot` samples' luminance, row by row.
 std::vector<PilotPixel> renderPilot(const PixelSampler& pixels, const RenderSettings& settings, const Sampler& pattern,
-                                    const PilotTiles& tiles, int pilot, int progressTotal, RenderStats& stats,
+                                    const TiledSplats& tiles, int pilot, int progressTotal, RenderStats& stats,
                                     std::atomic<bool>& cancelled) {
-  const PixelRect& rect = tiles.rect;
-  std::vector<PilotPixel> pilotPixels(size_t(rect.width()) * size_t(rect.height()));
+  const PixelRect& sources = tiles.sources();
+  std::vector<PilotPixel> pilotPixels(size_t(sources.width()) * size_t(sources.height()));
   std::atomic<uint64_t> rays{0}, nonFinite{0};
   std::atomic<int> tilesDone{0};
-  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.count(), 1), [&](const tbb::blocked_range<int>& range) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.tileCount(), 1), [&](const tbb::blocked_range<int>& range) {
     std::unique_ptr<Sampler> sampler = pattern.clone();
     const auto stop = stopRequested(settings, cancelled);
     for (int tile = range.begin(); tile != range.end(); ++tile) {
-      const int x0 = rect.x0 + (tile % tiles.across()) * TiledSplats::kTileSize;
-      const int y0 = rect.y0 + (tile / tiles.across()) * TiledSplats::kTileSize;
+      const PixelRect rect = tiles.tilePixels(tile);
       uint64_t tileRays = 0, tileNonFinite = 0;
-      for (int y = y0; y < std::min(y0 + TiledSplats::kTileSize, rect.y1); ++y)
-        for (int x = x0; x < std::min(x0 + TiledSplats::kTileSize, rect.x1); ++x) {
-          PilotPixel& p = pilotPixels[size_t(y - rect.y0) * size_t(rect.width()) + size_t(x - rect.x0)];
+      for (int y = rect.y0; y < rect.y1; ++y)
+        for (int x = rect.x0; x < rect.x1; ++x) {
+          PilotPixel& p = pilotPixels[size_t(y - sources.y0) * size_t(sources.width()) + size_t(x - sources.x0)];
           p.seen = pixels.sees(x, y);
           if (!p.seen) continue;
           int taken = 0;
@@ -283,8 +275,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   if (!settings.adaptive) {
     // Every pixel gets the samples [sampleBegin, sampleEnd).
     stats.samples = splatCameraSamples(
-        pixels, settings, tiles, window, bins, *pattern, sampleBegin, [&](int, int) { return sampleEnd; }, 0,
-        tiles.tileCount(), image, stats, cancelled);
+        pixels, settings, tiles, bins, *pattern, sampleBegin, [&](int, int) { return sampleEnd; }, 0, tiles.tileCount(),
+        image, stats, cancelled);
   } else {
     // A pilot for every pixel gives the plan; then every pixel draws its planned samples, the
     // pilot's again among them (they are the same samples), so that each is splatted with weight
@@ -293,19 +285,18 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     // simulation3's variance per sample 41 % (64 spp) and 87 % (256 spp) above a uniform render's.
     const std::unique_ptr<Sampler> progressive = pattern->withProgressivePattern();
     const int pilot = pilotSamplesFor(spp);
-    const PilotTiles pilotTiles{tiles.sources()};
-    const int progressTotal = pilotTiles.count() + tiles.tileCount();
+    const int progressTotal = 2 * tiles.tileCount();
     const std::vector<PilotPixel> pilotPixels =
-        renderPilot(pixels, settings, *progressive, pilotTiles, pilot, progressTotal, stats, cancelled);
+        renderPilot(pixels, settings, *progressive, tiles, pilot, progressTotal, stats, cancelled);
     if (!cancelled) {
-      const PixelRect& planned = pilotTiles.rect;
+      const PixelRect& planned = tiles.sources();
       const SamplePlan plan = planSamples(pilotPixels, planned.width(), planned.height(),
                                           {pilot, double(spp), settings.targetError, kMaxSamplesPerPixel});
       auto count = [&](int x, int y) {
         return plan.counts[size_t(y - planned.y0) * size_t(planned.width()) + size_t(x - planned.x0)];
       };
-      stats.samples = splatCameraSamples(pixels, settings, tiles, window, bins, *progressive, 0, count,
-                                         pilotTiles.count(), progressTotal, image, stats, cancelled);
+      stats.samples = splatCameraSamples(pixels, settings, tiles, bins, *progressive, 0, count, tiles.tileCount(),
+                                         progressTotal, image, stats, cancelled);
       stats.pilotSamples = pilot;
       stats.predictedRelativeError = plan.predictedRelativeError;
       bool any = false;

@@ -9,7 +9,6 @@ PixelRect grown(const PixelRect& r, int by) { return {r.x0 - by, r.y0 - by, r.x1
 PixelRect intersection(const PixelRect& a, const PixelRect& b) {
   return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
-int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 }  // namespace
 
 TiledSplats::TiledSplats(const PixelRect& window, int filmWidth, int filmHeight, const FilterFootprint& footprint,
@@ -20,10 +19,11 @@ TiledSplats::TiledSplats(const PixelRect& window, int filmWidth, int filmHeight,
       filmHeight_(filmHeight),
       footprint_(&footprint),
       channels_(channels) {
-  firstTileX_ = floorDiv(sources_.x0, kTileSize);
-  firstTileY_ = floorDiv(sources_.y0, kTileSize);
-  tilesX_ = floorDiv(sources_.x1 - 1, kTileSize) - firstTileX_ + 1;
-  const int tilesY = floorDiv(sources_.y1 - 1, kTileSize) - firstTileY_ + 1;
+  // The sources lie on the film, so their coordinates are not negative.
+  firstTileX_ = sources_.x0 / kTileSize;
+  firstTileY_ = sources_.y0 / kTileSize;
+  tilesX_ = (sources_.x1 - 1) / kTileSize - firstTileX_ + 1;
+  const int tilesY = (sources_.y1 - 1) / kTileSize - firstTileY_ + 1;
   buffers_.resize(sources_.empty() ? 0 : size_t(tilesX_) * size_t(tilesY));
 }
 

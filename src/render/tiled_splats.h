@@ -20,6 +20,7 @@ class TiledSplats {
 
   TiledSplats(const PixelRect& window, int filmWidth, int filmHeight, const FilterFootprint& footprint, int channels);
   int tileCount() const { return int(buffers_.size()); }
+  const PixelRect& window() const { return window_; }
   // The pixels whose samples reach the window: it, and those within the filter's reach of it.
   const PixelRect& sources() const { return sources_; }
   // The pixels of `tile` whose samples reach the window: the ones to render.
