@@ -9,7 +9,9 @@ with --adaptive, from 4 spp),
     relative RMSE = sqrt(mean((image - converged)^2)) / mean(converged),
 are printed, and the times to reach 5 % and 2 % are interpolated on the log-log error-vs-time
 line. The converged image's own error is estimated from its two halves (rmse(A - B) / 2) and
-subtracted in quadrature ("corrected" column; the times use it). Then equal-spp timings.
+subtracted in quadrature ("corrected" column; the times use it). Then equal-spp timings. Before
+and after the tables, the parallel efficiency of the thread count (a warning below 85 %: cores
+shared with other guests make every time longer than the paper's were measured on free cores).
 
 Usage: equal_error.py COLUMBA ROOT CACHE [WORK]
 Environment: BENCH_THREADS (2), BENCH_MAX_SPP (256; per scene: BENCH_MAX_SPP_SIM,
@@ -30,6 +32,10 @@ import numpy as np
 # Columba's Python module of the build that holds COLUMBA (BUILD/python).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else ".")), "python"))
 import columba as columba_module  # noqa: E402
+
+
+# Below this, `threads` threads do measurably less than `threads` times one thread's work.
+MIN_PARALLEL_EFFICIENCY = 0.85
 
 
 def read_exr_rgb(path):
@@ -160,6 +166,29 @@ def equal_error(columba, cache, work, name, title, scene, inputs, defines, ref_s
     return timings
 
 
+def report_parallel_efficiency(columba, scene, threads, work, when):
+    """The paper's times were measured on cores nobody else used. Where this machine's cores are
+    shared (another guest on the same physical cores, or their hyper-threads), each of several
+    threads runs slower than one thread alone, and every wall time is inflated: the renderer's own
+    time with `threads` threads against one thread on the same work shows it (not a slowdown of
+    every thread alike). Measured before and after the tables, as the load of other guests changes."""
+    if threads < 2:
+        return
+    out = os.path.join(work, "calibration.exr")
+    defs = ["res=128"]
+    one, many = [], []
+    for _ in range(3):  # interleaved, the fastest of each: the load of other guests comes and goes
+        one.append(render(columba, scene, defs, 64, 0, 1, out)[1])
+        many.append(render(columba, scene, defs, 64, 0, threads, out)[1])
+    efficiency = min(one) / (threads * min(many))
+    print(f"  parallel efficiency {when}: {efficiency:.0%} ({os.path.basename(scene)} 128x128, 64 spp: "
+          f"{min(one):.2f} s with 1 thread, {min(many):.2f} s with {threads})", flush=True)
+    if efficiency < MIN_PARALLEL_EFFICIENCY:
+        print(f"  WARNING: below {MIN_PARALLEL_EFFICIENCY:.0%}: this machine's cores are shared, so this "
+              f"run's times are longer than on free cores and its speed-ups against the paper's times "
+              f"understated; compare its times only with each other", flush=True)
+
+
 def main():
     if len(sys.argv) < 4:
         sys.exit(__doc__)
@@ -185,6 +214,7 @@ def main():
             sim3 = os.path.join(root, "scenes/bsdf_visualization_sampled.xml")
         sim3_defs = ["res=256"]
         sim3_title = f"simulation3-like: {os.path.relpath(sim3, root)}, 256x256 (BSDF sampling)"
+        report_parallel_efficiency(columba, sim3, threads, work, "before the tables")
         t_sim3 = equal_error(columba, cache, work, "sim3", sim3_title, sim3, [], sim3_defs, ref_sim,
                              max_sim, threads, (5.34, 0.054, 64))
         equal_error(columba, cache, work, "sim3", sim3_title, sim3, [], sim3_defs, ref_sim, max_sim,
@@ -222,6 +252,7 @@ def main():
             t = min(runs)
             print(f"{title:<36} {t:>10.2f} {paper:>8.2f} {paper / t:>8.2f}x", flush=True)
         print(f"  simulation1-like scene: {os.path.relpath(sim1, root)}")
+        report_parallel_efficiency(columba, sim3, threads, work, "after the tables")
 
 
 if __name__ == "__main__":
