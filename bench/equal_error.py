@@ -180,7 +180,7 @@ def report_parallel_efficiency(columba, scene, threads, work, when):
     for _ in range(3):  # interleaved, the fastest of each: the load of other guests comes and goes
         one.append(render(columba, scene, defs, 64, 0, 1, out)[1])
         many.append(render(columba, scene, defs, 64, 0, threads, out)[1])
-    efficiency = min(one) / (threads * min(many))
+    efficiency = round(min(one) / (threads * min(many)), 2)  # as printed, so a printed 85 % does not warn
     print(f"  parallel efficiency {when}: {efficiency:.0%} ({os.path.basename(scene)} 128x128, 64 spp: "
           f"{min(one):.2f} s with 1 thread, {min(many):.2f} s with {threads})", flush=True)
     if efficiency < MIN_PARALLEL_EFFICIENCY:
