@@ -600,16 +600,17 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
         // queryVertex gives what it is asked for, as the separate calls do: eval (with pdf or not)
         // toward a light direction, sample, the pass-through.
         BSDFVertexRequest request;
-        request.woLight = i % 3 ? &wo : nullptr;
+        request.woLights = &wo;
+        request.woLightCount = i % 3 ? 1 : 0;
         request.lightPdf = i % 3 == 1;
         request.sample = true;
         request.uComponent = uComponent;
         request.u = u;
         request.passThrough = i % 2;
         BSDFVertexQueries vertex = bsdf.queryVertex(ctx, wi, kWavelengths, request);
-        BSDFEvalPdf toLight = !request.woLight ? BSDFEvalPdf{} : BSDFEvalPdf{f, request.lightPdf ? pdf : 0.0f};
-        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.toLight.value[k], toLight.value[k]);
-        ASSERT_EQ(vertex.toLight.pdf, toLight.pdf);
+        BSDFEvalPdf toLight = request.woLightCount == 0 ? BSDFEvalPdf{} : BSDFEvalPdf{f, request.lightPdf ? pdf : 0.0f};
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.toLights[0].value[k], toLight.value[k]);
+        ASSERT_EQ(vertex.toLights[0].pdf, toLight.pdf);
         ASSERT_EQ(vertex.passThrough[0], request.passThrough ? bsdf.passThrough(ctx, wi, kWavelengths)[0] : 0.0f);
         std::optional<BSDFSample> alone = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
         ASSERT_EQ(vertex.sampled.has_value(), alone.has_value());

@@ -119,9 +119,13 @@ TEST(Integrator, ConstantEnvironmentBesideAnAreaLightMatchesTheClosedForm) {
   };
   // The path integrator stops after the first vertex: the disk's own diffuse back would reflect
   // the plane's light into it, which the closed form leaves out.
+  // With emitter_candidates, the path integrator draws 3 emitter samples and traces the one its
+  // resampling chooses.
   for (const std::string& integrator :
-       {std::string(R"(<integrator type="path"><integer name="max_depth" value="2"/></integrator>)"), direct(1, 1),
-        direct(1, 0), direct(0, 1)}) {
+       {std::string(R"(<integrator type="path"><integer name="max_depth" value="2"/></integrator>)"),
+        std::string(R"(<integrator type="path"><integer name="max_depth" value="2"/>
+                       <integer name="emitter_candidates" value="3"/></integrator>)"),
+        direct(1, 1), direct(1, 0), direct(0, 1)}) {
     SCOPED_TRACE(integrator);
     expectGrey(render(integrator), expected, 0.015f);
   }

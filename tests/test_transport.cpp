@@ -99,9 +99,11 @@ namespace {
 // A diffuse room corner with a glossy sphere, lit at once by a rectangular area light, a small
 // spherical area light and a uniform sky: three emitters of two kinds, so emitter sampling
 // chooses among them and the choice's probability enters every MIS weight.
-std::string threeEmitterScene(const std::string& strategy) {
+std::string threeEmitterScene(const std::string& strategy, int emitterCandidates = 1) {
   return R"(<scene version="3.0.0">
     <integrator type="path"><integer name="max_depth" value="4"/>
+      <integer name="emitter_candidates" value=")" +
+         std::to_string(emitterCandidates) + R"("/>
       <string name="strategy" value=")" +
          strategy + R"("/></integrator>
     <sensor type="perspective"><float name="fov" value="50"/>
@@ -126,12 +128,12 @@ std::string threeEmitterScene(const std::string& strategy) {
 
 // The image's mean luminance over `renders` renders with different seeds, and its standard
 // error from their spread.
-Estimate meanOverSeeds(const std::string& strategy, int renders) {
+Estimate meanOverSeeds(const std::string& strategy, int renders, int emitterCandidates = 1) {
   std::vector<double> means;
   for (int k = 0; k < renders; ++k) {
     RenderSettings settings;
     settings.seed = 1000 + k;
-    Image image = renderSceneString(threeEmitterScene(strategy), settings);
+    Image image = renderSceneString(threeEmitterScene(strategy, emitterCandidates), settings);
     double sum = 0;
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
@@ -160,6 +162,41 @@ TEST(Transport, MISAgreesWithEmitterSamplingAndBSDFSamplingAlone) {
   // The combination must also be the least noisy of the three.
   EXPECT_LT(mis.standardError, emitter.standardError * 1.2);
   EXPECT_LT(mis.standardError, bsdf.standardError);
+}
+
+// Resampled emitter samples are another unbiased estimate of the same image: with 4 candidates
+// per first vertex, chosen among three emitters of two kinds by a glossy and two diffuse BSDFs,
+// the mean must agree with one emitter sample's.
+TEST(Transport, ResampledEmitterSamplesAgreeWithOneEmitterSample) {
+  const int renders = 8;
+  Estimate one = meanOverSeeds("mis", renders), resampled = meanOverSeeds("mis", renders, 4),
+           resampledAlone = meanOverSeeds("emitter", renders, 4);
+  std::printf(
+      "mean luminance: 1 emitter sample %.5f +- %.5f, 4 candidates %.5f +- %.5f, 4 candidates without BSDF "
+      "samples %.5f +- %.5f\n",
+      one.mean, one.standardError, resampled.mean, resampled.standardError, resampledAlone.mean,
+      resampledAlone.standardError);
+  EXPECT_LT(std::abs(resampled.mean - one.mean) / std::hypot(resampled.standardError, one.standardError), kSigmas);
+  EXPECT_LT(std::abs(resampledAlone.mean - one.mean) / std::hypot(resampledAlone.standardError, one.standardError),
+            kSigmas);
+}
+
+TEST(Transport, EmitterCandidatesOutsideOneToEightAreAnError) {
+  for (const char* value : {"0", "9", "-2"}) {
+    std::string xml = std::string(R"(<scene version="3.0.0"><integrator type="path">
+      <integer name="emitter_candidates" value=")") +
+                      value + R"("/></integrator></scene>)";
+    try {
+      renderSceneString(xml);
+      FAIL() << "no error for " << value;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("emitter_candidates must be a whole number from 1 to 8, not ") +
+                                           value),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find(":2: <integrator>"), std::string::npos) << e.what();  // file and line
+    }
+  }
 }
 
 TEST(Transport, StrategyOtherThanTheThreeIsAnError) {

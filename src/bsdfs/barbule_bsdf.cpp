@@ -419,13 +419,13 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
                                            const BSDFVertexRequest& request) const {
   PointModel point(*this, ctx, wl);
   Incident in = incident(point, wi);
-  bool needsChoice = request.sample || (request.woLight && request.lightPdf);
+  bool needsChoice = request.sample || (request.woLightCount > 0 && request.lightPdf);
   LobeChoice choice = needsChoice ? lobeChoice(point, in, ctx.passThroughByCaller) : LobeChoice{};
   BSDFVertexQueries q;
-  if (request.woLight) {
-    const Vec3& wo = *request.woLight;
+  for (int k = 0; k < request.woLightCount; ++k) {
+    const Vec3& wo = request.woLights[k];
     LitArc woArc = point.geometry.litArc(inPlane(wo).dir);
-    q.toLight =
+    q.toLights[size_t(k)] =
         request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   }
   if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u, request.samplePdf);

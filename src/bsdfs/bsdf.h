@@ -2,6 +2,7 @@
 // The BSDF interface. Directions are in the local shading frame (z = normal) and point away
 // from the surface: `wi` toward where the path came from (camera side), `wo` toward the light
 // (Mitsuba's convention). Values include the cosine of `wo`.
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -53,10 +54,14 @@ struct BSDFEvalPdf {
 // What an integrator asks of a BSDF at one path vertex, for one wi: the value toward a light
 // sample (and, for MIS, its density), a sampled continuation, the pass-through weight. Asked
 // together, they share what the model derives from wi alone.
+// The most directions toward light samples one vertex query evaluates (PathIntegrator's
+// emitter_candidates).
+inline constexpr int kMaxLightDirections = 8;
 struct BSDFVertexRequest {
-  const Vec3* woLight = nullptr;  // evaluate toward this direction
-  bool lightPdf = false;          // with the density of sampling it
-  bool sample = false;            // draw a continuation from uComponent and u
+  const Vec3* woLights = nullptr;  // evaluate toward these directions (light samples)
+  int woLightCount = 0;            // at most kMaxLightDirections
+  bool lightPdf = false;           // with the density of sampling each
+  bool sample = false;             // draw a continuation from uComponent and u
   float uComponent = 0.0f;
   Vec2 u;
   // false: the caller reads only the sample's direction and weight (it weighs no other strategy
@@ -65,9 +70,9 @@ struct BSDFVertexRequest {
   bool passThrough = false;
 };
 struct BSDFVertexQueries {
-  BSDFEvalPdf toLight;                // pdf 0 unless asked
-  std::optional<BSDFSample> sampled;  // nullopt unless asked
-  Spectrum passThrough;               // 0 unless asked
+  std::array<BSDFEvalPdf, kMaxLightDirections> toLights;  // for woLights; pdf 0 unless asked
+  std::optional<BSDFSample> sampled;                      // nullopt unless asked
+  Spectrum passThrough;                                   // 0 unless asked
 };
 
 // Answers `request` with callables: eval(wo), pdf(wo), sample(uComponent, u) and passThrough(). A
@@ -77,7 +82,10 @@ template <typename Eval, typename Pdf, typename Sample, typename PassThrough>
 BSDFVertexQueries answerVertexQueries(const BSDFVertexRequest& request, Eval&& eval, Pdf&& pdf, Sample&& sample,
                                       PassThrough&& passThrough) {
   BSDFVertexQueries q;
-  if (request.woLight) q.toLight = {eval(*request.woLight), request.lightPdf ? pdf(*request.woLight) : 0.0f};
+  for (int k = 0; k < request.woLightCount; ++k) {
+    const Vec3& wo = request.woLights[k];
+    q.toLights[size_t(k)] = {eval(wo), request.lightPdf ? pdf(wo) : 0.0f};
+  }
   if (request.sample) q.sampled = sample(request.uComponent, request.u);
   if (request.passThrough) q.passThrough = passThrough();
   return q;

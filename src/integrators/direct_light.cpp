@@ -31,6 +31,28 @@ std::optional<DirectLightSample> connectToLight(const Scene& scene, const Surfac
   return s;
 }
 
+float resamplingRatio(const LightSample& light, const Spectrum& f) {
+  const float density = light.sample.pdf * light.pmf;
+  const float contribution = (f * light.sample.radiance).average();
+  return density > 0.0f && contribution > 0.0f ? contribution / density : 0.0f;
+}
+
+std::optional<ResampledLight> resampleLights(const float* ratios, int count, float u) {
+  float total = 0.0f;
+  for (int k = 0; k < count; ++k) total += ratios[k];
+  if (!(total > 0.0f)) return std::nullopt;
+  // The first candidate whose ratios, summed up to it, pass u of the total.
+  float target = u * total, below = 0.0f;
+  int chosen = -1;
+  for (int k = 0; k < count; ++k) {
+    if (!(ratios[k] > 0.0f)) continue;
+    chosen = k;
+    below += ratios[k];
+    if (below > target) break;
+  }
+  return ResampledLight{chosen, total / float(count) / ratios[chosen]};
+}
+
 EmitterHit emitterSeenAlong(const Scene& scene, const Vec3& from, const Vec3& direction,
                             const std::optional<SurfaceInteraction>& hit, const Wavelengths& wl,
                             Scene::EmitterSet set) {

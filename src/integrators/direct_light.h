@@ -28,6 +28,20 @@ std::optional<DirectLightSample> connectToLight(const Scene& scene, const Surfac
                                                 const LightSample& light, const BSDFEvalPdf& f, const Wavelengths& wl,
                                                 uint64_t& rays);
 
+// Resampled importance sampling of emitter samples (Talbot, Cline and Egbert 2005): of `count`
+// candidates drawn by sampleLight (a failed draw counts, with ratio 0), one is chosen with
+// probability proportional to its ratio r = (its unshadowed contribution f Le, averaged over the
+// wavelengths) / (its density), and only its shadow ray is traced. Its contribution f Le V / pdf
+// times `weight` = mean(r) / r_chosen is an unbiased estimate for any count, and has far less
+// variance where f is large for a small part of the emitter (the barbule's narrow R lobe under an
+// area light). `u` chooses; nullopt when every ratio is 0.
+struct ResampledLight {
+  int index = 0;
+  float weight = 0.0f;
+};
+float resamplingRatio(const LightSample& light, const Spectrum& f);
+std::optional<ResampledLight> resampleLights(const float* ratios, int count, float u);
+
 // Radiance of the emitters a ray that left `from` sees at `hit` (or at infinity if there is no
 // hit), with the density emitter sampling from `from`, drawing from `set`, would have chosen that
 // direction.

@@ -1,5 +1,6 @@
 #include "integrators/path_integrator.h"
 
+#include <array>
 #include <map>
 #include <string>
 
@@ -11,6 +12,17 @@ namespace columba {
 namespace {
 // Bounds the pass-through steps of one path (a ray crossing a whole feather coat).
 constexpr int kMaxPassThroughSteps = 1024;
+
+// The light sample next-event estimation traces: the one drawn, or with several candidates the
+// one resampleLights chooses by the BSDF's values toward them.
+std::optional<ResampledLight> chooseLight(const LightSample* lights, const BSDFVertexQueries& queries, int drawn,
+                                          int candidates, float u) {
+  if (drawn == 0) return std::nullopt;
+  if (candidates == 1) return ResampledLight{0, 1.0f};
+  std::array<float, kMaxLightDirections> ratios{};  // the candidates sampleLight did not draw stay 0
+  for (int k = 0; k < drawn; ++k) ratios[size_t(k)] = resamplingRatio(lights[k], queries.toLights[size_t(k)].value);
+  return resampleLights(ratios.data(), candidates, u);
+}
 }  // namespace
 
 // The weight of an emitter found by a BSDF-sampled ray, and of one found by emitter sampling.
@@ -64,19 +76,35 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
         strategy_ == Strategy::MIS && scene.leavesEmittersToBSDFSamples() && bsdf.samplesAllItScatters()
             ? Scene::EmitterSet::BesideBSDFSamples
             : Scene::EmitterSet::All;
-    std::optional<LightSample> light = sampleEmitters ? sampleLight(scene, *hit, wl, uLight, emitterSet) : std::nullopt;
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();
+    // Emitter candidates: the first from uLight, any further ones (emitter_candidates, at the
+    // first scattering vertex, which most of an image's direct light leaves from) from the
+    // sampler's next points, after the BSDF sample's, which keep their stratified dimensions.
+    const int candidates = !sampleEmitters ? 0 : depth == 0 ? emitterCandidates_ : 1;
+    std::array<LightSample, kMaxLightDirections> lights;
+    std::array<Vec3, kMaxLightDirections> towardLights;
+    int drawn = 0;
+    for (int k = 0; k < candidates; ++k) {
+      if (std::optional<LightSample> light =
+              sampleLight(scene, *hit, wl, k == 0 ? uLight : sampler.get2D(), emitterSet)) {
+        lights[size_t(drawn)] = *light;
+        towardLights[size_t(drawn++)] = light->woLocal;
+      }
+    }
+    const float uChoice = candidates > 1 ? sampler.get1D() : 0.0f;
     BSDFVertexRequest request;
-    request.woLight = light ? &light->woLocal : nullptr;
+    request.woLights = towardLights.data();
+    request.woLightCount = drawn;
     request.lightPdf = true;
     request.sample = true;
     request.uComponent = uComponent;
     request.u = uDirection;
     BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext(), wi, wl, request);
-    if (light) {
-      if (auto ds = connectToLight(scene, *hit, *light, queries.toLight, wl, rays))
-        L += beta * ds->value * emitterSampleWeight(ds->deltaLight, ds->lightPdf, ds->bsdfPdf);
+    if (std::optional<ResampledLight> chosen = chooseLight(lights.data(), queries, drawn, candidates, uChoice)) {
+      const size_t i = size_t(chosen->index);
+      if (auto ds = connectToLight(scene, *hit, lights[i], queries.toLights[i], wl, rays))
+        L += beta * ds->value * (chosen->weight * emitterSampleWeight(ds->deltaLight, ds->lightPdf, ds->bsdfPdf));
     }
 
     const std::optional<BSDFSample>& bs = queries.sampled;
@@ -106,6 +134,11 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
 
 std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
+  int emitterCandidates = props.getInt("emitter_candidates", 1);
+  if (emitterCandidates < 1 || emitterCandidates > kMaxLightDirections)
+    throw props.error("emitter_candidates", "emitter_candidates must be a whole number from 1 to " +
+                                                std::to_string(kMaxLightDirections) + ", not " +
+                                                std::to_string(emitterCandidates));
   if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
   if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
   readMitsubaPassParameters(props);
@@ -117,7 +150,8 @@ std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   auto found = kStrategies.find(strategy);
   if (found == kStrategies.end())
     throw props.error("strategy", "strategy must be 'mis', 'emitter' or 'bsdf', not '" + strategy + "'");
-  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false), found->second);
+  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false), found->second,
+                                          emitterCandidates);
 }
 
 }  // namespace columba

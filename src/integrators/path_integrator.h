@@ -5,7 +5,9 @@
 // `strategy` (a Columba parameter, as pbrt-v4's simplepath offers) keeps one of the two
 // estimators alone, to check the combination against each: "emitter" finds emitters only by
 // sampling them (and through delta BSDFs), "bsdf" only by hitting them (delta emitters, which
-// no ray hits, then add nothing).
+// no ray hits, then add nothing). `emitter_candidates` (a Columba parameter, 1 to 8, default 1)
+// draws that many emitter samples per vertex and traces one, chosen by the BSDF's values toward
+// them (resampled importance sampling, integrators/direct_light.h).
 #include "core/properties.h"
 #include "integrators/integrator.h"
 
@@ -14,8 +16,13 @@ namespace columba {
 class PathIntegrator : public Integrator {
  public:
   enum class Strategy { MIS, EmitterOnly, BSDFOnly };
-  PathIntegrator(int maxDepth, int rrDepth, bool hideEmitters, Strategy strategy = Strategy::MIS)
-      : maxDepth_(maxDepth), rrDepth_(rrDepth), hideEmitters_(hideEmitters), strategy_(strategy) {}
+  PathIntegrator(int maxDepth, int rrDepth, bool hideEmitters, Strategy strategy = Strategy::MIS,
+                 int emitterCandidates = 1)
+      : maxDepth_(maxDepth),
+        rrDepth_(rrDepth),
+        hideEmitters_(hideEmitters),
+        strategy_(strategy),
+        emitterCandidates_(emitterCandidates) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
 
@@ -27,6 +34,7 @@ class PathIntegrator : public Integrator {
   int rrDepth_;
   bool hideEmitters_;
   Strategy strategy_;
+  int emitterCandidates_;  // emitter samples drawn per vertex, one traced (resampleLights)
 };
 
 std::shared_ptr<Object> makePathIntegrator(const Properties& props);
