@@ -5,7 +5,7 @@ For each scene a converged image is rendered once (two halves of REF_SPP with di
 cached under CACHE, keyed by the scene's content and the settings), then the scene is rendered at
 spp = 1, 2, 4, ..., MAX_SPP with a fixed thread count; for each render the wall time of the whole
 `columba render` process and the relative RMSE against the converged image (each scene also
-with --adaptive, from 4 spp),
+with --adaptive, from 4 spp, and the neck with 3 emitter candidates, -D candidates=3),
     relative RMSE = sqrt(mean((image - converged)^2)) / mean(converged),
 are printed, and the times to reach 5 % and 2 % are interpolated on the log-log error-vs-time
 line. The converged image's own error is estimated from its two halves (rmse(A - B) / 2) and
@@ -233,6 +233,10 @@ def main():
                     max_neck, threads, (65.0, 0.063, 64))
         equal_error(columba, cache, work, "neck", neck_title, neck, [patch], neck_defs, ref_neck,
                     max_neck, threads, (65.0, 0.063, 64), ("--adaptive",), 4)
+        # With Columba's resampled emitter samples (3 candidates at the first vertex): the same
+        # converged image, which no estimator changes.
+        equal_error(columba, cache, work, "neck", neck_title, neck, [patch], neck_defs, ref_neck, max_neck,
+                    threads, (65.0, 0.063, 64), ("-D", "candidates=3"))
 
         print(f"\n== Equal spp ({threads} threads, fastest of {repeats})")
         sim1 = os.path.join(root, "../shared/reference/scenes/simulation1.xml")
