@@ -13,6 +13,14 @@ namespace {
 // Bounds the pass-through steps of one path (a ray crossing a whole feather coat).
 constexpr int kMaxPassThroughSteps = 1024;
 
+// Candidate k of `count` as uLight shifted by the k-th point of a rank-1 lattice (k / count, k /
+// golden ratio), wrapped into the unit square: each candidate is uniform, as resampling needs, and
+// together they are spread over the emitters, while uLight is stratified across a pixel's samples.
+Vec2 candidatePoint(Vec2 uLight, int k, int count) {
+  const float x = uLight.x + float(k) / float(count), y = uLight.y + float(k) * 0.618033988f;
+  return {std::min(x - std::floor(x), kOneMinusEpsilon), std::min(y - std::floor(y), kOneMinusEpsilon)};
+}
+
 // The light sample next-event estimation traces: the one drawn, or with several candidates the
 // one resampleLights chooses by the BSDF's values toward them.
 std::optional<ResampledLight> chooseLight(const LightSample* lights, const BSDFVertexQueries& queries, int drawn,
@@ -78,16 +86,15 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
             : Scene::EmitterSet::All;
     float uComponent = sampler.get1D();
     Vec2 uDirection = sampler.get2D();
-    // Emitter candidates: the first from uLight, any further ones (emitter_candidates, at the
-    // first scattering vertex, which most of an image's direct light leaves from) from the
-    // sampler's next points, after the BSDF sample's, which keep their stratified dimensions.
+    // Emitter candidates (emitter_candidates, at the first scattering vertex, which most of an
+    // image's direct light leaves from), all from uLight (candidatePoint).
     const int candidates = !sampleEmitters ? 0 : depth == 0 ? emitterCandidates_ : 1;
     std::array<LightSample, kMaxLightDirections> lights;
     std::array<Vec3, kMaxLightDirections> towardLights;
     int drawn = 0;
     for (int k = 0; k < candidates; ++k) {
       if (std::optional<LightSample> light =
-              sampleLight(scene, *hit, wl, k == 0 ? uLight : sampler.get2D(), emitterSet)) {
+              sampleLight(scene, *hit, wl, candidatePoint(uLight, k, candidates), emitterSet)) {
         lights[size_t(drawn)] = *light;
         towardLights[size_t(drawn++)] = light->woLocal;
       }
