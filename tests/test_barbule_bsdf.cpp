@@ -602,6 +602,8 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
         BSDFVertexRequest request;
         request.woLights = &wo;
         request.woLightCount = i % 3 ? 1 : 0;
+        BSDFEvalPdf vertexToLight;
+        request.toLights = &vertexToLight;
         request.lightPdf = i % 3 == 1;
         request.sample = true;
         request.uComponent = uComponent;
@@ -609,8 +611,8 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
         request.passThrough = i % 2;
         BSDFVertexQueries vertex = bsdf.queryVertex(ctx, wi, kWavelengths, request);
         BSDFEvalPdf toLight = request.woLightCount == 0 ? BSDFEvalPdf{} : BSDFEvalPdf{f, request.lightPdf ? pdf : 0.0f};
-        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertex.toLights[0].value[k], toLight.value[k]);
-        ASSERT_EQ(vertex.toLights[0].pdf, toLight.pdf);
+        for (int k = 0; k < kSpectrumSamples; ++k) ASSERT_EQ(vertexToLight.value[k], toLight.value[k]);
+        ASSERT_EQ(vertexToLight.pdf, toLight.pdf);
         ASSERT_EQ(vertex.passThrough[0], request.passThrough ? bsdf.passThrough(ctx, wi, kWavelengths)[0] : 0.0f);
         std::optional<BSDFSample> alone = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
         ASSERT_EQ(vertex.sampled.has_value(), alone.has_value());

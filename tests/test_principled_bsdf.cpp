@@ -351,14 +351,16 @@ TEST(Principled, AVertexsQueriesAreTheSeparateCalls) {
         BSDFVertexRequest request;
         request.woLights = &wo;
         request.woLightCount = 1;
+        BSDFEvalPdf toLight;
+        request.toLights = &toLight;
         request.lightPdf = true;
         request.sample = true;
         request.uComponent = 0.6f;
         request.u = Vec2(0.3f, 0.7f);
         const BSDFVertexQueries q = bsdf->queryVertex(ctx, wi, wl, request);
         const std::optional<BSDFSample> separate = bsdf->sample(ctx, wi, wl, 0.6f, Vec2(0.3f, 0.7f));
-        for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_EQ(q.toLights[0].value[i], bsdf->eval(ctx, wi, wo, wl)[i]);
-        EXPECT_EQ(q.toLights[0].pdf, bsdf->pdf(ctx, wi, wo, wl));
+        for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_EQ(toLight.value[i], bsdf->eval(ctx, wi, wo, wl)[i]);
+        EXPECT_EQ(toLight.pdf, bsdf->pdf(ctx, wi, wo, wl));
         ASSERT_EQ(q.sampled.has_value(), separate.has_value()) << type;
         if (!separate) continue;
         EXPECT_EQ(q.sampled->wo.x, separate->wo.x);

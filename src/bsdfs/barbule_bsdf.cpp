@@ -425,7 +425,7 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
   for (int k = 0; k < request.woLightCount; ++k) {
     const Vec3& wo = request.woLights[k];
     LitArc woArc = point.geometry.litArc(inPlane(wo).dir);
-    q.toLights[size_t(k)] =
+    request.toLights[k] =
         request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   }
   if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u, request.samplePdf);

@@ -2,7 +2,6 @@
 // The BSDF interface. Directions are in the local shading frame (z = normal) and point away
 // from the surface: `wi` toward where the path came from (camera side), `wo` toward the light
 // (Mitsuba's convention). Values include the cosine of `wo`.
-#include <array>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -51,17 +50,19 @@ struct BSDFEvalPdf {
   float pdf = 0.0f;  // pdf()
 };
 
-// What an integrator asks of a BSDF at one path vertex, for one wi: the value toward a light
-// sample (and, for MIS, its density), a sampled continuation, the pass-through weight. Asked
-// together, they share what the model derives from wi alone.
 // The most directions toward light samples one vertex query evaluates (PathIntegrator's
 // emitter_candidates).
 inline constexpr int kMaxLightDirections = 8;
+// What an integrator asks of a BSDF at one path vertex, for one wi: the values toward light
+// samples (and, for MIS, their densities), a sampled continuation, the pass-through weight.
+// Asked together, they share what the model derives from wi alone.
 struct BSDFVertexRequest {
-  const Vec3* woLights = nullptr;  // evaluate toward these directions (light samples)
-  int woLightCount = 0;            // at most kMaxLightDirections
-  bool lightPdf = false;           // with the density of sampling each
-  bool sample = false;             // draw a continuation from uComponent and u
+  const Vec3* woLights = nullptr;   // evaluate toward these directions (light samples)
+  int woLightCount = 0;             // at most kMaxLightDirections
+  BSDFEvalPdf* toLights = nullptr;  // where their values go, woLightCount of them (the caller's
+                                    // storage: queries stay small at every vertex)
+  bool lightPdf = false;            // with the density of sampling each (pdf 0 otherwise)
+  bool sample = false;              // draw a continuation from uComponent and u
   float uComponent = 0.0f;
   Vec2 u;
   // false: the caller reads only the sample's direction and weight (it weighs no other strategy
@@ -70,9 +71,8 @@ struct BSDFVertexRequest {
   bool passThrough = false;
 };
 struct BSDFVertexQueries {
-  std::array<BSDFEvalPdf, kMaxLightDirections> toLights;  // for woLights; pdf 0 unless asked
-  std::optional<BSDFSample> sampled;                      // nullopt unless asked
-  Spectrum passThrough;                                   // 0 unless asked
+  std::optional<BSDFSample> sampled;  // nullopt unless asked
+  Spectrum passThrough;               // 0 unless asked
 };
 
 // Answers `request` with callables: eval(wo), pdf(wo), sample(uComponent, u) and passThrough(). A
@@ -84,7 +84,7 @@ BSDFVertexQueries answerVertexQueries(const BSDFVertexRequest& request, Eval&& e
   BSDFVertexQueries q;
   for (int k = 0; k < request.woLightCount; ++k) {
     const Vec3& wo = request.woLights[k];
-    q.toLights[size_t(k)] = {eval(wo), request.lightPdf ? pdf(wo) : 0.0f};
+    request.toLights[k] = {eval(wo), request.lightPdf ? pdf(wo) : 0.0f};
   }
   if (request.sample) q.sampled = sample(request.uComponent, request.u);
   if (request.passThrough) q.passThrough = passThrough();

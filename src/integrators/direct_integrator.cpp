@@ -40,11 +40,13 @@ Spectrum DirectIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Sa
       BSDFVertexRequest request;
       request.woLights = &light->woLocal;
       request.woLightCount = 1;
+      BSDFEvalPdf toLight;
+      request.toLights = &toLight;
       request.lightPdf = bsdfSamples_ > 0 && !light->emitter->isDelta();
       request.passThrough = !passThrough && bsdf.hasPassThrough();
       BSDFVertexQueries queries = bsdf.queryVertex(ctx, wi, wl, request);
       if (request.passThrough) passThrough = queries.passThrough;
-      if (auto ds = connectToLight(scene, *hit, *light, queries.toLights[0], wl, rays)) {
+      if (auto ds = connectToLight(scene, *hit, *light, toLight, wl, rays)) {
         float w = (ds->deltaLight || bsdfSamples_ == 0) ? 1.0f : powerHeuristic(nE * ds->lightPdf, nB * ds->bsdfPdf);
         L += beta * ds->value * (w / nE);
       }

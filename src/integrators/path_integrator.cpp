@@ -17,18 +17,19 @@ constexpr int kMaxPassThroughSteps = 1024;
 // golden ratio), wrapped into the unit square: each candidate is uniform, as resampling needs, and
 // together they are spread over the emitters, while uLight is stratified across a pixel's samples.
 Vec2 candidatePoint(Vec2 uLight, int k, int count) {
+  if (k == 0) return uLight;
   const float x = uLight.x + float(k) / float(count), y = uLight.y + float(k) * 0.618033988f;
   return {std::min(x - std::floor(x), kOneMinusEpsilon), std::min(y - std::floor(y), kOneMinusEpsilon)};
 }
 
 // The light sample next-event estimation traces: the one drawn, or with several candidates the
 // one resampleLights chooses by the BSDF's values toward them.
-std::optional<ResampledLight> chooseLight(const LightSample* lights, const BSDFVertexQueries& queries, int drawn,
+std::optional<ResampledLight> chooseLight(const LightSample* lights, const BSDFEvalPdf* toLights, int drawn,
                                           int candidates, float u) {
   if (drawn == 0) return std::nullopt;
   if (candidates == 1) return ResampledLight{0, 1.0f};
   std::array<float, kMaxLightDirections> ratios{};  // the candidates sampleLight did not draw stay 0
-  for (int k = 0; k < drawn; ++k) ratios[size_t(k)] = resamplingRatio(lights[k], queries.toLights[size_t(k)].value);
+  for (int k = 0; k < drawn; ++k) ratios[size_t(k)] = resamplingRatio(lights[k], toLights[k].value);
   return resampleLights(ratios.data(), candidates, u);
 }
 }  // namespace
@@ -103,14 +104,17 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     BSDFVertexRequest request;
     request.woLights = towardLights.data();
     request.woLightCount = drawn;
+    std::array<BSDFEvalPdf, kMaxLightDirections> toLights;
+    request.toLights = toLights.data();
     request.lightPdf = true;
     request.sample = true;
     request.uComponent = uComponent;
     request.u = uDirection;
     BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext(), wi, wl, request);
-    if (std::optional<ResampledLight> chosen = chooseLight(lights.data(), queries, drawn, candidates, uChoice)) {
+    if (std::optional<ResampledLight> chosen =
+            chooseLight(lights.data(), toLights.data(), drawn, candidates, uChoice)) {
       const size_t i = size_t(chosen->index);
-      if (auto ds = connectToLight(scene, *hit, lights[i], queries.toLights[i], wl, rays))
+      if (auto ds = connectToLight(scene, *hit, lights[i], toLights[i], wl, rays))
         L += beta * ds->value * (chosen->weight * emitterSampleWeight(ds->deltaLight, ds->lightPdf, ds->bsdfPdf));
     }
 

@@ -6,8 +6,8 @@
 // estimators alone, to check the combination against each: "emitter" finds emitters only by
 // sampling them (and through delta BSDFs), "bsdf" only by hitting them (delta emitters, which
 // no ray hits, then add nothing). `emitter_candidates` (a Columba parameter, 1 to 8, default 1)
-// draws that many emitter samples per vertex and traces one, chosen by the BSDF's values toward
-// them (resampled importance sampling, integrators/direct_light.h).
+// draws that many emitter samples at a path's first scattering vertex and traces one, chosen by
+// the BSDF's values toward them (resampled importance sampling, integrators/direct_light.h).
 #include "core/properties.h"
 #include "integrators/integrator.h"
 
@@ -34,7 +34,7 @@ class PathIntegrator : public Integrator {
   int rrDepth_;
   bool hideEmitters_;
   Strategy strategy_;
-  int emitterCandidates_;  // emitter samples drawn per vertex, one traced (resampleLights)
+  int emitterCandidates_;  // emitter samples drawn at the first vertex, one traced (resampleLights)
 };
 
 std::shared_ptr<Object> makePathIntegrator(const Properties& props);
