@@ -630,6 +630,70 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
     }
 }
 
+namespace {
+// Records the targets it is handed and chooses the candidate given at construction.
+class RecordingChooser final : public LightChooser {
+ public:
+  explicit RecordingChooser(int choice) : choice_(choice) {}
+  int choose(const BSDFEvalPdf* targets, int count) override {
+    seen.assign(targets, targets + count);
+    return choice_;
+  }
+  std::vector<BSDFEvalPdf> seen;
+
+ private:
+  int choice_;
+};
+}  // namespace
+
+// With a LightChooser, the barbule hands it R's value plus a bound of TRT toward each candidate
+// (no TRT quadrature): positive at every wavelength where the value is, which keeps resampling
+// unbiased, and at least R. The chosen candidate's entry then holds the exact value and density.
+TEST(BarbuleBSDF, ResamplingTargetsArePositiveWhereverTheValueIsAndTheChosenOneIsExact) {
+  SurfaceAttributes point;
+  point.set(kBarbuleSpacingAttribute, 1.6f);
+  point.set(kBarbuleTiltAttribute, -0.2f);
+  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point, Vec2(), Vec3(), Vec3()}}) {
+    BarbuleBSDF bsdf(reference(0.58f));
+    ASSERT_TRUE(bsdf.hasCheapResamplingTargets());
+    PCG32 rng(43);
+    int positive = 0, trtOnly = 0;
+    for (int i = 0; i < 4000; ++i) {
+      Vec3 wi = sampleCosineHemisphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+      std::array<Vec3, 4> wo;
+      for (Vec3& w : wo) w = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+      const int choice = int(rng.nextFloat() * 4.0f) % 4;
+      RecordingChooser chooser(choice);
+      std::array<BSDFEvalPdf, 4> toLights;
+      BSDFVertexRequest request;
+      request.woLights = wo.data();
+      request.woLightCount = 4;
+      request.toLights = toLights.data();
+      request.lightPdf = true;
+      request.chooseLight = &chooser;
+      bsdf.queryVertex(ctx, wi, kWavelengths, request);
+      ASSERT_EQ(chooser.seen.size(), 4u);
+      for (int k = 0; k < 4; ++k) {
+        BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, wo[size_t(k)], kWavelengths);
+        const float cosO = std::abs(wo[size_t(k)].z);
+        for (int j = 0; j < kSpectrumSamples; ++j) {
+          const float value = (lobes.reflection[j] + lobes.trt[j]) * cosO, target = chooser.seen[size_t(k)].value[j];
+          if (value > 0.0f) ASSERT_GT(target, 0.0f) << "wi " << wi.z << " wo " << wo[size_t(k)].z;
+          ASSERT_GE(target, lobes.reflection[j] * cosO * (1.0f - 1e-5f));
+        }
+        positive += lobes.trt[0] > 0.0f;
+        trtOnly += lobes.trt[0] > 0.0f && lobes.reflection[0] == 0.0f;
+      }
+      Spectrum f = bsdf.eval(ctx, wi, wo[size_t(choice)], kWavelengths);
+      for (int j = 0; j < kSpectrumSamples; ++j) ASSERT_EQ(toLights[size_t(choice)].value[j], f[j]);
+      ASSERT_EQ(toLights[size_t(choice)].pdf, bsdf.pdf(ctx, wi, wo[size_t(choice)], kWavelengths));
+    }
+    // The check saw TRT where R is zero, where only the bound keeps the target positive.
+    EXPECT_GT(positive, 2000);
+    EXPECT_GT(trtOnly, 500);
+  }
+}
+
 TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
   const BSDFContext ctx;
   for (const ParameterSet& set : parameterSets()) {

@@ -153,11 +153,17 @@ struct BarbuleBSDF::Outgoing {
 
 BarbuleBSDF::Outgoing BarbuleBSDF::outgoing(const PointModel& point, const Incident& in, const Vec3& wo,
                                             const LitArc& arc) const {
+  Outgoing out = mirrorGeometry(point, in, wo, arc);
+  if (in.scatters) out.common = point.geometry.commonOffsets(in.arc, arc);
+  return out;
+}
+
+BarbuleBSDF::Outgoing BarbuleBSDF::mirrorGeometry(const PointModel& point, const Incident& in, const Vec3& wo,
+                                                  const LitArc& arc) const {
   Outgoing out;
   out.w = wo;
   if (!in.scatters) return out;  // no lobe and no density reads the rest
   const BarbuleCrossSection& geometry = point.geometry;
-  out.common = geometry.commonOffsets(in.arc, arc);
   Vec3 sum = in.w + wo;
   float lengthSqr = lengthSquared(sum);
   if (!(lengthSqr > 0.0f)) return out;
@@ -301,6 +307,16 @@ BarbuleBSDF::Lobes BarbuleBSDF::evalLobesForPair(const PointModel& point, const 
   return {reflection(point, in, out), trt(point, in, out)};
 }
 
+Spectrum BarbuleBSDF::resamplingTarget(const PointModel& point, const Incident& in, const Vec3& wo,
+                                       const LitArc& woArc) const {
+  if (!in.scatters || wo.z == 0.0f) return Spectrum(0.0f);
+  // TRT at its bound: trt()'s scale with the film's transmittance products at 1 and the whole lit
+  // width for the interval lit from both directions, positive wherever TRT is, at the cost of none
+  // of its nodes and no common interval.
+  float trtBound = in.arc.width() * in.plane.cosTheta / (kPi * point.geometry.spacing() * std::abs(in.w.z));
+  return (reflection(point, in, mirrorGeometry(point, in, wo, woArc)) + trtBound * point.melanin) * std::abs(wo.z);
+}
+
 BarbuleBSDF::LobeChoice BarbuleBSDF::lobeChoice(const PointModel& point, const Incident& in,
                                                 bool passThroughByCaller) const {
   LobeChoice choice;
@@ -422,11 +438,29 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
   bool needsChoice = request.sample || (request.woLightCount > 0 && request.lightPdf);
   LobeChoice choice = needsChoice ? lobeChoice(point, in, ctx.passThroughByCaller) : LobeChoice{};
   BSDFVertexQueries q;
-  for (int k = 0; k < request.woLightCount; ++k) {
+  auto evaluateTowardLight = [&](int k, const LitArc& woArc) {
     const Vec3& wo = request.woLights[k];
-    LitArc woArc = point.geometry.litArc(inPlane(wo).dir);
     request.toLights[k] =
         request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
+  };
+  if (request.chooseLight && role_ == Role::CameraIncident) {
+    // Cheap targets toward every candidate; the full value (TRT's quadrature) and density toward
+    // the chosen one only.
+    std::array<LitArc, kMaxLightDirections> woArcs;
+    for (int k = 0; k < request.woLightCount; ++k) {
+      const Vec3& wo = request.woLights[k];
+      woArcs[size_t(k)] = point.geometry.litArc(inPlane(wo).dir);
+      request.toLights[k] = {resamplingTarget(point, in, wo, woArcs[size_t(k)]), 0.0f};
+    }
+    const int chosen = request.chooseLight->choose(request.toLights, request.woLightCount);
+    if (chosen >= 0) evaluateTowardLight(chosen, woArcs[size_t(chosen)]);
+  } else if (request.chooseLight) {
+    for (int k = 0; k < request.woLightCount; ++k)
+      evaluateTowardLight(k, point.geometry.litArc(inPlane(request.woLights[k]).dir));
+    request.chooseLight->choose(request.toLights, request.woLightCount);
+  } else {
+    for (int k = 0; k < request.woLightCount; ++k)
+      evaluateTowardLight(k, point.geometry.litArc(inPlane(request.woLights[k]).dir));
   }
   if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u, request.samplePdf);
   if (request.passThrough) q.passThrough = Spectrum(transmission(point.geometry, in));

@@ -72,6 +72,8 @@ class BarbuleBSDF : public BSDF {
                                    Vec2 u) const override;
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return true; }
+  // R's value and a bound of TRT, none of TRT's quadrature (resamplingTarget), as barbulebsdf.
+  bool hasCheapResamplingTargets() const override { return role_ == Role::CameraIncident; }
 
   // The model's two non-delta lobes f(omega_i, omega_o) (without any cosine), omega_i first
   // whatever the role: for plots and tests.
@@ -104,6 +106,8 @@ class BarbuleBSDF : public BSDF {
   Incident incident(const PointModel& point, const Vec3& w, const LitArc& arc) const;
   // omega_o, whose lit arc is `arc`, with what the pair (omega_i, omega_o) shares.
   Outgoing outgoing(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
+  // The same but the common lit interval (what R needs: the half vector and its normal's lighting).
+  Outgoing mirrorGeometry(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
 
   // Evaluation, one scheme. eval* gives the value f |cos omega_o|, evalLobes* the lobes without a
   // cosine, evalPdf* the value with the sampling density. eval and evalLobes (public) start from a
@@ -121,6 +125,9 @@ class BarbuleBSDF : public BSDF {
   // The lobes of a pair.
   Spectrum reflection(const PointModel& point, const Incident& in, const Outgoing& out) const;
   Spectrum trt(const PointModel& point, const Incident& in, const Outgoing& out) const;
+  // What emitter candidates are chosen by (BSDFVertexRequest::chooseLight), with omega_i = wi: R
+  // exactly, the R lobe being what varies fast across an area light, and a bound of TRT.
+  Spectrum resamplingTarget(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& woArc) const;
   // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
   // per wavelength.
   Spectrum trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut, float inY,

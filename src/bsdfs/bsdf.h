@@ -53,6 +53,15 @@ struct BSDFEvalPdf {
 // The most directions toward light samples one vertex query evaluates (PathIntegrator's
 // emitter_candidates).
 inline constexpr int kMaxLightDirections = 8;
+// Chooses which of a vertex's light directions to trace, from the BSDF's resampling targets toward
+// them (PathIntegrator's emitter candidates): returns the index chosen, or -1 for none.
+class LightChooser {
+ public:
+  virtual int choose(const BSDFEvalPdf* targets, int count) = 0;
+
+ protected:
+  ~LightChooser() = default;
+};
 // What an integrator asks of a BSDF at one path vertex, for one wi: the values toward light
 // samples (and, for MIS, their densities), a sampled continuation, the pass-through weight.
 // Asked together, they share what the model derives from wi alone.
@@ -62,7 +71,11 @@ struct BSDFVertexRequest {
   BSDFEvalPdf* toLights = nullptr;  // where their values go, woLightCount of them (the caller's
                                     // storage: queries stay small at every vertex)
   bool lightPdf = false;            // with the density of sampling each (pdf 0 otherwise)
-  bool sample = false;              // draw a continuation from uComponent and u
+  // With a chooser, the BSDF hands it a resampling target toward each light direction (its value,
+  // or a cheaper guide that is positive at every wavelength where the value is), and only the
+  // chosen direction's entry of toLights ends up holding the value (and density).
+  LightChooser* chooseLight = nullptr;
+  bool sample = false;  // draw a continuation from uComponent and u
   float uComponent = 0.0f;
   Vec2 u;
   // false: the caller reads only the sample's direction and weight (it weighs no other strategy
@@ -82,9 +95,16 @@ template <typename Eval, typename Pdf, typename Sample, typename PassThrough>
 BSDFVertexQueries answerVertexQueries(const BSDFVertexRequest& request, Eval&& eval, Pdf&& pdf, Sample&& sample,
                                       PassThrough&& passThrough) {
   BSDFVertexQueries q;
-  for (int k = 0; k < request.woLightCount; ++k) {
-    const Vec3& wo = request.woLights[k];
-    request.toLights[k] = {eval(wo), request.lightPdf ? pdf(wo) : 0.0f};
+  if (request.chooseLight) {
+    // The values are the targets; only the chosen direction needs a density.
+    for (int k = 0; k < request.woLightCount; ++k) request.toLights[k] = {eval(request.woLights[k]), 0.0f};
+    const int chosen = request.chooseLight->choose(request.toLights, request.woLightCount);
+    if (chosen >= 0 && request.lightPdf) request.toLights[chosen].pdf = pdf(request.woLights[chosen]);
+  } else {
+    for (int k = 0; k < request.woLightCount; ++k) {
+      const Vec3& wo = request.woLights[k];
+      request.toLights[k] = {eval(wo), request.lightPdf ? pdf(wo) : 0.0f};
+    }
   }
   if (request.sample) q.sampled = sample(request.uComponent, request.u);
   if (request.passThrough) q.passThrough = passThrough();
@@ -97,6 +117,9 @@ class BSDF : public Object {
   virtual Spectrum eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
   // Density of `sample` producing `wo`, non-delta components only (solid angle).
   virtual float pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const = 0;
+  // Whether queryVertex hands a LightChooser targets far cheaper than its values (so that drawing
+  // several emitter candidates costs little more than one).
+  virtual bool hasCheapResamplingTargets() const { return false; }
   // The requested queries at one vertex; the same values as the separate calls.
   virtual BSDFVertexQueries queryVertex(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                         const BSDFVertexRequest& request) const {

@@ -5,19 +5,23 @@
 // `strategy` (a Columba parameter, as pbrt-v4's simplepath offers) keeps one of the two
 // estimators alone, to check the combination against each: "emitter" finds emitters only by
 // sampling them (and through delta BSDFs), "bsdf" only by hitting them (delta emitters, which
-// no ray hits, then add nothing). `emitter_candidates` (a Columba parameter, 1 to 8, default 1)
-// draws that many emitter samples at a path's first scattering vertex and traces one, chosen by
-// the BSDF's values toward them (resampled importance sampling, integrators/direct_light.h).
+// no ray hits, then add nothing). `emitter_candidates` (a Columba parameter, 1 to 8) draws that
+// many emitter samples at a path's first scattering vertex and traces one, chosen by the BSDF's
+// values toward them (resampled importance sampling, integrators/direct_light.h); 0, the default,
+// draws 3 where the BSDF has cheap resampling targets (the barbule's) and emitters with extent are
+// drawn from, and 1 elsewhere.
 #include "core/properties.h"
 #include "integrators/integrator.h"
+#include "scene/scene.h"
 
 namespace columba {
 
 class PathIntegrator : public Integrator {
  public:
   enum class Strategy { MIS, EmitterOnly, BSDFOnly };
+  static constexpr int kAutomatic = 0;  // emitter_candidates chosen per vertex (candidatesAt)
   PathIntegrator(int maxDepth, int rrDepth, bool hideEmitters, Strategy strategy = Strategy::MIS,
-                 int emitterCandidates = 1)
+                 int emitterCandidates = kAutomatic)
       : maxDepth_(maxDepth),
         rrDepth_(rrDepth),
         hideEmitters_(hideEmitters),
@@ -29,6 +33,8 @@ class PathIntegrator : public Integrator {
  private:
   float hitWeight(bool afterDeltaBounce, float bsdfPdf, float lightPdf) const;
   float emitterSampleWeight(bool deltaLight, float lightPdf, float bsdfPdf) const;
+  // Emitter samples to draw at a first vertex with this BSDF, drawing from `set`.
+  int candidatesAt(const Scene& scene, const BSDF& bsdf, Scene::EmitterSet set) const;
 
   int maxDepth_;  // longest path in vertices after the camera; -1: unlimited (Mitsuba's meaning)
   int rrDepth_;

@@ -52,6 +52,9 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   for (const auto& e : emitters_) {
     allEmitters_.push_back(e.get());
     if (!e->leftToBSDFSamples()) emittersBesideBSDFSamples_.push_back(e.get());
+    hasExtendedEmitters_ = hasExtendedEmitters_ || !e->isDelta();
+    hasExtendedEmittersBesideBSDFSamples_ =
+        hasExtendedEmittersBesideBSDFSamples_ || (!e->isDelta() && !e->leftToBSDFSamples());
     if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
   }
   if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);

@@ -56,6 +56,11 @@ class Scene {
     *pmf = 1.0f / float(choices.size());
     return choices[size_t(i)];
   }
+  // Whether the set holds an emitter that is not a delta light: only then can emitter samples from
+  // one point differ in direction (worth resampling several of them).
+  bool hasExtendedEmitters(EmitterSet set) const {
+    return set == EmitterSet::All ? hasExtendedEmitters_ : hasExtendedEmittersBesideBSDFSamples_;
+  }
   // Whether the two sets differ: only then is a vertex's set worth deciding.
   bool leavesEmittersToBSDFSamples() const { return emittersBesideBSDFSamples_.size() != allEmitters_.size(); }
   // The probability that sampleEmitter picks `emitter` from the set (0 if the set leaves it out).
@@ -91,6 +96,7 @@ class Scene {
   std::vector<std::shared_ptr<Emitter>> emitters_;
   std::vector<const Emitter*> allEmitters_, emittersBesideBSDFSamples_;
   std::vector<const Emitter*> infiniteEmitters_;
+  bool hasExtendedEmitters_ = false, hasExtendedEmittersBesideBSDFSamples_ = false;
   std::shared_ptr<Sensor> sensor_;
   std::shared_ptr<Integrator> integrator_;
   std::shared_ptr<ParticleTracerIntegrator> particleTracer_;
