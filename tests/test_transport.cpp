@@ -126,14 +126,14 @@ std::string threeEmitterScene(const std::string& strategy, int emitterCandidates
     </scene>)";
 }
 
-// The image's mean luminance over `renders` renders with different seeds, and its standard
-// error from their spread.
-Estimate meanOverSeeds(const std::string& strategy, int renders, int emitterCandidates = 1) {
+// The image's mean luminance over `renders` renders of `xml` with different seeds, and its
+// standard error from their spread.
+Estimate meanLuminanceOverSeeds(const std::string& xml, int renders, uint64_t firstSeed) {
   std::vector<double> means;
   for (int k = 0; k < renders; ++k) {
     RenderSettings settings;
-    settings.seed = 1000 + k;
-    Image image = renderSceneString(threeEmitterScene(strategy, emitterCandidates), settings);
+    settings.seed = firstSeed + uint64_t(k);
+    Image image = renderSceneString(xml, settings);
     double sum = 0;
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
@@ -143,6 +143,10 @@ Estimate meanOverSeeds(const std::string& strategy, int renders, int emitterCand
   for (double m : means) mean += m / renders;
   for (double m : means) variance += (m - mean) * (m - mean) / (renders - 1);
   return {mean, std::sqrt(variance / renders)};
+}
+
+Estimate meanOverSeeds(const std::string& strategy, int renders, int emitterCandidates = 1) {
+  return meanLuminanceOverSeeds(threeEmitterScene(strategy, emitterCandidates), renders, 1000);
 }
 
 }  // namespace
@@ -226,23 +230,6 @@ std::string barbuleScene(int emitterCandidates, bool directional = false) {
     </scene>)";
 }
 
-Estimate barbuleMeanOverSeeds(int emitterCandidates, int renders) {
-  std::vector<double> means;
-  for (int k = 0; k < renders; ++k) {
-    RenderSettings settings;
-    settings.seed = 2000 + k;
-    Image image = renderSceneString(barbuleScene(emitterCandidates), settings);
-    double sum = 0;
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
-    means.push_back(sum / (image.width * image.height));
-  }
-  double mean = 0, variance = 0;
-  for (double m : means) mean += m / renders;
-  for (double m : means) variance += (m - mean) * (m - mean) / (renders - 1);
-  return {mean, std::sqrt(variance / renders)};
-}
-
 bool samePixels(const Image& a, const Image& b) { return a.width == b.width && a.height == b.height && a.rgb == b.rgb; }
 
 }  // namespace
@@ -251,8 +238,9 @@ bool samePixels(const Image& a, const Image& b) { return a.width == b.width && a
 // the mean must still agree with one emitter sample's.
 TEST(Transport, BarbuleResampledByItsTargetsAgreesWithOneEmitterSample) {
   const int renders = 8;
-  Estimate one = barbuleMeanOverSeeds(1, renders), automatic = barbuleMeanOverSeeds(0, renders),
-           eight = barbuleMeanOverSeeds(8, renders);
+  Estimate one = meanLuminanceOverSeeds(barbuleScene(1), renders, 2000),
+           automatic = meanLuminanceOverSeeds(barbuleScene(0), renders, 2000),
+           eight = meanLuminanceOverSeeds(barbuleScene(8), renders, 2000);
   std::printf("mean luminance: 1 emitter sample %.5f +- %.5f, automatic %.5f +- %.5f, 8 candidates %.5f +- %.5f\n",
               one.mean, one.standardError, automatic.mean, automatic.standardError, eight.mean, eight.standardError);
   EXPECT_LT(std::abs(automatic.mean - one.mean) / std::hypot(automatic.standardError, one.standardError), kSigmas);
