@@ -694,6 +694,37 @@ TEST(BarbuleBSDF, ResamplingTargetsArePositiveWhereverTheValueIsAndTheChosenOneI
   }
 }
 
+// barbulebsdfev (omega_i = wo) has no cheap targets: it hands the chooser its values and densities.
+TEST(BarbuleBSDF, TheEvaluationTwinHandsAChooserItsValues) {
+  const BSDFContext ctx;
+  BarbuleBSDF bsdf(reference(0.58f), BarbuleBSDF::Role::LightIncident);
+  EXPECT_FALSE(bsdf.hasCheapResamplingTargets());
+  PCG32 rng(47);
+  for (int i = 0; i < 1000; ++i) {
+    Vec3 wi = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    std::array<Vec3, 3> wo;
+    for (Vec3& w : wo) w = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    RecordingChooser chooser(i % 3);
+    std::array<BSDFEvalPdf, 3> toLights;
+    BSDFVertexRequest request;
+    request.woLights = wo.data();
+    request.woLightCount = 3;
+    request.toLights = toLights.data();
+    request.lightPdf = true;
+    request.chooseLight = &chooser;
+    bsdf.queryVertex(ctx, wi, kWavelengths, request);
+    ASSERT_EQ(chooser.seen.size(), 3u);
+    for (size_t k = 0; k < 3; ++k) {
+      Spectrum f = bsdf.eval(ctx, wi, wo[k], kWavelengths);
+      for (int j = 0; j < kSpectrumSamples; ++j) {
+        ASSERT_EQ(chooser.seen[k].value[j], f[j]);
+        ASSERT_EQ(toLights[k].value[j], f[j]);
+      }
+      ASSERT_EQ(toLights[k].pdf, bsdf.pdf(ctx, wi, wo[k], kWavelengths));
+    }
+  }
+}
+
 TEST(BarbuleBSDF, LightFromBelowOnlyPassesWithTheCoverageOfTheSameLine) {
   const BSDFContext ctx;
   for (const ParameterSet& set : parameterSets()) {

@@ -443,24 +443,19 @@ BSDFVertexQueries BarbuleBSDF::queryVertex(const BSDFContext& ctx, const Vec3& w
     request.toLights[k] =
         request.lightPdf ? evalPdfAt(point, in, choice, wo, woArc) : BSDFEvalPdf{evalAt(point, in, wo, woArc), 0.0f};
   };
-  if (request.chooseLight && role_ == Role::CameraIncident) {
-    // Cheap targets toward every candidate; the full value (TRT's quadrature) and density toward
-    // the chosen one only.
-    std::array<LitArc, kMaxLightDirections> woArcs;
-    for (int k = 0; k < request.woLightCount; ++k) {
-      const Vec3& wo = request.woLights[k];
-      woArcs[size_t(k)] = point.geometry.litArc(inPlane(wo).dir);
-      request.toLights[k] = {resamplingTarget(point, in, wo, woArcs[size_t(k)]), 0.0f};
-    }
+  // With a chooser and cheap targets: the targets toward every candidate, the full value (TRT's
+  // quadrature) and density toward the chosen one only. Otherwise the values are the targets.
+  const bool cheapTargets = request.chooseLight && hasCheapResamplingTargets();
+  auto litArcToward = [&](int k) { return point.geometry.litArc(inPlane(request.woLights[k]).dir); };
+  for (int k = 0; k < request.woLightCount; ++k) {
+    if (cheapTargets)
+      request.toLights[k] = {resamplingTarget(point, in, request.woLights[k], litArcToward(k)), 0.0f};
+    else
+      evaluateTowardLight(k, litArcToward(k));
+  }
+  if (request.chooseLight) {
     const int chosen = request.chooseLight->choose(request.toLights, request.woLightCount);
-    if (chosen >= 0) evaluateTowardLight(chosen, woArcs[size_t(chosen)]);
-  } else if (request.chooseLight) {
-    for (int k = 0; k < request.woLightCount; ++k)
-      evaluateTowardLight(k, point.geometry.litArc(inPlane(request.woLights[k]).dir));
-    request.chooseLight->choose(request.toLights, request.woLightCount);
-  } else {
-    for (int k = 0; k < request.woLightCount; ++k)
-      evaluateTowardLight(k, point.geometry.litArc(inPlane(request.woLights[k]).dir));
+    if (cheapTargets && chosen >= 0) evaluateTowardLight(chosen, litArcToward(chosen));  // its arc again: cheap
   }
   if (request.sample) q.sampled = sampleAt(point, in, choice, request.uComponent, request.u, request.samplePdf);
   if (request.passThrough) q.passThrough = Spectrum(transmission(point.geometry, in));

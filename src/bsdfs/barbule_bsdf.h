@@ -106,7 +106,7 @@ class BarbuleBSDF : public BSDF {
   Incident incident(const PointModel& point, const Vec3& w, const LitArc& arc) const;
   // omega_o, whose lit arc is `arc`, with what the pair (omega_i, omega_o) shares.
   Outgoing outgoing(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
-  // The same but the common lit interval (what R needs: the half vector and its normal's lighting).
+  // The same without the common lit interval: what R needs (the half vector and its normal's lighting).
   Outgoing mirrorGeometry(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
 
   // Evaluation, one scheme. eval* gives the value f |cos omega_o|, evalLobes* the lobes without a

@@ -122,10 +122,7 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
         towardLights[size_t(drawn++)] = light->woLocal;
       }
     }
-    // With one candidate, the light sample drawn (if any) is traced.
     CandidateChooser chooser(lights.data(), candidates, candidates > 1 ? sampler.get1D() : 0.0f);
-    std::optional<ResampledLight> chosen;
-    if (candidates == 1 && drawn == 1) chosen = ResampledLight{0, 1.0f};
     BSDFVertexRequest request;
     if (candidates > 1 && drawn > 0) request.chooseLight = &chooser;
     request.woLights = towardLights.data();
@@ -137,7 +134,10 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
     request.uComponent = uComponent;
     request.u = uDirection;
     BSDFVertexQueries queries = bsdf.queryVertex(hit->bsdfContext(), wi, wl, request);
-    if (request.chooseLight) chosen = chooser.chosen();
+    // Without a chooser at most one light sample was drawn, and it is traced.
+    const std::optional<ResampledLight> chosen = request.chooseLight ? chooser.chosen()
+                                                 : drawn == 1        ? std::optional(ResampledLight{0, 1.0f})
+                                                                     : std::nullopt;
     if (chosen) {
       const size_t i = size_t(chosen->index);
       if (auto ds = connectToLight(scene, *hit, lights[i], toLights[i], wl, rays))

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -52,11 +53,13 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   for (const auto& e : emitters_) {
     allEmitters_.push_back(e.get());
     if (!e->leftToBSDFSamples()) emittersBesideBSDFSamples_.push_back(e.get());
-    hasExtendedEmitters_ = hasExtendedEmitters_ || !e->isDelta();
-    hasExtendedEmittersBesideBSDFSamples_ =
-        hasExtendedEmittersBesideBSDFSamples_ || (!e->isDelta() && !e->leftToBSDFSamples());
     if (e->isInfinite()) infiniteEmitters_.push_back(e.get());
   }
+  auto anyExtended = [](const std::vector<const Emitter*>& set) {
+    return std::any_of(set.begin(), set.end(), [](const Emitter* e) { return !e->isDelta(); });
+  };
+  hasExtendedEmitters_ = anyExtended(allEmitters_);
+  hasExtendedEmittersBesideBSDFSamples_ = anyExtended(emittersBesideBSDFSamples_);
   if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);
   if (!integrator_ && !particleTracer_)
     integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
