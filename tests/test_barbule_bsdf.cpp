@@ -644,6 +644,18 @@ class RecordingChooser final : public LightChooser {
  private:
   int choice_;
 };
+
+// A vertex query toward `count` light directions with densities, through `chooser`.
+void queryWithChooser(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Vec3& wi, const Vec3* wo, int count,
+                      BSDFEvalPdf* toLights, LightChooser& chooser) {
+  BSDFVertexRequest request;
+  request.woLights = wo;
+  request.woLightCount = count;
+  request.toLights = toLights;
+  request.lightPdf = true;
+  request.chooseLight = &chooser;
+  bsdf.queryVertex(ctx, wi, kWavelengths, request);
+}
 }  // namespace
 
 // With a LightChooser, the barbule hands it R's value plus a bound of TRT toward each candidate
@@ -665,13 +677,7 @@ TEST(BarbuleBSDF, ResamplingTargetsArePositiveWhereverTheValueIsAndTheChosenOneI
       const int choice = int(rng.nextFloat() * 4.0f) % 4;
       RecordingChooser chooser(choice);
       std::array<BSDFEvalPdf, 4> toLights;
-      BSDFVertexRequest request;
-      request.woLights = wo.data();
-      request.woLightCount = 4;
-      request.toLights = toLights.data();
-      request.lightPdf = true;
-      request.chooseLight = &chooser;
-      bsdf.queryVertex(ctx, wi, kWavelengths, request);
+      queryWithChooser(bsdf, ctx, wi, wo.data(), 4, toLights.data(), chooser);
       ASSERT_EQ(chooser.seen.size(), 4u);
       for (int k = 0; k < 4; ++k) {
         BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, wo[size_t(k)], kWavelengths);
@@ -706,13 +712,7 @@ TEST(BarbuleBSDF, TheEvaluationTwinHandsAChooserItsValues) {
     for (Vec3& w : wo) w = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
     RecordingChooser chooser(i % 3);
     std::array<BSDFEvalPdf, 3> toLights;
-    BSDFVertexRequest request;
-    request.woLights = wo.data();
-    request.woLightCount = 3;
-    request.toLights = toLights.data();
-    request.lightPdf = true;
-    request.chooseLight = &chooser;
-    bsdf.queryVertex(ctx, wi, kWavelengths, request);
+    queryWithChooser(bsdf, ctx, wi, wo.data(), 3, toLights.data(), chooser);
     ASSERT_EQ(chooser.seen.size(), 3u);
     for (size_t k = 0; k < 3; ++k) {
       Spectrum f = bsdf.eval(ctx, wi, wo[k], kWavelengths);
