@@ -1,6 +1,8 @@
 #pragma once
 // Renders scene XML held in a string, for tests of whole-image behaviour.
+#include <cstring>
 #include <string>
+#include <vector>
 #include "builtin/builtin_plugins.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -33,6 +35,15 @@ inline std::string plateUnderDirectionalLight(const std::string& irradiance, flo
     <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>)" +
          irradiance + R"(</emitter>
     </scene>)";
+}
+
+// Whether two arrays of floats are the same bit for bit (renders promised deterministic).
+inline bool bitIdentical(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+// Whether two images have the same size and the same colour values bit for bit.
+inline bool samePixels(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height && bitIdentical(a.rgb, b.rgb);
 }
 
 // Mean of each channel over the pixels of [x0, x1) x [y0, y1).

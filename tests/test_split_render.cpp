@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 
 #include "distribute/merge.h"
 #include "render_test_support.h"
@@ -96,10 +95,6 @@ std::vector<Piece> renderPieces(int parts, int passes, int spp, int spectralBins
       pieces.push_back(std::move(piece));
     }
   return pieces;
-}
-
-bool bitIdentical(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 std::string mergeError(const std::vector<Piece>& pieces) {

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -12,6 +11,7 @@
 #include "cli_test_support.h"
 #include "distribute/manifest.h"
 #include "io/image.h"
+#include "render_test_support.h"
 #include "temp_dir_test.h"
 
 namespace fs = std::filesystem;
@@ -19,6 +19,7 @@ using columba::testing::CommandResult;
 using columba::testing::renderAndSignal;
 using columba::testing::run;
 using columba::testing::runShell;
+using columba::testing::samePixels;
 using namespace columba;
 
 namespace {
@@ -40,11 +41,7 @@ const char* kScene = R"(<scene version="3.0.0">
 </scene>
 )";
 
-bool samePixels(const std::string& a, const std::string& b) {
-  Image x = readEXR(a), y = readEXR(b);
-  return x.width == y.width && x.height == y.height &&
-         std::memcmp(x.rgb.data(), y.rgb.data(), x.rgb.size() * sizeof(float)) == 0;
-}
+bool sameFilePixels(const std::string& a, const std::string& b) { return samePixels(readEXR(a), readEXR(b)); }
 
 std::string readText(const fs::path& path) {
   std::ifstream in(path);
@@ -78,9 +75,9 @@ TEST_F(SweepCli, ASweepRendersOneFramePerValueAndWritesAManifest) {
     EXPECT_TRUE(fs::exists(at("s_angle=" + angle + ".png")));
     // Each frame is the render of that value on its own.
     ASSERT_EQ(run("render " + s + " -D angle=" + angle + " -o " + at("one.exr")).status, 0);
-    EXPECT_TRUE(samePixels(frame.output, at("one.exr"))) << angle;
+    EXPECT_TRUE(sameFilePixels(frame.output, at("one.exr"))) << angle;
   }
-  EXPECT_FALSE(samePixels(m.frames[0].output, m.frames[2].output));
+  EXPECT_FALSE(sameFilePixels(m.frames[0].output, m.frames[2].output));
 }
 
 TEST_F(SweepCli, GridsAndFramePatterns) {
@@ -99,7 +96,7 @@ TEST_F(SweepCli, GridsAndFramePatterns) {
   r = run("render " + scene() + " --sweep angle=0,30 --sweep spp=1:2:1 --frames '" + at("frames/g_%02d.exr") +
           "' --frame 2");
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_TRUE(samePixels(at("frames/g_02.exr"), at("frames/f_02_030.exr")));
+  EXPECT_TRUE(sameFilePixels(at("frames/g_02.exr"), at("frames/f_02_030.exr")));
   EXPECT_FALSE(fs::exists(at("frames/g_00.exr")));
   EXPECT_FALSE(fs::exists(at("frames/manifest.json")));
   // Mistakes are named before any work.
@@ -131,7 +128,7 @@ TEST_F(SweepCli, PartsOfACroppedFilmMergeIntoTheCroppedRender) {
   ASSERT_EQ(run("merge " + at("img.part1of2.exr") + " " + at("img.part2of2.exr") + " -o " + at("merged.exr")).status,
             0);
   EXPECT_EQ(readEXR(at("whole.exr")).width, 9);
-  EXPECT_TRUE(samePixels(at("merged.exr"), at("whole.exr")));
+  EXPECT_TRUE(sameFilePixels(at("merged.exr"), at("whole.exr")));
 }
 
 TEST_F(SweepCli, PartsAndPassesMergeIntoTheWholeRender) {
@@ -151,7 +148,7 @@ TEST_F(SweepCli, PartsAndPassesMergeIntoTheWholeRender) {
           at("merged.exr"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(at("merged.png")));
-  EXPECT_TRUE(samePixels(at("merged.exr"), at("whole.exr")));
+  EXPECT_TRUE(sameFilePixels(at("merged.exr"), at("whole.exr")));
   r = run("compare " + at("merged.exr") + " " + at("whole.exr"));
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("identical"), std::string::npos) << r.output;
@@ -266,7 +263,7 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
     EXPECT_EQ(frame.spp, 4);
     ASSERT_EQ(run("render " + s + " --spp 4 -D angle=" + frame.defines.at("angle") + " -o " + at("local.exr")).status,
               0);
-    EXPECT_TRUE(samePixels(frame.output, at("local.exr"))) << frame.output;
+    EXPECT_TRUE(sameFilePixels(frame.output, at("local.exr"))) << frame.output;
   }
   r = runShell(slurm + " --submit");
   ASSERT_EQ(r.status, 0) << r.output;

@@ -230,8 +230,6 @@ std::string barbuleScene(int emitterCandidates, bool directional = false) {
     </scene>)";
 }
 
-bool samePixels(const Image& a, const Image& b) { return a.width == b.width && a.height == b.height && a.rgb == b.rgb; }
-
 }  // namespace
 
 // The barbule's candidates are chosen by its cheap targets (R and a bound of TRT), not its values:

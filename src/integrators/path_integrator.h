@@ -8,9 +8,8 @@
 // no ray hits, then add nothing). `emitter_candidates` (a Columba parameter, 1 to 8) draws that
 // many emitter samples at a path's first scattering vertex and traces one, chosen by the BSDF's
 // resampling targets toward them (resampled importance sampling, integrators/direct_light.h, and
-// BSDFVertexRequest::chooseLight); 0, the default,
-// draws 3 where the BSDF has cheap resampling targets (the barbule's) and emitters with extent are
-// drawn from, and 1 elsewhere.
+// BSDFVertexRequest::chooseLight); 0, the default, draws 3 where the BSDF has cheap resampling
+// targets (the barbule's) and emitters with extent are drawn from, and 1 elsewhere.
 #include "core/properties.h"
 #include "integrators/integrator.h"
 #include "scene/scene.h"
