@@ -1,5 +1,7 @@
 #pragma once
 // Renders scene XML held in a string, for tests of whole-image behaviour.
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -54,6 +56,40 @@ inline Vec3 meanColour(const Image& image, int x0, int y0, int x1, int y1) {
       for (int c = 0; c < 3; ++c) sum[c] += image.pixel(x, y)[c];
   double n = double(x1 - x0) * (y1 - y0);
   return Vec3(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
+}
+
+inline double luminance(const Image& image, int x, int y) {
+  const float* c = image.pixel(x, y);
+  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+// A mean and its standard error.
+struct Estimate {
+  double mean = 0, standardError = 0;
+};
+
+// How many standard errors apart two estimates are.
+inline double standardErrorsApart(const Estimate& a, const Estimate& b) {
+  return std::abs(a.mean - b.mean) / std::hypot(a.standardError, b.standardError);
+}
+
+// The image's mean luminance over `renders` renders of `xml` with different seeds, and its
+// standard error from their spread.
+inline Estimate meanLuminanceOverSeeds(const std::string& xml, int renders, uint64_t firstSeed) {
+  std::vector<double> means;
+  for (int k = 0; k < renders; ++k) {
+    RenderSettings settings;
+    settings.seed = firstSeed + uint64_t(k);
+    Image image = renderSceneString(xml, settings);
+    double sum = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
+    means.push_back(sum / (image.width * image.height));
+  }
+  double mean = 0, variance = 0;
+  for (double m : means) mean += m / renders;
+  for (double m : means) variance += (m - mean) * (m - mean) / (renders - 1);
+  return {mean, std::sqrt(variance / renders)};
 }
 
 }  // namespace columba::testing

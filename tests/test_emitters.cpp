@@ -87,6 +87,34 @@ TEST(Emitter, UniformEnvmapIsAWhiteFurnace) {
   EXPECT_NEAR(c.z, 0.6f, 0.006f);
 }
 
+TEST(Emitter, AnEnvmapTurnsAndMirrorsButDoesNotScaleOrShear) {
+  // Its directions are drawn with their density in the map's frame, which only a rigid to_world
+  // keeps.
+  auto dir = std::filesystem::temp_directory_path() / ("columba_env_rigid_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Image flat(16, 8);
+  std::fill(flat.rgb.begin(), flat.rgb.end(), 0.6f);
+  writeEXR((dir / "flat.exr").string(), flat);
+  auto load = [&](const std::string& operations) {
+    loadSceneString(R"(<scene version="3.0.0">
+      <emitter type="envmap"><string name="filename" value=")" +
+                        (dir / "flat.exr").string() + R"("/><transform name="to_world">)" + operations +
+                        "</transform></emitter></scene>",
+                    "<test>", ".", {}, builtinPlugins());
+  };
+  EXPECT_NO_THROW(load(R"(<rotate x="0.6" y="0.8" angle="40"/><scale x="-1"/>)"));
+  for (const char* operations : {R"(<scale x="2"/>)", R"(<rotate x="1" y="1" angle="23"/>)"}) {
+    try {
+      load(operations);
+      ADD_FAILURE() << "accepted " << operations;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("<test>:2"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("to_world must not scale or shear"), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Emitter, AreaLightDirectionSamplingMatchesPdfHit) {
   // For each emitter shape, directions sampled from a reference point are tested against the
   // density pdfHit reports for the point a ray in that direction hits. The lights sit away from
@@ -95,8 +123,11 @@ TEST(Emitter, AreaLightDirectionSamplingMatchesPdfHit) {
       R"(<shape type="disk"><transform name="to_world"><scale x="0.7" y="0.4" z="1"/><rotate x="1" angle="150"/><translate z="1.5"/></transform>)",
       R"(<shape type="rectangle"><transform name="to_world"><rotate x="1" angle="200"/><translate x="0.5" z="1"/></transform>)",
       R"(<shape type="sphere"><point name="center" x="2" y="0.5" z="0.3"/><float name="radius" value="0.6"/>)",
+      // A <rotate> about an axis that is not unit length scales and shears (docs/transforms.md).
+      R"(<shape type="disk"><transform name="to_world"><scale x="0.5" y="0.3" z="1"/><rotate x="1" y="1" angle="23"/>
+          <rotate x="1" angle="180"/><translate x="-1.2" y="0.4" z="1"/></transform>)",
   };
-  int tests = 3;
+  int tests = 4;
   for (const char* shape : shapes) {
     std::string xml = std::string(R"(<scene version="3.0.0">)") + shape +
                       R"(<emitter type="area"><spectrum name="radiance" value="1"/></emitter></shape></scene>)";

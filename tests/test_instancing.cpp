@@ -134,8 +134,8 @@ TEST(Instancing, InstanceTransformsComposeWithTheGroupShapesOwn) {
 }
 
 TEST(Instancing, RotationAboutAnAxisThatIsNotUnitLengthStaysConsistent) {
-  // Such a <rotate> also scales and shears, and Transform keeps only its transpose as the inverse;
-  // Embree inverts the matrix exactly, and the interaction must agree with what Embree traced.
+  // Such a <rotate> also scales and shears; Embree inverts the matrix itself, and the interaction
+  // must agree with what Embree traced.
   auto scene = sceneWith(R"(<shape type="shapegroup" id="tile"><shape type="rectangle"/></shape>
     <shape type="instance"><ref id="tile"/>
       <transform name="to_world"><rotate x="1" y="0.5" z="0" angle="30"/><translate z="-1"/></transform></shape>)");

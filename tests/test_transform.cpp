@@ -34,8 +34,8 @@ TEST(Transform, RotationIsRightHanded) {
 }
 
 TEST(Transform, RotationUsesItsAxisAsGivenAsMitsubaDoes) {
-  // Mitsuba's rotate: R = cos(a) I + (1 - cos(a)) k k^T + sin(a) [k]x with the axis k as given,
-  // and the transpose as the inverse. For k = (1, 1, 0) and a = 23 degrees (the paper's
+  // Mitsuba's rotate: R = cos(a) I + (1 - cos(a)) k k^T + sin(a) [k]x with the axis k as given.
+  // For k = (1, 1, 0) and a = 23 degrees (the paper's
   // simulation1 light), with t = 1 - c: R = [[c + t, t, s], [t, c + t, -s], [-s, s, c]].
   const double a = 23.0 * M_PI / 180.0, c = std::cos(a), s = std::sin(a), t = 1.0 - c;
   Transform r = Transform::rotate(Vec3(1, 1, 0), 23.0f);
@@ -43,10 +43,16 @@ TEST(Transform, RotationUsesItsAxisAsGivenAsMitsubaDoes) {
   expectNear(r.vector(Vec3(1, 0, 0)), Vec3(float(t + c), float(t), float(-s)));
   expectNear(r.vector(Vec3(0, 1, 0)), Vec3(float(t), float(t + c), float(s)));
   expectNear(r.vector(Vec3(0, 0, 1)), Vec3(float(s), float(-s), float(c)));
-  // Not a rotation: lengths change. The kept inverse is the transpose.
+  // Not a rotation: lengths change. Unlike Mitsuba's, the kept inverse is the inverse, not the
+  // transpose, so that ray hits (through it) and area samples (through R) see one surface.
   EXPECT_GT(length(r.vector(Vec3(1, 0, 0))), 1.01f);
+  const Matrix4 product = r.matrix() * r.inverseMatrix();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(product.m[i][j], i == j ? 1.0 : 0.0, 1e-12) << i << ", " << j;
+  // A unit axis keeps the transpose, which is then the inverse.
+  const Transform unit = Transform::rotate(Vec3(0, 0, 1), 23.0f);
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) EXPECT_DOUBLE_EQ(r.inverseMatrix().m[i][j], r.matrix().m[j][i]);
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(unit.inverseMatrix().m[i][j], unit.matrix().m[j][i]);
   // A unit axis gives the plain rotation.
   expectNear(Transform::rotate(Vec3(0.6f, 0.8f, 0), 90).vector(Vec3(0.6f, 0.8f, 0)), Vec3(0.6f, 0.8f, 0));
   expectNear(Transform::rotate(Vec3(0.6f, 0.8f, 0), 90).vector(Vec3(0, 0, 1)), Vec3(0.8f, -0.6f, 0));

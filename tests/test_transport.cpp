@@ -16,15 +16,6 @@ using namespace columba::testing;
 
 namespace {
 
-double luminance(const Image& image, int x, int y) {
-  const float* c = image.pixel(x, y);
-  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
-}
-
-struct Estimate {
-  double mean = 0, standardError = 0;
-};
-
 // Mean luminance over the image and its standard error, for images whose pixels are independent
 // estimates of one value.
 Estimate pixelMean(const Image& image) {
@@ -126,25 +117,6 @@ std::string threeEmitterScene(const std::string& strategy, int emitterCandidates
     </scene>)";
 }
 
-// The image's mean luminance over `renders` renders of `xml` with different seeds, and its
-// standard error from their spread.
-Estimate meanLuminanceOverSeeds(const std::string& xml, int renders, uint64_t firstSeed) {
-  std::vector<double> means;
-  for (int k = 0; k < renders; ++k) {
-    RenderSettings settings;
-    settings.seed = firstSeed + uint64_t(k);
-    Image image = renderSceneString(xml, settings);
-    double sum = 0;
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) sum += luminance(image, x, y);
-    means.push_back(sum / (image.width * image.height));
-  }
-  double mean = 0, variance = 0;
-  for (double m : means) mean += m / renders;
-  for (double m : means) variance += (m - mean) * (m - mean) / (renders - 1);
-  return {mean, std::sqrt(variance / renders)};
-}
-
 Estimate meanOverSeeds(const std::string& strategy, int renders, int emitterCandidates = 1) {
   return meanLuminanceOverSeeds(threeEmitterScene(strategy, emitterCandidates), renders, 1000);
 }
@@ -157,12 +129,9 @@ TEST(Transport, MISAgreesWithEmitterSamplingAndBSDFSamplingAlone) {
            bsdf = meanOverSeeds("bsdf", renders);
   std::printf("mean luminance: mis %.5f +- %.5f, emitter sampling %.5f +- %.5f, BSDF sampling %.5f +- %.5f\n", mis.mean,
               mis.standardError, emitter.mean, emitter.standardError, bsdf.mean, bsdf.standardError);
-  auto apart = [](const Estimate& a, const Estimate& b) {
-    return std::abs(a.mean - b.mean) / std::hypot(a.standardError, b.standardError);
-  };
-  EXPECT_LT(apart(mis, emitter), kSigmas) << "MIS and emitter sampling disagree";
-  EXPECT_LT(apart(mis, bsdf), kSigmas) << "MIS and BSDF sampling disagree";
-  EXPECT_LT(apart(emitter, bsdf), kSigmas) << "emitter and BSDF sampling disagree";
+  EXPECT_LT(standardErrorsApart(mis, emitter), kSigmas) << "MIS and emitter sampling disagree";
+  EXPECT_LT(standardErrorsApart(mis, bsdf), kSigmas) << "MIS and BSDF sampling disagree";
+  EXPECT_LT(standardErrorsApart(emitter, bsdf), kSigmas) << "emitter and BSDF sampling disagree";
   // The combination must also be the least noisy of the three.
   EXPECT_LT(mis.standardError, emitter.standardError * 1.2);
   EXPECT_LT(mis.standardError, bsdf.standardError);
@@ -180,9 +149,8 @@ TEST(Transport, ResampledEmitterSamplesAgreeWithOneEmitterSample) {
       "samples %.5f +- %.5f\n",
       one.mean, one.standardError, resampled.mean, resampled.standardError, resampledAlone.mean,
       resampledAlone.standardError);
-  EXPECT_LT(std::abs(resampled.mean - one.mean) / std::hypot(resampled.standardError, one.standardError), kSigmas);
-  EXPECT_LT(std::abs(resampledAlone.mean - one.mean) / std::hypot(resampledAlone.standardError, one.standardError),
-            kSigmas);
+  EXPECT_LT(standardErrorsApart(resampled, one), kSigmas);
+  EXPECT_LT(standardErrorsApart(resampledAlone, one), kSigmas);
 }
 
 TEST(Transport, EmitterCandidatesOutsideZeroToEightAreAnError) {
@@ -241,8 +209,8 @@ TEST(Transport, BarbuleResampledByItsTargetsAgreesWithOneEmitterSample) {
            eight = meanLuminanceOverSeeds(barbuleScene(8), renders, 2000);
   std::printf("mean luminance: 1 emitter sample %.5f +- %.5f, automatic %.5f +- %.5f, 8 candidates %.5f +- %.5f\n",
               one.mean, one.standardError, automatic.mean, automatic.standardError, eight.mean, eight.standardError);
-  EXPECT_LT(std::abs(automatic.mean - one.mean) / std::hypot(automatic.standardError, one.standardError), kSigmas);
-  EXPECT_LT(std::abs(eight.mean - one.mean) / std::hypot(eight.standardError, one.standardError), kSigmas);
+  EXPECT_LT(standardErrorsApart(automatic, one), kSigmas);
+  EXPECT_LT(standardErrorsApart(eight, one), kSigmas);
 }
 
 // emitter_candidates 0 (the default) draws 3 candidates where the BSDF has cheap resampling

@@ -1,5 +1,6 @@
 #include "core/transform.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace columba {
@@ -75,9 +76,9 @@ Transform Transform::scale(const Vec3& s) {
 }
 
 Transform Transform::rotate(const Vec3& axis, float angleDeg) {
-  // Rodrigues' formula with the axis as given, and the transpose as the inverse, exactly as Mitsuba
-  // builds it: an axis that is not unit length also scales and shears, and scenes written for
-  // Mitsuba (the paper's simulation1 light) depend on that.
+  // Rodrigues' formula with the axis as given, as Mitsuba builds it: an axis that is not unit length
+  // also scales and shears (scenes written for Mitsuba, the paper's simulation1 light among them,
+  // are drawn with that matrix).
   double x = axis.x, y = axis.y, z = axis.z;
   double a = double(angleDeg) * kPiDouble / 180.0;
   double s = std::sin(a), c = std::cos(a), t = 1.0 - c;
@@ -91,7 +92,15 @@ Transform Transform::rotate(const Vec3& axis, float angleDeg) {
   m.m[2][0] = t * x * z - s * y;
   m.m[2][1] = t * y * z + s * x;
   m.m[2][2] = t * z * z + c;
-  return Transform(m, m.transpose());
+  // Mitsuba keeps the transpose as the inverse whatever the axis, so that ray hits (through the
+  // inverse) and area samples (through the matrix) see two different surfaces. The transpose is
+  // kept only where it is the inverse to double precision; elsewhere the inverse is computed.
+  const Matrix4 transposed = m.transpose();
+  const Matrix4 product = m * transposed;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (std::abs(product.m[i][j] - (i == j ? 1.0 : 0.0)) > 1e-12) return Transform(m);
+  return Transform(m, transposed);
 }
 
 Transform Transform::lookAt(const Vec3& origin, const Vec3& target, const Vec3& up) {
@@ -134,6 +143,13 @@ Vec3 Transform::normal(const Vec3& n) const {
   return Vec3(float(inv_.m[0][0] * n.x + inv_.m[1][0] * n.y + inv_.m[2][0] * n.z),
               float(inv_.m[0][1] * n.x + inv_.m[1][1] * n.y + inv_.m[2][1] * n.z),
               float(inv_.m[0][2] * n.x + inv_.m[1][2] * n.y + inv_.m[2][2] * n.z));
+}
+
+bool Transform::isRigid(float tolerance) const {
+  const Vec3 x = vector(Vec3(1, 0, 0)), y = vector(Vec3(0, 1, 0)), z = vector(Vec3(0, 0, 1));
+  return std::abs(length(x) - 1.0f) <= tolerance && std::abs(length(y) - 1.0f) <= tolerance &&
+         std::abs(length(z) - 1.0f) <= tolerance && std::abs(dot(x, y)) <= tolerance &&
+         std::abs(dot(y, z)) <= tolerance && std::abs(dot(x, z)) <= tolerance;
 }
 
 bool Transform::isIdentity() const {

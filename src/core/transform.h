@@ -24,8 +24,8 @@ class Transform {
   static Transform translate(const Vec3& d);
   static Transform scale(const Vec3& s);
   // Rotation by `angleDeg` degrees about `axis` (right-handed), built as Mitsuba builds it: the
-  // axis is used as given and the inverse kept is the transpose, so for an axis that is not unit
-  // length the matrix also scales and shears and the kept "inverse" is only its transpose.
+  // axis is used as given, so for an axis that is not unit length the matrix also scales and
+  // shears. Its inverse is exact (Mitsuba keeps the transpose instead).
   static Transform rotate(const Vec3& axis, float angleDeg);
   // Camera-to-world: camera looks along +z toward `target`, with +y near `up` (Mitsuba's convention).
   static Transform lookAt(const Vec3& origin, const Vec3& target, const Vec3& up);
@@ -40,6 +40,9 @@ class Transform {
   const Matrix4& matrix() const { return m_; }
   const Matrix4& inverseMatrix() const { return inv_; }
   bool isIdentity() const;
+  // Whether the linear part is orthonormal to `tolerance`: a rotation, possibly with a mirror,
+  // which keeps lengths, angles and solid angles.
+  bool isRigid(float tolerance = 1e-4f) const;
 
  private:
   Matrix4 m_, inv_;

@@ -116,8 +116,13 @@ std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props) {
   } catch (const InputError& e) {
     throw props.error("filename", e.what());
   }
-  return std::make_shared<EnvmapEmitter>(std::move(image), props.getFloat("scale", 1.0f),
-                                         props.getTransform("to_world"), SourceLocation{path, 0});
+  // Directions are sampled in the map's own frame with their density there: a to_world that scales
+  // or shears would change solid angles between the two.
+  const Transform toWorld = props.getTransform("to_world");
+  if (!toWorld.isRigid())
+    throw props.error("to_world", "an envmap's to_world must not scale or shear (rotate it, or mirror it, only)");
+  return std::make_shared<EnvmapEmitter>(std::move(image), props.getFloat("scale", 1.0f), toWorld,
+                                         SourceLocation{path, 0});
 }
 
 }  // namespace columba

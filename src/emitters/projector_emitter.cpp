@@ -61,11 +61,7 @@ std::shared_ptr<Object> makeProjectorEmitter(const Properties& props) {
   if (auto bitmap = std::dynamic_pointer_cast<const BitmapTexture>(props.namedChild<Texture>("irradiance")))
     aspect = float(bitmap->width()) / float(bitmap->height());
   const Transform toWorld = props.getTransform("to_world");
-  const Vec3 x = toWorld.vector(Vec3(1, 0, 0)), y = toWorld.vector(Vec3(0, 1, 0)), z = toWorld.vector(Vec3(0, 0, 1));
-  const float tolerance = 1e-4f;
-  if (std::abs(length(x) - 1.0f) > tolerance || std::abs(length(y) - 1.0f) > tolerance ||
-      std::abs(length(z) - 1.0f) > tolerance || std::abs(dot(x, y)) > tolerance || std::abs(dot(y, z)) > tolerance ||
-      std::abs(dot(x, z)) > tolerance)
+  if (!toWorld.isRigid())
     throw props.error("to_world", "a projector's to_world must not scale or shear (rotate and translate it only)");
   return std::make_shared<ProjectorEmitter>(toWorld, std::move(irradiance),
                                             props.getSpectrum("scale", 1.0f, SpectrumUse::Emission),

@@ -12,9 +12,8 @@ namespace columba {
 
 class InstanceShape : public Shape {
  public:
-  // Embree inverts the matrix of `toWorld` itself, so the interaction maps rays and normals by its
-  // exact inverse too, not by the one `toWorld` keeps (only the transpose for a <rotate> about an
-  // axis that is not unit length, see Transform::rotate).
+  // Embree inverts the matrix of `toWorld` itself; the interaction inverts it too, so that both
+  // agree to rounding whatever inverse `toWorld` carries.
   InstanceShape(std::shared_ptr<const ShapeGroup> group, const Transform& toWorld)
       : group_(std::move(group)), toWorld_(toWorld.matrix()), toGroup_(toWorld_.inverse()) {}
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;

@@ -101,6 +101,10 @@ std::shared_ptr<Object> makeSphereShape(const Properties& props) {
       props.getTransform("to_world") * Transform::translate(center) * Transform::scale(Vec3(radius, radius, radius));
   auto shape = std::make_shared<SphereShape>(toWorld, props.getBool("flip_normals", false));
   attachMaterial(props, *shape);
+  if (shape->emitter && !shape->keepsRound())
+    throw props.error("to_world",
+                      "an emitting sphere needs a to_world that keeps it round (the same scale along every "
+                      "axis, no shear): its area and area sampling assume so");
   return shape;
 }
 

@@ -20,6 +20,7 @@ class SphereShape : public AnalyticShape {
   PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
   std::optional<ReferenceSample> sampleFrom(const Vec3& ref, Vec2 u, bool withTexturePoint) const override;
   float pdfFrom(const Vec3& ref, const SurfaceInteraction& hit) const override;
+  bool keepsRound() const { return round_; }
 
  private:
   // Cosine of the half-angle of the cone the sphere subtends from `ref`; nullopt when `ref`
