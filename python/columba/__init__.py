@@ -7,26 +7,37 @@ import os as _os
 import tempfile as _tempfile
 import warnings as _warnings
 
-import numpy as _np
+try:
+    import numpy as _np
 
-from ._columba import (  # noqa: F401
-    BARB_VERTICES,
-    GREEN_CORTEX_THICKNESS,
-    PURPLE_CORTEX_THICKNESS,
-    BarbuleBSDF,
-    InputError,
-    Scene,
-    __version__,
-    direction,
-    fit,
-    fit_spectra,
-    fresnel,
-    melanin_reflectance,
-    presets,
-    from_srgb,
-    to_srgb,
-)
-from . import _columba
+    from ._columba import (  # noqa: F401
+        BARB_VERTICES,
+        GREEN_CORTEX_THICKNESS,
+        PURPLE_CORTEX_THICKNESS,
+        BarbuleBSDF,
+        InputError,
+        Scene,
+        __version__,
+        direction,
+        fit,
+        fit_spectra,
+        fresnel,
+        melanin_reflectance,
+        presets,
+        from_srgb,
+        to_srgb,
+    )
+except ImportError as _error:
+    import sys as _sys
+
+    from ._built_for import INTERPRETER as _BUILT_FOR
+
+    raise ImportError(
+        f"columba was built for {_BUILT_FOR} (Debian's Python, with python3-numpy), and this Python "
+        f"({_sys.executable}) cannot load it: {_error}. Run {_BUILT_FOR}, or the build's "
+        "columba-python (build/columba-python), which runs it with this package found."
+    ) from _error
+from . import _columba  # noqa: E402
 
 __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image",
