@@ -223,9 +223,8 @@ const RgbMatchingFunctions& rgbMatchingFunctions() {
 
 // The density that follows what an RGB image records: |r| + |g| + |b| of the linear-sRGB colour
 // matching functions (linear between whole nanometres, as they are interpolated), plus 1 % of its
-// peak so that no wavelength is left out. Against pbrt's visible density, which follows luminance
-// alone and draws few blue wavelengths, it lowered the variance per sample of the paper's
-// simulation3 from 0.237 to 0.173 (blue channel: 0.46 -> 0.22).
+// peak so that no wavelength is left out. pbrt's visible density follows luminance alone and draws
+// few blue wavelengths (compared in docs/performance.md, "Sample patterns and wavelengths").
 const WavelengthTable& rgbMatchingTable() {
   static const WavelengthTable table = [] {
     const RgbMatchingFunctions& f = rgbMatchingFunctions();

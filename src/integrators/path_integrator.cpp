@@ -14,11 +14,9 @@ namespace {
 constexpr int kMaxPassThroughSteps = 1024;
 
 // Emitter candidates where emitter_candidates is left automatic: at a first vertex whose BSDF has
-// cheap resampling targets (the barbule's) and emitters with extent to draw from. Against one
-// emitter sample, 3 candidates give the neck bench patch under the paper's rectangle light 0.55
-// times the variance per sample for 1.15 times the instructions, and a single feather under a
-// strip light 0.40 times the variance for 1.12 times the time; 4 do about as well, 8 worse for
-// their cost. Elsewhere (BSDFs evaluated in full toward every candidate, delta lights) one.
+// cheap resampling targets (the barbule's) and emitters with extent to draw from, where they lower
+// the variance for little more work; elsewhere (BSDFs evaluated in full toward every candidate,
+// delta lights) one. Measured in docs/performance.md, "Measured and kept".
 constexpr int kAutomaticEmitterCandidates = 3;
 
 // Candidate k of `count` as uLight shifted by the k-th point of a rank-1 lattice (k / count, k /

@@ -281,8 +281,8 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
     // A pilot for every pixel gives the plan; then every pixel draws its planned samples, the
     // pilot's again among them (they are the same samples), so that each is splatted with weight
     // 1 / the pixel's count. Both from a pattern whose every power-of-two prefix is stratified:
-    // with ldsampler's padded pattern the pilot and the rest were random subsets of it, and
-    // simulation3's variance per sample 41 % (64 spp) and 87 % (256 spp) above a uniform render's.
+    // with ldsampler's padded pattern the pilot and the rest would be random subsets of it
+    // (docs/performance.md, "Sample patterns and wavelengths").
     const std::unique_ptr<Sampler> progressive = pattern->withProgressivePattern();
     const int pilot = pilotSamplesFor(spp);
     const int progressTotal = 2 * tiles.tileCount();

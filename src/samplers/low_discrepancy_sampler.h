@@ -12,11 +12,8 @@
 //   point 1 (the position in the pixel): dimensions 1 and 2, t <= 1;
 //   point 2 (the first vertex's emitter or BSDF sample): dimensions 0 and 6, t <= 1;
 //   point 3: dimensions 5 and 7, t <= 2.
-// Measured against the padded pattern below for all points: on the paper's simulation3 (BSDF
-// sampling) 3 %, 12 % and 40 % less variance per sample at 16, 64 and 256 spp, on simulation1
-// (emitter sampling) 2 %, 7 % and 38 %; on the neck patch under the paper's lights 0-2 %.
-// With dimensions 4 and 5 (t = 3 at 256 samples) for the first vertex's sample, simulation1 had
-// 19 % more variance at 256 spp than with the padded pattern instead.
+// The dimensions are chosen for the lowest t of the points that matter most (against the padded
+// pattern below for all points: docs/performance.md, "Sample patterns and wavelengths").
 //
 // Later points are padded (pbrt-v4's PaddedSobolSampler): each is the (0, 2)-sequence of
 // dimensions 0 and 1, scrambled with its own seed, and which sample index gets which of its points
@@ -26,16 +23,15 @@
 // 1D requests are served in pairs from one 2D point: a 1D request takes x of a new point and the
 // next 1D request, whenever it comes, takes its y. In a render the wavelengths (the first 1D
 // request) pair with the first vertex's component choice, which for the barbule BSDF is the point
-// across the cross-section: on simulation3, 15 % less variance per sample at 256 spp than
-// separate 1D sequences (Mitsuba's ldsampler) with the padded pattern.
+// across the cross-section, which lowers the variance against separate 1D sequences (Mitsuba's
+// ldsampler; docs/performance.md, "Sample patterns and wavelengths").
 //
 // Any aligned block of 2^k sample indices of the first four points is itself a net with the same
 // t (the sequence's property). For the padded points the progressive pattern
 // (withProgressivePattern) scrambles the index's bits from the most significant down in place of
 // the permutation, which maps every aligned block of 2^k sample indices onto an aligned block of
-// the sequence, a (0, k, 2)-net. It pairs the points less independently (3 % more variance per
-// sample on simulation3 with the padded pattern for all points), so only adaptive sampling, whose
-// pilot and rest are such blocks, uses it.
+// the sequence, a (0, k, 2)-net. It pairs the points less independently (a little more variance,
+// docs/performance.md), so only adaptive sampling, whose pilot and rest are such blocks, uses it.
 //
 // The renderer draws a pixel's samples one after another, and every sample asks for the same
 // first points: those are computed for all of the pixel's samples at once, the first time the

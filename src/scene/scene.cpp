@@ -17,8 +17,8 @@ namespace {
 // A ray can cross at most this many pass-through layers: bounds the work of a shadow ray in a
 // dense feather coat and guarantees termination.
 constexpr int kMaxPassThroughLayers = 256;
-// Up to this many analytic shapes are intersected in turn rather than through Embree. With one
-// rectangle (simulation1 and 3) that takes 10 % fewer instructions per sample.
+// Up to this many analytic shapes are intersected in turn rather than through Embree, which costs
+// more than a few exact tests (docs/performance.md, "Sample patterns and wavelengths").
 constexpr size_t kShapesTestedInTurn = 4;
 
 void throwOnEmbreeError(RTCDevice device) {
