@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/image.h"
 #include "render_test_support.h"
+#include "temp_dir_test.h"
 
 using namespace columba;
 using namespace columba::testing;
@@ -226,4 +228,34 @@ TEST(EstimatorAgreement, ShearedDiskIrradianceMatchesQuadrature) {
     EXPECT_NEAR(e.mean, expected, kSigmas * e.standardError + whiteTolerance * expected)
         << estimator.name << ": " << e.mean << " +- " << e.standardError << " against " << expected;
   }
+}
+
+namespace {
+class EstimatorAgreementAtInfinity : public TempDirTest {};
+}  // namespace
+
+// An emitter at infinity under the to_world it accepts (a rotation with a mirror): a map bright
+// in one corner of the sky, so that a direction mapped wrongly between sampling and lookup moves
+// light; every estimator of a diffuse plate's image agrees.
+TEST_F(EstimatorAgreementAtInfinity, EveryEstimatorAgreesUnderATurnedAndMirroredEnvmap) {
+  Image sky(32, 16);
+  for (int y = 0; y < sky.height; ++y)
+    for (int x = 0; x < sky.width; ++x)
+      for (int c = 0; c < 3; ++c) sky.rgb[3 * (size_t(y) * sky.width + x) + c] = (x < 8 && y < 6) ? 20.0f : 0.2f;
+  const std::string map = (dir_ / "sky.exr").string();
+  writeEXR(map, sky);
+  std::vector<Estimate> estimates;
+  for (const Estimator& estimator : kEstimators) {
+    const std::string xml = std::string(R"(<scene version="3.0.0">)") + estimator.integrator + kPerspective +
+                            R"(<shape type="rectangle"><transform name="to_world"><scale value="1.2"/></transform>)" +
+                            kDiffuseReceiver + R"(</shape>
+      <emitter type="envmap"><string name="filename" value=")" +
+                            map + R"("/><transform name="to_world"><rotate x="0.6" y="0" z="0.8" angle="70"/>
+        <scale x="-1"/></transform></emitter></scene>)";
+    estimates.push_back(meanLuminanceOverSeeds(xml, kSeeds, 90));
+  }
+  for (size_t k = 0; k < estimates.size(); ++k)
+    EXPECT_LT(standardErrorsApart(estimates[k], estimates[2]), kSigmas)
+        << kEstimators[k].name << " " << estimates[k].mean << " +- " << estimates[k].standardError << " against "
+        << estimates[2].mean << " +- " << estimates[2].standardError;
 }
