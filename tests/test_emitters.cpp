@@ -66,12 +66,20 @@ TEST(Emitter, EnvmapSampleRadianceOverPdfIntegratesTheMap) {
   EXPECT_NEAR(importance / n, uniform / n, 0.03 * uniform / n);
 }
 
-TEST(Emitter, UniformEnvmapIsAWhiteFurnace) {
-  auto dir = std::filesystem::temp_directory_path() / ("columba_env_" + std::to_string(::getpid()));
+namespace {
+// A directory of its own holding flat.exr, a 16 x 8 environment map of 0.6 everywhere.
+std::filesystem::path directoryWithFlatEnvironment(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   Image flat(16, 8);
   std::fill(flat.rgb.begin(), flat.rgb.end(), 0.6f);
   writeEXR((dir / "flat.exr").string(), flat);
+  return dir;
+}
+}  // namespace
+
+TEST(Emitter, UniformEnvmapIsAWhiteFurnace) {
+  const auto dir = directoryWithFlatEnvironment("columba_env");
   std::string xml = R"(<scene version="3.0.0"><integrator type="path"/>
       <sensor type="perspective"><float name="fov" value="30"/>
         <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
@@ -90,11 +98,7 @@ TEST(Emitter, UniformEnvmapIsAWhiteFurnace) {
 TEST(Emitter, AnEnvmapTurnsAndMirrorsButDoesNotScaleOrShear) {
   // Its directions are drawn with their density in the map's frame, which only a rigid to_world
   // keeps.
-  auto dir = std::filesystem::temp_directory_path() / ("columba_env_rigid_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  Image flat(16, 8);
-  std::fill(flat.rgb.begin(), flat.rgb.end(), 0.6f);
-  writeEXR((dir / "flat.exr").string(), flat);
+  const auto dir = directoryWithFlatEnvironment("columba_env_rigid");
   auto load = [&](const std::string& operations) {
     loadSceneString(R"(<scene version="3.0.0">
       <emitter type="envmap"><string name="filename" value=")" +
