@@ -178,6 +178,20 @@ TEST_F(CliTest, ASignalWhileTheSceneLoadsEndsTheRenderAtOnce) {
     EXPECT_EQ(entry.path().string().find(".partial."), std::string::npos) << entry.path();
 }
 
+TEST_F(CliTest, AnInterruptedFeatherGenerationLeavesNoFile) {
+  // Some minutes of writing; SIGINT after half a second (before the handlers, it kills the
+  // process before its file is begun).
+  const std::string out = (dir_ / "many.ply").string();
+  CommandResult r = runShell(std::string(COLUMBA_BINARY) + " feather --single --barbs 16000000 -o " + out +
+                             " & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo status=$?");
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+  r = run("feather --single --barbs 2000000000 -o " + out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("at most 16777215 barbs per side"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+}
+
 TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
   std::string scene = write("tiny.xml", kTinyScene);
   std::string out = (dir_ / "keep.exr").string();
