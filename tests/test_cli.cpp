@@ -156,6 +156,42 @@ TEST_F(CliTest, CtrlCIsAnsweredWithinASecondAtAnySampleCount) {
   EXPECT_LT(answeredSeconds(r), 1.0) << r.output;
 }
 
+TEST_F(CliTest, ASignalWhileTheSceneLoadsEndsTheRenderAtOnce) {
+  // Nested includes make the load long: 30 x 100 x 100 empty scenes read one after another (more
+  // than a minute on two cores), with nothing rendered yet to save.
+  auto includes = [](const std::string& file, int count) {
+    std::string xml = "<scene version=\"3.0.0\">\n";
+    for (int i = 0; i < count; ++i) xml += "<include filename=\"" + file + "\"/>\n";
+    return xml + "</scene>\n";
+  };
+  write("empty.xml", "<scene version=\"3.0.0\"/>\n");
+  write("hundred.xml", includes("empty.xml", 100));
+  write("ten_thousand.xml", includes("hundred.xml", 100));
+  std::string scene = write("slow_load.xml", includes("ten_thousand.xml", 30));
+  // A sweep names its frame before loading it, after the handlers are in place.
+  CommandResult r =
+      renderAndSignal(scene + " --sweep x=1,2 -o " + (dir_ / "slow.exr").string(), "TERM", 0.3, "^Frame 0 ");
+  EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+  EXPECT_LT(answeredSeconds(r), 1.0) << r.output;
+  EXPECT_EQ(r.output.find("Stopping"), std::string::npos) << r.output;
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().string().find(".partial."), std::string::npos) << entry.path();
+}
+
+TEST_F(CliTest, AnInterruptedFeatherGenerationLeavesNoFile) {
+  // Some minutes of writing; SIGINT after half a second (before the handlers, it kills the
+  // process before its file is begun).
+  const std::string out = (dir_ / "many.ply").string();
+  CommandResult r = runShell(std::string(COLUMBA_BINARY) + " feather --single --barbs 16000000 -o " + out +
+                             " & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo status=$?");
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+  r = run("feather --single --barbs 2000000000 -o " + out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("at most 16777215 barbs per side"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+}
+
 TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
   std::string scene = write("tiny.xml", kTinyScene);
   std::string out = (dir_ / "keep.exr").string();

@@ -3,6 +3,7 @@
 #include "bsdf_test_support.h"
 #include "bsdfs/conductor.h"
 #include "bsdfs/roughconductor.h"
+#include "optics/conductor_fresnel.h"
 #include "optics/conductor_materials.h"
 
 using namespace columba;
@@ -88,4 +89,29 @@ TEST(ConductorBSDF, MaterialNamesAreCheckedForBothConductors) {
   ASSERT_TRUE(s);
   EXPECT_NEAR(s->weight[0], normalReflectance(1.24, 2.397), 2e-3);
   EXPECT_NEAR(s->weight[2], normalReflectance(0.22, 3.747), 2e-3);
+}
+
+// A negative eta or k is no passive medium: eta -1, k 0 rendered pixels of 6e14, eta -5, k -5 an
+// albedo above 1.
+TEST(ConductorBSDF, NegativeOpticalConstantsAreRefusedNamingTheLine) {
+  for (const char* type : {"conductor", "roughconductor"}) {
+    for (const char* parameters : {R"(<float name="eta" value="-1"/><float name="k" value="0"/>)",
+                                   R"(<float name="eta" value="-5"/><float name="k" value="-5"/>)",
+                                   R"(<float name="eta" value="1.5"/><spectrum name="k" value="400:2, 700:-0.5"/>)",
+                                   R"(<rgb name="eta" value="0.2, -0.1, 0.3"/><float name="k" value="3"/>)"}) {
+      const std::string message = loadBSDFError(type, parameters);
+      EXPECT_NE(message.find(std::string(type) + ".xml:3"), std::string::npos) << message;
+      EXPECT_NE(message.find("cannot be negative"), std::string::npos) << message;
+    }
+  }
+}
+
+// eta = k = 0 (a black texel of both textures) divided by zero: the limit, total reflection.
+TEST(ConductorBSDF, AVanishingIndexReflectsEverything) {
+  for (float cosI : {1.0f, 0.5f, 0.01f}) EXPECT_EQ(fresnelConductor(cosI, 0.0f, 0.0f), 1.0f) << cosI;
+  const Wavelengths wl = Wavelengths::fixed({450.0f, 550.0f, 650.0f, 750.0f});
+  auto mirror = loadBSDF("conductor", R"(<float name="eta" value="0"/><float name="k" value="0"/>)");
+  auto s = mirror->sample(kContext, normalize(Vec3(0.3f, 0.0f, 1.0f)), wl, 0.5f, Vec2(0.5f, 0.5f));
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->weight[0], 1.0f);
 }

@@ -97,6 +97,39 @@ TEST_F(FeatherGeneratorTest, UnwritableOutputLeavesNothingBehind) {
   EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(file).parent_path()));
 }
 
+// Beyond what a PLY's 32-bit vertex numbers reach, refused before anything is laid out or written
+// (a single feather of 2e9 barbs grew its file without end, a neck of 1e8 feathers ran out of
+// memory laying them out).
+TEST_F(FeatherGeneratorTest, MoreFacesThanAFeatherPlyHoldsAreRefused) {
+  FeatherGenerationOptions single;
+  single.barbsPerSide = 2000000000;
+  std::string file = path("big.ply");
+  try {
+    generateFeatherPly(single, file);
+    ADD_FAILURE() << "2e9 barbs per side were accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 16777215 barbs per side"), std::string::npos) << e.what();
+  }
+  single.barbsPerSide = int(kMaxFeatherFaces / 2 + 1);
+  EXPECT_THROW(generateFeatherPly(single, file), std::invalid_argument);
+  try {
+    generateFeatherPly(neckOptions(100000000, 0, 1), file);
+    ADD_FAILURE() << "1e8 feathers were accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("100000000 feathers"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir()));
+}
+
+TEST_F(FeatherGeneratorTest, ACancelledGenerationLeavesNoFile) {
+  std::atomic<bool> cancel{true};
+  FeatherGenerationOptions o = neckOptions(4, 10, 1);
+  o.cancel = &cancel;
+  FeatherGenerationSummary s = generateFeatherPly(o, path("cancelled.ply"));
+  EXPECT_FALSE(s.written);
+  EXPECT_TRUE(std::filesystem::is_empty(dir()));
+}
+
 TEST_F(FeatherGeneratorTest, NeckFeathersOverlapLikeRoofTiles) {
   const int feathers = 30, barbs = 12;
   std::string file = path("neck.ply");

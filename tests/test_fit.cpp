@@ -221,6 +221,18 @@ TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
               r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.values[1], r.fit.evaluations);
 }
 
+// As spreadsheet programs save CSV: "the header has no column 'theta_i'".
+TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("columba_bom_" + std::to_string(getpid()) + ".csv")).string();
+  std::ofstream(path) << "\xEF\xBB\xBFtheta_i,phi_i,theta_o,phi_o,wavelength_nm,reflectance\n10,0,10,180,500,0.25\n";
+  std::vector<SpectraSample> samples = readSpectraCSV(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(samples.size(), 1u);
+  EXPECT_EQ(samples[0].thetaI, 10.0f);
+  EXPECT_EQ(samples[0].reflectance, 0.25f);
+}
+
 TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
   std::vector<SpectraSample> samples;
   for (float lambda = 400.0f; lambda <= 700.0f; lambda += 10.0f)

@@ -173,6 +173,17 @@ TEST(HostileScenes, NegativeEmissionIsRejected) {
             "");
 }
 
+// As spreadsheet programs save text: line 1 was "invalid number '<BOM>400' for the wavelength".
+TEST_F(HostileSceneFiles, ASpectrumFileMayStartWithAByteOrderMark) {
+  std::string file = write("bom.spd",
+                           "\xEF\xBB\xBF"
+                           "400 1\n500 2\n");
+  EXPECT_EQ(loadError("<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<spectrum name=\"radiance\" "
+                      "filename=\"" +
+                      file + "\"/>\n</emitter>\n</scene>\n"),
+            "");
+}
+
 TEST_F(HostileSceneFiles, NegativeEmissionFromAFileIsRejected) {
   std::string file = write("light.spd", "400 1\n500 -2\n");
   std::string message = loadError(

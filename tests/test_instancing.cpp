@@ -347,3 +347,24 @@ TEST(Instancing, AnInstanceNeedsExactlyOneGroup) {
     <shape type="instance"><ref id="nowhere"/></shape>)"),
                  {"<test>:2", "unknown id 'nowhere'"});
 }
+
+// Embree inverts an instance's matrix in single precision and aborts on rays beyond its range in
+// the group's space: a scale of 1e-20 (and already 1e-16, whose determinant is 0 as a float)
+// aborted the render.
+TEST(Instancing, TransformsEmbreeCannotTraceThroughAreRefusedNamingTheLine) {
+  auto instance = [](const std::string& steps) {
+    return std::string(kUnitSphereGroup) +
+           "\n<shape type=\"instance\"><ref id=\"ball\"/>\n<transform name=\"to_world\">" + steps +
+           "</transform></shape>";
+  };
+  for (const char* steps :
+       {R"(<scale value="1e-20"/>)", R"(<scale value="1e-16"/>)", R"(<scale z="1e-40"/>)", R"(<scale value="1e13"/>)"})
+    expectContains(loadError(instance(steps)), {"<test>:3", "'instance'", "to_world", "determinant"});
+  expectContains(loadError(instance(R"(<scale value="3e-13"/>)")), {"<test>:3", "to_world", "beyond"});
+  expectContains(loadError(instance(R"(<translate x="1e19"/>)")), {"<test>:3", "to_world", "beyond"});
+  // Small but traceable: hit where the scaled sphere is.
+  auto scene = sceneWith(instance(R"(<scale value="1e-12"/>)"));
+  auto hit = scene->intersect(Ray{Vec3(0, 0, 1), Vec3(0, 0, -1)});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 1.0f, 1e-6f);
+}

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <memory>
+#include "app/interruption.h"
 #include "feather/feather_generator.h"
 
 namespace columba {
@@ -34,7 +35,12 @@ void addFeatherCommand(CLI::App& app) {
     if (settings->single == settings->neck) throw CLI::ValidationError("feather", "choose one of --single or --neck");
     settings->options.neck = settings->neck;
     auto start = std::chrono::steady_clock::now();
+    // Ctrl-C stops at the next barb and removes the unfinished file.
+    InterruptionGuard interruption("\nStopping: removing the unfinished file (interrupt again to quit at once)\n");
+    interruption.deferStops();
+    settings->options.cancel = &interruption.requested();
     FeatherGenerationSummary s = generateFeatherPly(settings->options, settings->output);
+    if (!s.written) throw CLI::RuntimeError(128 + interruption.signalNumber());
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     fmt::print(
         "wrote {}: {} feather{}, {} barbs, {} faces, {} vertices in {:.2f} s; barbs lie edge to edge at "

@@ -11,28 +11,31 @@ namespace columba {
 namespace {
 
 // Signal handlers can only reach globals; lock-free atomics are safe to use in them.
-std::atomic<bool> stopRequested{false};
+std::atomic<bool> stopRequested{false}, stopsDeferred{false};
 std::atomic<int> firstSignal{0};
+const char* stoppingMessage = "";
+size_t stoppingLength = 0;
 struct sigaction previousInterrupt, previousTerminate;
 bool guardAlive = false;
 
 extern "C" void onStopSignal(int signal) {
-  if (stopRequested.exchange(true)) _exit(128 + signal);  // the second signal: no more waiting
+  // Before the work has anything to save, and at a second signal: no waiting.
+  if (!stopsDeferred || stopRequested.exchange(true)) _exit(128 + signal);
   firstSignal = signal;
-  const char message[] =
-      "\nStopping: finishing the current samples and saving the partial image "
-      "(interrupt again to quit at once)\n";
-  ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  ssize_t ignored = ::write(STDERR_FILENO, stoppingMessage, stoppingLength);
   (void)ignored;
 }
 
 }  // namespace
 
-InterruptionGuard::InterruptionGuard() {
+InterruptionGuard::InterruptionGuard(const char* stopping) {
   if (guardAlive) throw std::logic_error("only one InterruptionGuard may be alive at a time");
   guardAlive = true;
   stopRequested = false;
+  stopsDeferred = false;
   firstSignal = 0;
+  stoppingMessage = stopping;
+  stoppingLength = std::strlen(stopping);
   struct sigaction action;
   std::memset(&action, 0, sizeof action);
   action.sa_handler = onStopSignal;
@@ -45,8 +48,13 @@ InterruptionGuard::InterruptionGuard() {
 InterruptionGuard::~InterruptionGuard() {
   sigaction(SIGINT, &previousInterrupt, nullptr);
   sigaction(SIGTERM, &previousTerminate, nullptr);
+  stopsDeferred = false;
   guardAlive = false;
 }
+
+void InterruptionGuard::deferStops() { stopsDeferred = true; }
+
+void InterruptionGuard::stopAtOnce() { stopsDeferred = false; }
 
 const std::atomic<bool>& InterruptionGuard::requested() const { return stopRequested; }
 

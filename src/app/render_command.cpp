@@ -161,8 +161,12 @@ int runRender(const RenderOptions& options) {
     writeManifest(manifestPath, manifest);
   }
 
-  // Kept until the last image is written: a second Ctrl-C while writing exits at once.
-  InterruptionGuard interruption;
+  // Kept until the last image is written. Stops are deferred from the start of each frame's render
+  // to its image on disk: a signal while a scene loads ends the process at once, and a second
+  // Ctrl-C while writing exits at once.
+  InterruptionGuard interruption(
+      "\nStopping: finishing the current samples and saving the partial image "
+      "(interrupt again to quit at once)\n");
   OverallProgress overall;
   overall.total = int(selected.size());
   overall.start = std::chrono::steady_clock::now();
@@ -241,6 +245,7 @@ int runRender(const RenderOptions& options) {
                               sweeping ? &overall : nullptr);
     settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
     settings.cancel = &interruption.requested();
+    interruption.deferStops();
     RenderStats stats;
     Image image = renderImage(scene, settings, stats);
     progress.finish();
@@ -285,6 +290,9 @@ int runRender(const RenderOptions& options) {
       writeManifest(manifestPath, manifest);
     }
     if (!stats.complete) return 128 + interruption.signalNumber();
+    interruption.stopAtOnce();
+    // A signal while the finished frame was written: the next frame is not begun.
+    if (interruption.requested()) return 128 + interruption.signalNumber();
     if (sweeping && selected.size() > 1) {
       overall.done = int(i) + 1;
       fmt::print(stderr, "Frame {} done in {}; {} of {} frames, {}\n", f, formatDuration(stats.seconds), i + 1,

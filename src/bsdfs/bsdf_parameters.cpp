@@ -65,8 +65,9 @@ std::optional<ConductorIndexParameter> readConductorIndex(const Properties& prop
   const bool textured = props.namedChild<Texture>("eta") || props.namedChild<Texture>("k");
   if (props.has("eta") || props.has("k") || textured) {
     if (material != "none") throw props.error("material", "give either a material or eta and k, not both");
-    return ConductorIndexParameter{readSpectrumParameter(props, "eta", 0.0f, SpectrumUse::Unbounded),
-                                   readSpectrumParameter(props, "k", 1.0f, SpectrumUse::Unbounded)};
+    // A negative eta or k is no passive medium: eta -1, k 0 reflected 6e14 times the light.
+    return ConductorIndexParameter{readSpectrumParameter(props, "eta", 0.0f, SpectrumUse::NonNegative),
+                                   readSpectrumParameter(props, "k", 1.0f, SpectrumUse::NonNegative)};
   }
   if (material == "none") return std::nullopt;
   std::optional<ConductorIndex> measured = conductorIndex(material);

@@ -30,7 +30,8 @@ struct ConductorIndexParameter {
 };
 
 // `material` (a measured metal, or "none", the default: a perfect mirror, returned as nullopt) or
-// `eta` (default 0) and `k` (default 1), each a spectrum or a texture; not both.
+// `eta` (default 0) and `k` (default 1), each a spectrum or a texture; not both. InputError for a
+// negative eta or k.
 std::optional<ConductorIndexParameter> readConductorIndex(const Properties& props);
 
 // `specular` (specular_reflectance at the path's wavelengths) times the conductor's Fresnel

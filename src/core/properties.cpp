@@ -139,14 +139,14 @@ std::string Properties::getPath(const std::string& name) const {
 
 SpectralDistribution Properties::getSpectrum(const std::string& name, float def, SpectrumUse use) const {
   const Value* v = find(name, {Kind::Float, Kind::Integer, Kind::Spectrum}, "a <float>, <spectrum> or <rgb>");
-  if (use == SpectrumUse::Emission && v) {
+  if ((use == SpectrumUse::Emission || use == SpectrumUse::NonNegative) && v) {
     const float lowest = v->kind != Kind::Spectrum ? float(v->number)
                          : v->isRGB                ? std::min({v->rgb.x, v->rgb.y, v->rgb.z})
                                                    : v->lowest;
     if (lowest < 0.0f)
-      throw InputError(v->location, fmt::format("parameter '{}' of {} is emitted light and cannot be negative "
-                                                "(its lowest value is {:g})",
-                                                name, element(), lowest));
+      throw InputError(v->location,
+                       fmt::format("parameter '{}' of {} {}cannot be negative (its lowest value is {:g})", name,
+                                   element(), use == SpectrumUse::Emission ? "is emitted light and " : "", lowest));
   }
   // Mitsuba's convention: a single value or a colour given for an emitter is an illuminant (D65
   // scaled to that luminance, or the colour's spectrum times D65); a tabulated spectrum is taken

@@ -15,8 +15,9 @@ namespace columba {
 
 // How a spectrum parameter is used: reflectances are clamped to [0, 1] when given as RGB;
 // emission may exceed 1, and a single value or an RGB colour for it is an illuminant (times D65,
-// as Mitsuba reads emitters); unbounded values (indices of refraction) are taken as given.
-enum class SpectrumUse { Reflectance, Emission, Unbounded };
+// as Mitsuba reads emitters); unbounded values (indices of refraction) are taken as given, and
+// non-negative ones (a conductor's optical constants) too, but refused below zero, as emission is.
+enum class SpectrumUse { Reflectance, Emission, Unbounded, NonNegative };
 
 class Properties {
  public:

@@ -1,5 +1,7 @@
 #include "feather/feather_generator.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include "core/rng.h"
 #include "feather/feather_design.h"
@@ -62,9 +64,10 @@ class VaneMapping {
 
 float symmetricJitter(PCG32& rng) { return 2.0f * rng.nextFloat() - 1.0f; }
 
-// The rachis first, then the barbs of one side and of the other, each as one face.
-void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const NeckColouring* colouring,
-                  uint64_t seed, FeatherPlyWriter& writer) {
+// The rachis first, then the barbs of one side and of the other, each as one face; false when
+// `cancel` stopped it.
+bool writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const NeckColouring* colouring,
+                  uint64_t seed, const std::atomic<bool>* cancel, FeatherPlyWriter& writer) {
   PCG32 rng(seed, 0x66656174ULL);
   BarbVertex vertices[kBarbVertices];
   auto write = [&](const std::array<Vec2, kBarbVertices>& polyline, float barbuleH, float thicknessOffset) {
@@ -86,6 +89,7 @@ void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
   write(rachisPolyline(design), kBarbuleH, 0.0f);
   for (int side : {-1, 1}) {
     for (int b = 0; b < design.barbsPerSide; ++b) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return false;
       float lengthScale = 1.0f + 0.05f * symmetricJitter(rng);
       float angleOffset = 0.035f * symmetricJitter(rng);
       float barbuleH = kBarbuleH * (1.0f + 0.04f * symmetricJitter(rng));
@@ -93,6 +97,7 @@ void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
       write(barbPolyline(design, side, b, lengthScale, angleOffset), barbuleH, thicknessOffset);
     }
   }
+  return true;
 }
 
 }  // namespace
@@ -100,6 +105,13 @@ void writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
 FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path) {
   if (options.neck && options.feathers < 1) throw std::invalid_argument("a neck needs at least one feather");
   if (options.barbsPerSide < 0) throw std::invalid_argument("the number of barbs per side cannot be negative");
+  // Every feather is at least a rachis and a barb on each side; checked before the neck's layout,
+  // which takes memory by the feather.
+  if (options.neck && size_t(options.feathers) > kMaxFeatherFaces / 3)
+    throw std::invalid_argument(
+        fmt::format("{} feathers are too many: a feather PLY holds at most {} faces, 3 or "
+                    "more to a feather, so at most {} feathers",
+                    options.feathers, kMaxFeatherFaces, kMaxFeatherFaces / 3));
   const float barbWidth = FeatherShapeParams().barbWidth;
 
   FeatherDesign design;
@@ -124,13 +136,22 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
   summary.faces = summary.barbs + summary.feathers;
   summary.vertices = summary.faces * kBarbVertices;
   summary.tilingBarbWidth = barbSpacing(design) / meanWidth;
+  if (summary.faces > kMaxFeatherFaces)
+    throw std::invalid_argument(
+        fmt::format("{} barbs per side make {} faces, more than the {} a feather PLY holds "
+                    "(at most {} barbs per side for {} feather{})",
+                    design.barbsPerSide, summary.faces, kMaxFeatherFaces, (kMaxFeatherFaces / summary.feathers - 1) / 2,
+                    summary.feathers, summary.feathers == 1 ? "" : "s"));
 
   NeckSurface neck;
   NeckColouring colouring(options.seed);
   FeatherPlyWriter writer(path, options.binary, summary.faces, summary.tilingBarbWidth);
   for (const FeatherPlacement& placement : layout.feathers) {
     VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
-    writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, writer);
+    if (!writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, options.cancel, writer)) {
+      summary.written = false;  // the writer removes its temporary file
+      return summary;
+    }
   }
   writer.commit();
   return summary;

@@ -17,10 +17,16 @@
 // The vane normal is that of the feather's surface (the neck, the feather's pitch and its
 // slight dome across the vane). The header records the barbwidth at which neighbouring barbs lie
 // edge to edge (`comment barbwidth W`), which the feather shape uses when the scene sets none.
+#include <atomic>
 #include <cstdint>
 #include <string>
+#include "shapes/feather_ply.h"
 
 namespace columba {
+
+// The most faces (rachises and barbs) a file may hold: a feather PLY numbers its vertices with
+// 32-bit signed integers, kBarbVertices to a face (2^25 faces, 2^31 vertices; some 77 GB binary).
+inline constexpr size_t kMaxFeatherFaces = (size_t(1) << 31) / kBarbVertices;
 
 struct FeatherGenerationOptions {
   bool neck = false;
@@ -28,6 +34,7 @@ struct FeatherGenerationOptions {
   int barbsPerSide = 0;  // 0: as many as lie edge to edge at the feather shape's default barbwidth
   uint64_t seed = 1;
   bool binary = false;
+  const std::atomic<bool>* cancel = nullptr;  // when set, the generation stops at the next barb
 };
 
 struct FeatherGenerationSummary {
@@ -35,10 +42,13 @@ struct FeatherGenerationSummary {
   size_t faces = 0, vertices = 0;  // in the PLY: every barb and every rachis
   // The `barbwidth` at which neighbouring (tapering) barbs lie edge to edge, in PLY units.
   float tilingBarbWidth = 0;
+  bool written = true;  // false when cancelled: there is no file
 };
 
-// Writes the PLY to `path` (atomically: a temporary file renamed when complete). Memory use
-// does not grow with the number of feathers or barbs.
+// Writes the PLY to `path` (atomically: a temporary file renamed when complete, removed when the
+// generation fails or is cancelled). Memory use does not grow with the number of barbs, and by
+// some 40 bytes per feather of a neck. Throws std::invalid_argument for negative counts, a neck
+// without feathers or more than kMaxFeatherFaces faces.
 FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path);
 
 inline constexpr float kGreenCortexThickness = 0.60f;   // um

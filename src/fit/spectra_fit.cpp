@@ -11,6 +11,7 @@
 
 #include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/barbule_measurement.h"
+#include "core/byte_order_mark.h"
 #include "core/error.h"
 #include "core/math.h"
 
@@ -37,6 +38,7 @@ bool sameDirections(const SpectraSample& a, const SpectraSample& b) {
 std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError({path, 0}, "cannot open the spectra file");
+  skipByteOrderMark(in);
   static const std::array<const char*, 6> names = {"theta_i", "phi_i",         "theta_o",
                                                    "phi_o",   "wavelength_nm", "reflectance"};
   std::array<size_t, 6> column{};

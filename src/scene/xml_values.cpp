@@ -8,6 +8,8 @@
 #include <fstream>
 #include <limits>
 
+#include "core/byte_order_mark.h"
+
 namespace columba {
 
 namespace {
@@ -126,6 +128,7 @@ GivenSpectrum readSpectrumFile(const std::string& path, const std::string& what,
                               (std::filesystem::exists(path, ec) ? "" : " (it does not exist)"));
   std::ifstream in(path);
   if (!in) throw InputError(loc, "cannot open spectrum file '" + path + "' for " + what);
+  skipByteOrderMark(in);
   std::vector<float> lambdas, values;
   std::string line;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {

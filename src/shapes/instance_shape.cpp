@@ -1,6 +1,59 @@
 #include "shapes/instance_shape.h"
 
+#include <fmt/format.h>
+
+#include <cfloat>
+#include <cmath>
+#include <optional>
+
 namespace columba {
+
+namespace {
+
+// Embree traces a group through an instance in single precision: it inverts the float matrix (its
+// 3x3 part by the adjugate over the determinant) and aborts the process on a ray whose
+// coordinates in the group's space exceed FLT_LARGE.
+constexpr double kEmbreeLargest = 1.844e18;  // Embree's FLT_LARGE
+// The world coordinates (in magnitude) up to which an instance's rays must stay within that range.
+constexpr double kWorldReach = 1e6;
+
+// Why Embree cannot trace through `toWorld`, if it cannot.
+std::optional<std::string> embreeInstanceProblem(const Matrix4& toWorld) {
+  double a[3][3], translation = 0.0;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) a[r][c] = double(float(toWorld.m[r][c]));
+    translation = std::max(translation, std::abs(double(float(toWorld.m[r][3]))));
+  }
+  // The adjugate: cofactors, transposed.
+  double adj[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      adj[r][c] = a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1];
+    }
+  const double det = a[0][0] * adj[0][0] + a[0][1] * adj[1][0] + a[0][2] * adj[2][0];
+  double largestMinor = 0.0;
+  for (const auto& row : adj)
+    for (double v : row) largestMinor = std::max(largestMinor, std::abs(v));
+  if (!(std::abs(det) >= FLT_MIN && std::abs(det) <= FLT_MAX && largestMinor <= FLT_MAX))
+    return fmt::format(
+        "its 3x3 part has determinant {:g}, which Embree's single-precision inverse cannot take "
+        "(it needs {:g} to {:g} in magnitude)",
+        det, FLT_MIN, FLT_MAX);
+  // How far a world point within kWorldReach of the origin can lie from the group's origin.
+  double magnification = 0.0;
+  for (const auto& row : adj)
+    magnification = std::max(magnification, (std::abs(row[0]) + std::abs(row[1]) + std::abs(row[2])) / std::abs(det));
+  const double reach = magnification * (kWorldReach + translation);
+  if (reach > kEmbreeLargest)
+    return fmt::format(
+        "it shrinks the group so much that world points within {:g} of the origin would lie up to "
+        "{:g} away in the group's space, beyond the {:g} Embree can trace",
+        kWorldReach, reach, kEmbreeLargest);
+  return std::nullopt;
+}
+
+}  // namespace
 
 unsigned InstanceShape::addToEmbree(RTCDevice device, RTCScene scene) const {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -40,6 +93,8 @@ std::shared_ptr<Object> makeInstanceShape(const Properties& props) {
   const auto& m = toWorld.matrix().m;
   if (m[3][0] != 0.0 || m[3][1] != 0.0 || m[3][2] != 0.0 || m[3][3] != 1.0)
     throw props.error("to_world", "an instance's transform must be affine (last row 0, 0, 0, 1)");
+  if (std::optional<std::string> problem = embreeInstanceProblem(toWorld.matrix()))
+    throw props.error("to_world", "the transform is degenerate: " + *problem);
   return std::make_shared<InstanceShape>(groups.front(), toWorld);
 }
 
