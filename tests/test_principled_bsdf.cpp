@@ -345,7 +345,7 @@ TEST(Principled, AVertexsQueriesAreTheSeparateCalls) {
     auto bsdf = loadBSDF(type, textures);
     ASSERT_TRUE(bsdf) << type;
     for (Vec2 uv : {Vec2(0.25f, 0.25f), Vec2(0.75f, 0.25f)}) {
-      const BSDFContext ctx{nullptr, uv, Vec3(), Vec3()};
+      const BSDFContext ctx{uv, Vec3(), Vec3()};
       for (const Vec3& wi : {directionAt(35.0f), directionAt(140.0f, 20.0f)}) {
         const Vec3 wo = directionAt(50.0f, 160.0f);
         BSDFVertexRequest request;
