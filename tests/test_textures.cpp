@@ -314,8 +314,7 @@ TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
     auto rough = bsdfOf(type, "<float name=\"alpha\" value=\"0.4\"/>");
     auto smooth = bsdfOf(type, "<float name=\"alpha\" value=\"0.05\"/>");
     ASSERT_TRUE(textured && rough && smooth) << type;
-    const BSDFContext inColor0{nullptr, Vec2(0.25f, 0.25f), Vec3(), Vec3()},
-        inColor1{nullptr, Vec2(0.75f, 0.25f), Vec3(), Vec3()};
+    const BSDFContext inColor0{Vec2(0.25f, 0.25f), Vec3(), Vec3()}, inColor1{Vec2(0.75f, 0.25f), Vec3(), Vec3()};
     for (const Vec3& out : {wo, below}) {
       EXPECT_FLOAT_EQ(textured->eval(inColor0, wi, out, wl)[0], rough->eval(inColor0, wi, out, wl)[0]) << type;
       EXPECT_FLOAT_EQ(textured->eval(inColor1, wi, out, wl)[0], smooth->eval(inColor1, wi, out, wl)[0]) << type;
