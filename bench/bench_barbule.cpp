@@ -90,7 +90,7 @@ void BM_BarbuleEvalOverrides(benchmark::State& state) {
   point.set(kBarbuleSpacingAttribute, 1.4f);
   point.set(kBarbuleTiltAttribute, -0.3f);
   point.set(kCortexThicknessAttribute, 0.62f);
-  const BSDFContext ctx{&point, Vec2(), Vec3(), Vec3()};
+  const BSDFContext ctx{TexturePoint(Vec2(), &point), Vec3(), Vec3()};
   size_t i = 0;
   for (auto _ : state) {
     const Query& x = q[i++ & 4095];

@@ -583,7 +583,7 @@ TEST(BarbuleBSDF, CombinedQueriesMatchTheSeparateOnes) {
   SurfaceAttributes point;
   point.set(kBarbuleSpacingAttribute, 1.6f);
   point.set(kBarbuleTiltAttribute, -0.2f);
-  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point, Vec2(), Vec3(), Vec3()}})
+  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{TexturePoint(Vec2(), &point), Vec3(), Vec3()}})
     for (auto role : {BarbuleBSDF::Role::CameraIncident, BarbuleBSDF::Role::LightIncident}) {
       BarbuleBSDF bsdf(reference(0.58f), role);
       PCG32 rng(37);
@@ -665,7 +665,7 @@ TEST(BarbuleBSDF, ResamplingTargetsArePositiveWhereverTheValueIsAndTheChosenOneI
   SurfaceAttributes point;
   point.set(kBarbuleSpacingAttribute, 1.6f);
   point.set(kBarbuleTiltAttribute, -0.2f);
-  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{&point, Vec2(), Vec3(), Vec3()}}) {
+  for (const BSDFContext& ctx : {BSDFContext{}, BSDFContext{TexturePoint(Vec2(), &point), Vec3(), Vec3()}}) {
     BarbuleBSDF bsdf(reference(0.58f));
     ASSERT_TRUE(bsdf.hasCheapResamplingTargets());
     PCG32 rng(43);
@@ -760,7 +760,7 @@ TEST(BarbuleBSDF, PerPointOverridesActLikeTheParameters) {
   point.set(kBarbuleSpacingAttribute, 1.6f);
   point.set(kBarbuleTiltAttribute, -0.2f);
   point.set(kCortexThicknessAttribute, 0.63f);
-  const BSDFContext ctx{&point, Vec2(), Vec3(), Vec3()};
+  const BSDFContext ctx{TexturePoint(Vec2(), &point), Vec3(), Vec3()};
   BarbuleParameters changed = base;
   changed.H = 1.6f;
   changed.mu = -0.2f;

@@ -706,7 +706,7 @@ TEST(BarbuleReference, PerPointOverridesMatchTheReferenceOfThoseParameters) {
     point.set(kBarbuleTiltAttribute, p.mu);
     point.set(kBarbuleSpacingAttribute, p.H);
     point.set(kCortexThicknessAttribute, p.height);
-    const BSDFContext ctx{&point, Vec2(), Vec3(), Vec3()};
+    const BSDFContext ctx{TexturePoint(Vec2(), &point), Vec3(), Vec3()};
     Case c = makeCase(p, -1.0f, "override");
     ref::BarbuleReference model(c.model);
     Vec3 wi = upperHemisphere(rng), wo = i % 2 ? uniformSphere(rng) : mirroredAboutALitNormal(rng, model, p.mu, wi);

@@ -81,7 +81,7 @@ TEST_F(BumpMap, ARampTiltsTheNormalAsTheDisplacedSurfaceDoes) {
   // derivatives are (2, 0, 2 s) and (0, 2, 0): the normal is (-s, 0, 1) / sqrt(1 + s^2).
   const float scale = 0.5f;
   BumpMapBSDF bumped(std::make_shared<DiffuseBSDF>(SpectralDistribution::constant(0.5f)), ramp(), scale);
-  BSDFContext ctx{nullptr, Vec2(0.5f, 0.5f), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  BSDFContext ctx{Vec2(0.5f, 0.5f), Vec3(2, 0, 0), Vec3(0, 2, 0)};
   const Vec3 n = normalize(Vec3(-scale, 0, 1));
   expectNear(bumped.perturbedFrame(ctx).n, n, 1e-5f, "normal");
   const Wavelengths wl = testWavelengths();
@@ -89,7 +89,7 @@ TEST_F(BumpMap, ARampTiltsTheNormalAsTheDisplacedSurfaceDoes) {
   for (Vec3 wo : {directionAt(40, 180), directionAt(30, 90), directionAt(20, 0)})
     EXPECT_NEAR(bumped.eval(ctx, wi, wo, wl)[0], 0.5f * kInvPi * std::max(0.0f, dot(wo, n)), 1e-6f);
   // Without position derivatives (a shape that gives none) the frame is left as it is.
-  expectNear(bumped.perturbedFrame(BSDFContext{nullptr, Vec2(0.5f, 0.5f), Vec3(), Vec3()}).n, Vec3(0, 0, 1), 0.0f,
+  expectNear(bumped.perturbedFrame(BSDFContext{Vec2(0.5f, 0.5f), Vec3(), Vec3()}).n, Vec3(0, 0, 1), 0.0f,
              "no derivatives");
 }
 
@@ -98,7 +98,7 @@ TEST_F(BumpMap, SamplingMatchesThePdf) {
   // chiSquareBSDF evaluates at uv = (0, 0) with no derivatives given: use a context-carrying wrapper.
   struct AtPoint : BSDF {
     const BSDF& inner;
-    BSDFContext ctx{nullptr, Vec2(0.5f, 0.5f), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+    BSDFContext ctx{Vec2(0.5f, 0.5f), Vec3(2, 0, 0), Vec3(0, 2, 0)};
     explicit AtPoint(const BSDF& b) : inner(b) {}
     Spectrum eval(const BSDFContext&, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const override {
       return inner.eval(ctx, wi, wo, wl);

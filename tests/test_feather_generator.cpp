@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -224,4 +226,68 @@ TEST_F(FeatherGeneratorTest, GeneratedFeatherLoadsFromASceneFile) {
     EXPECT_NE(std::string(e.what()).find("feather.xml:4"), std::string::npos) << e.what();
   }
   EXPECT_THROW(load("  <float name='barbwidht' value='0.01'/>\n"), InputError);
+}
+
+TEST_F(FeatherGeneratorTest, ColourOptionsReachTheFile) {
+  auto heights = [](const std::string& file) {
+    FeatherPlyData ply = readFeatherPly(file);
+    return std::pair(*std::min_element(ply.barbuleHeight.begin(), ply.barbuleHeight.end()),
+                     *std::max_element(ply.barbuleHeight.begin(), ply.barbuleHeight.end()));
+  };
+  FeatherGenerationOptions single;
+  single.barbsPerSide = 10;
+  single.greenHeight = 0.45f;
+  generateFeatherPly(single, path("thin.ply"));
+  auto [thinLo, thinHi] = heights(path("thin.ply"));
+  EXPECT_GE(thinLo, 0.45f - kBarbThicknessSpread - 1e-6f);
+  EXPECT_LE(thinHi, 0.45f + kBarbThicknessSpread + 1e-6f);
+  // Each feather's spread comes on top of the barbs'.
+  FeatherGenerationOptions neck = neckOptions(12, 4, 5);
+  neck.greenHeight = 0.66f, neck.purpleHeight = 0.48f, neck.heightSpread = 0.03f;
+  generateFeatherPly(neck, path("neck.ply"));
+  auto [lo, hi] = heights(path("neck.ply"));
+  EXPECT_GE(lo, 0.48f - 0.03f - kBarbThicknessSpread - 1e-6f);
+  EXPECT_LT(lo, 0.48f - kBarbThicknessSpread);  // some feather thinner than any barb's spread
+  EXPECT_LE(hi, 0.66f + 0.03f + kBarbThicknessSpread + 1e-6f);
+  EXPECT_GT(hi, 0.66f + kBarbThicknessSpread);
+  // Purple from the top of the neck down, sharply: every barbule at the purple thickness.
+  FeatherGenerationOptions purple = neckOptions(6, 3, 5);
+  purple.purpleBelow = -10.0f, purple.colourBlend = 0.0f;
+  generateFeatherPly(purple, path("purple.ply"));
+  auto [pLo, pHi] = heights(path("purple.ply"));
+  EXPECT_GE(pLo, kPurpleCortexThickness - kBarbThicknessSpread - 1e-6f);
+  EXPECT_LE(pHi, kPurpleCortexThickness + kBarbThicknessSpread + 1e-6f);
+  // The defaults write what the generator always wrote: the same file as without the options.
+  FeatherGenerationOptions defaults = neckOptions(6, 3, 5), given = defaults;
+  given.greenHeight = kGreenCortexThickness, given.purpleHeight = kPurpleCortexThickness;
+  generateFeatherPly(defaults, path("a.ply"));
+  generateFeatherPly(given, path("b.ply"));
+  EXPECT_EQ(contents(path("a.ply")), contents(path("b.ply")));
+}
+
+TEST_F(FeatherGeneratorTest, ColourOptionsThatMakeNoFeathersAreErrors) {
+  auto message = [&](FeatherGenerationOptions o) {
+    try {
+      generateFeatherPly(o, path("bad.ply"));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  FeatherGenerationOptions o;
+  o.greenHeight = -0.1f;
+  EXPECT_NE(message(o).find("the height must be a number of micrometres, at least 0, not -0.1"), std::string::npos);
+  o = FeatherGenerationOptions();
+  o.heightSpread = 0.7f;
+  EXPECT_NE(message(o).find("a height spread of 0.7 um"), std::string::npos) << message(o);
+  o = neckOptions(4, 3, 1);
+  o.colourBlend = std::nanf("");
+  EXPECT_NE(message(o).find("colour blend"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(path("bad.ply")));
+  // The neck's options need a neck.
+  CLI::App app("columba");
+  addFeatherCommand(app);
+  std::vector<std::string> args = {"feather", "--single", "--purple-height", "0.5", "-o", path("x.ply")};
+  std::reverse(args.begin(), args.end());
+  EXPECT_THROW(app.parse(args), CLI::ParseError);
 }

@@ -101,8 +101,21 @@ TEST(FeatherReferenceConvention, ZeroTiltOrThicknessLeavesTheBsdfsOwn) {
   auto hit = hitAt(scene, shape, 20, 0.5f, 0.5f * edgeAngle(s, 0.5f));
   ASSERT_TRUE(hit.has_value());
   EXPECT_NEAR(attribute(hit->second, "H"), 1.0f, 1e-6f);
-  EXPECT_FALSE(hit->second.attributes.find(kBarbuleTiltAttribute));
-  EXPECT_FALSE(hit->second.attributes.find(kCortexThicknessAttribute));
+  EXPECT_EQ(attribute(hit->second, "mu"), 0.0f);
+  EXPECT_EQ(attribute(hit->second, "height"), 0.0f);
+  // The barbule BSDF reads those zeros as its own mu and height.
+  SurfaceAttributes spacingOnly;
+  spacingOnly.set(kBarbuleSpacingAttribute, 1.0f);
+  BarbuleParameters own;
+  own.mu = -0.2f;
+  own.height = 0.55f;
+  BarbuleBSDF bsdf(own);
+  const Wavelengths wl = Wavelengths::fixed({450.0f, 520.0f, 600.0f, 680.0f});
+  const Vec3 wi = normalize(Vec3(0.3f, 0.1f, 1.0f)), wo = normalize(Vec3(-0.35f, -0.1f, 1.0f));
+  const Spectrum atHit = bsdf.eval(hit->second.bsdfContext(), wi, wo, wl);
+  const Spectrum withOwn = bsdf.eval(BSDFContext{TexturePoint(Vec2(), &spacingOnly), Vec3(), Vec3()}, wi, wo, wl);
+  EXPECT_FALSE(withOwn.isZero());
+  for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(atHit[k], withOwn[k]);
 }
 
 TEST(FeatherReferenceConvention, ShadingFramesPointTowardTheRamusOnBothSides) {

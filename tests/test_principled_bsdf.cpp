@@ -318,8 +318,7 @@ TEST(Principled, TexturedParametersAreTakenAtTheShadingPoint) {
       constants + R"(<rgb name="base_color" value="0.1, 0.4, 0.7"/> <float name="roughness" value="0.7"/>)");
   ASSERT_TRUE(textured && first && second);
   const Wavelengths wl = testWavelengths();
-  const BSDFContext inFirst{nullptr, Vec2(0.25f, 0.25f), Vec3(), Vec3()},
-      inSecond{nullptr, Vec2(0.75f, 0.25f), Vec3(), Vec3()};
+  const BSDFContext inFirst{Vec2(0.25f, 0.25f), Vec3(), Vec3()}, inSecond{Vec2(0.75f, 0.25f), Vec3(), Vec3()};
   const Vec3 wi = directionAt(35.0f), wo = directionAt(50.0f, 160.0f), below = directionAt(150.0f, 200.0f);
   for (const Vec3& out : {wo, below}) {
     for (int i = 0; i < kSpectrumSamples; ++i) {
@@ -345,7 +344,7 @@ TEST(Principled, AVertexsQueriesAreTheSeparateCalls) {
     auto bsdf = loadBSDF(type, textures);
     ASSERT_TRUE(bsdf) << type;
     for (Vec2 uv : {Vec2(0.25f, 0.25f), Vec2(0.75f, 0.25f)}) {
-      const BSDFContext ctx{nullptr, uv, Vec3(), Vec3()};
+      const BSDFContext ctx{uv, Vec3(), Vec3()};
       for (const Vec3& wi : {directionAt(35.0f), directionAt(140.0f, 20.0f)}) {
         const Vec3 wo = directionAt(50.0f, 160.0f);
         BSDFVertexRequest request;

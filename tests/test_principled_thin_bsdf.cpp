@@ -194,8 +194,7 @@ TEST(PrincipledThin, TexturedParametersAreTakenAtTheShadingPoint) {
       loadThin(constants + R"(<float name="diff_trans" value="0.9"/> <float name="eta" value="1.6"/>)"));
   ASSERT_TRUE(textured && first && second);
   const Wavelengths wl = testWavelengths();
-  const BSDFContext inFirst{nullptr, Vec2(0.25f, 0.25f), Vec3(), Vec3()},
-      inSecond{nullptr, Vec2(0.75f, 0.25f), Vec3(), Vec3()};
+  const BSDFContext inFirst{Vec2(0.25f, 0.25f), Vec3(), Vec3()}, inSecond{Vec2(0.75f, 0.25f), Vec3(), Vec3()};
   const Vec3 wi = directionAt(35.0f), wo = directionAt(50.0f, 160.0f), through = directionAt(150.0f, 200.0f);
   for (const Vec3& out : {wo, through}) {
     EXPECT_FLOAT_EQ(textured->eval(inFirst, wi, out, wl)[0], first->eval(inFirst, wi, out, wl)[0]);

@@ -261,7 +261,7 @@ TEST_F(Textures, MaskOpacityAndBlendWeightTakeTextures) {
   ASSERT_TRUE(mask && blend);
   const Wavelengths wl = someWavelengths();
   const Vec3 up(0, 0, 1);
-  auto at = [](float u) { return BSDFContext{nullptr, Vec2(u, 0.5f), Vec3(), Vec3()}; };
+  auto at = [](float u) { return BSDFContext{Vec2(u, 0.5f), Vec3(), Vec3()}; };
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.25f), up, wl)[0], 1.0f);
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.75f), up, wl)[0], 0.0f);
   EXPECT_FLOAT_EQ(mask->passThrough(at(0.5f), up, wl)[0], 0.5f);
@@ -314,8 +314,7 @@ TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
     auto rough = bsdfOf(type, "<float name=\"alpha\" value=\"0.4\"/>");
     auto smooth = bsdfOf(type, "<float name=\"alpha\" value=\"0.05\"/>");
     ASSERT_TRUE(textured && rough && smooth) << type;
-    const BSDFContext inColor0{nullptr, Vec2(0.25f, 0.25f), Vec3(), Vec3()},
-        inColor1{nullptr, Vec2(0.75f, 0.25f), Vec3(), Vec3()};
+    const BSDFContext inColor0{Vec2(0.25f, 0.25f), Vec3(), Vec3()}, inColor1{Vec2(0.75f, 0.25f), Vec3(), Vec3()};
     for (const Vec3& out : {wo, below}) {
       EXPECT_FLOAT_EQ(textured->eval(inColor0, wi, out, wl)[0], rough->eval(inColor0, wi, out, wl)[0]) << type;
       EXPECT_FLOAT_EQ(textured->eval(inColor1, wi, out, wl)[0], smooth->eval(inColor1, wi, out, wl)[0]) << type;
@@ -389,7 +388,7 @@ TEST_F(Textures, AConductorsIndexMayBeATexture) {
     auto bsdf = std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
     ASSERT_TRUE(bsdf);
     for (auto [u, kValue] : {std::pair{0.25f, 2.0f}, std::pair{0.75f, 4.0f}}) {
-      BSDFContext ctx{nullptr, Vec2(u, 0.5f), Vec3(), Vec3()};
+      BSDFContext ctx{Vec2(u, 0.5f), Vec3(), Vec3()};
       const float expected = (0.25f + kValue * kValue) / (2.25f + kValue * kValue);
       // The rough metal at alpha 0.001: its albedo, the mean weight of its samples.
       double sum = 0;

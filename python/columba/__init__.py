@@ -12,7 +12,9 @@ try:
 
     from ._columba import (  # noqa: F401
         BARB_VERTICES,
+        COLOUR_BLEND,
         GREEN_CORTEX_THICKNESS,
+        PURPLE_BELOW,
         PURPLE_CORTEX_THICKNESS,
         BarbuleBSDF,
         InputError,
@@ -42,7 +44,7 @@ from . import _columba  # noqa: E402
 __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image",
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
-    "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "feather_barbs",
+    "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
 ]
 
@@ -173,18 +175,59 @@ def fresnel_amplitudes(cos_i, eta):
     return {k: v.reshape(c.shape) for k, v in out.items()}
 
 
-def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binary=False):
+def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binary=False,
+                      height=GREEN_CORTEX_THICKNESS, purple_height=None, height_spread=0.0, purple_below=None,
+                      colour_blend=None):
     """Writes procedural feathers as a feather PLY (as `columba feather`): one feather, or with
     neck=True a neck of `feathers` (60) feathers. barbs: per side (default: edge to edge).
+    The colour: height, the cortex thickness of the green barbules (a single feather's, µm);
+    height_spread, how much each feather's thickness varies (±, µm); on a neck purple_height
+    (PURPLE_CORTEX_THICKNESS), the purple barbules' thickness, purple_below (PURPLE_BELOW), the
+    height y on the neck around which green turns purple, and colour_blend (COLOUR_BLEND), the
+    width of that change on either side (0: sharp).
     Returns a summary dict (feathers, barbs, faces, vertices, tiling_barb_width)."""
-    if feathers is not None and not neck:
-        raise ValueError("feathers applies to a neck (neck=True)")
+    for name, value in (("feathers", feathers), ("purple_height", purple_height), ("purple_below", purple_below),
+                        ("colour_blend", colour_blend)):
+        if value is not None and not neck:
+            raise ValueError(f"{name} applies to a neck (neck=True)")
     if feathers is not None and feathers < 1:
         raise ValueError(f"feathers must be positive, not {feathers}")
     if barbs is not None and barbs < 1:
         raise ValueError(f"barbs must be positive, not {barbs}")
-    return _columba._generate_feathers(_os.fspath(path), bool(neck), 60 if feathers is None else int(feathers),
-                                       0 if barbs is None else int(barbs), int(seed), bool(binary))
+    return _columba._generate_feathers(
+        _os.fspath(path), bool(neck), 60 if feathers is None else int(feathers), 0 if barbs is None else int(barbs),
+        int(seed), bool(binary), float(height), float(PURPLE_CORTEX_THICKNESS if purple_height is None else purple_height),
+        float(height_spread), float(PURPLE_BELOW if purple_below is None else purple_below),
+        float(COLOUR_BLEND if colour_blend is None else colour_blend))
+
+
+def write_feather_ply(path, barbs, binary=False):
+    """Writes a feather PLY from arrays as read_feather_ply returns them (a dict, or anything with
+    those keys): positions and normals (B x 64 x 3), H, mu and height (B x 64, the file's
+    convention, all three or None) and barb_width (or None). read_feather_ply reads back the same."""
+    positions = _np.ascontiguousarray(barbs["positions"], dtype=_np.float32)
+    normals = _np.ascontiguousarray(barbs["normals"], dtype=_np.float32)
+    if positions.ndim != 3 or positions.shape[1:] != (BARB_VERTICES, 3) or normals.shape != positions.shape:
+        raise ValueError(f"positions and normals must both be B x {BARB_VERTICES} x 3, not {positions.shape} and "
+                         f"{normals.shape}")
+    values = [barbs.get(name) for name in ("H", "mu", "height")]
+    if any(v is None for v in values) and not all(v is None for v in values):
+        raise ValueError("give all of H, mu and height, or none of them")
+    if values[0] is not None:
+        values = [_np.ascontiguousarray(v, dtype=_np.float32) for v in values]
+        for name, v in zip(("H", "mu", "height"), values):
+            if v.shape != positions.shape[:2]:
+                raise ValueError(f"{name} must be B x {BARB_VERTICES} ({positions.shape[:2]}), not {v.shape}")
+    for name, v in [("positions", positions), ("normals", normals)] + list(zip(("H", "mu", "height"), values)):
+        if v is not None and not _np.all(_np.isfinite(v)):
+            raise ValueError(f"{name} must be finite numbers")
+    if values[0] is not None and not (_np.all(values[0] > 0) and _np.all(values[2] >= 0)):
+        raise ValueError("H must be positive and height at least 0 (docs/feather-ply.md)")
+    width = barbs.get("barb_width")
+    if width is not None and not (_np.isfinite(width) and width > 0):
+        raise ValueError(f"barb_width must be positive, not {width}")
+    _columba._write_feather_ply(_os.fspath(path), positions, normals, values[0], values[1], values[2],
+                                None if width is None else float(width), bool(binary))
 
 
 def feather_barbs(neck=False, feathers=None, barbs=None, seed=1):

@@ -11,6 +11,7 @@
 #include "bsdfs/barbule_measurement.h"
 #include "core/error.h"
 #include "feather/feather_generator.h"
+#include "feather/feather_ply_writer.h"
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
 #include "optics/melanin.h"
@@ -387,6 +388,30 @@ py::dict featherPly(const std::string& path) {
   return d;
 }
 
+// Writes arrays as read_feather_ply returns them (the Python wrapper has checked their shapes).
+void writeFeatherPlyArrays(const std::string& path, const FloatArray& positions, const FloatArray& normals,
+                           const py::object& H, const py::object& mu, const py::object& height,
+                           std::optional<float> barbWidth, bool binary) {
+  const size_t barbs = size_t(positions.shape(0));
+  const bool values = !H.is_none();
+  FloatArray h = values ? H.cast<FloatArray>() : FloatArray(), m = values ? mu.cast<FloatArray>() : FloatArray(),
+             t = values ? height.cast<FloatArray>() : FloatArray();
+  py::gil_scoped_release release;
+  FeatherPlyWriter writer(path, binary, barbs, barbWidth, values);
+  BarbVertex vertices[kBarbVertices];
+  const float *p = positions.data(), *n = normals.data();
+  for (size_t b = 0; b < barbs; ++b) {
+    for (int k = 0; k < kBarbVertices; ++k) {
+      const size_t i = b * kBarbVertices + size_t(k);
+      vertices[k].position = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+      vertices[k].normal = Vec3(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
+      if (values) vertices[k].fileH = h.data()[i], vertices[k].fileMu = m.data()[i], vertices[k].height = t.data()[i];
+    }
+    writer.writeBarb(vertices);
+  }
+  writer.commit();
+}
+
 }  // namespace
 
 void bindModel(py::module_& m) {
@@ -497,13 +522,18 @@ void bindModel(py::module_& m) {
   });
 
   m.def("_generate_feathers",
-        [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary) {
+        [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary, float height,
+           float purpleHeight, float heightSpread, float purpleBelow, float colourBlend) {
           FeatherGenerationOptions o;
           o.neck = neck, o.feathers = feathers, o.barbsPerSide = barbs, o.seed = seed, o.binary = binary;
+          o.greenHeight = height, o.purpleHeight = purpleHeight, o.heightSpread = heightSpread;
+          o.purpleBelow = purpleBelow, o.colourBlend = colourBlend;
           FeatherGenerationSummary s;
-          {
+          try {
             py::gil_scoped_release release;
             s = generateFeatherPly(o, path);
+          } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
           }
           py::dict d;
           d["feathers"] = s.feathers, d["barbs"] = s.barbs, d["faces"] = s.faces, d["vertices"] = s.vertices;
@@ -516,6 +546,9 @@ void bindModel(py::module_& m) {
   m.attr("BARB_VERTICES") = kBarbVertices;
   m.attr("GREEN_CORTEX_THICKNESS") = kGreenCortexThickness;
   m.attr("PURPLE_CORTEX_THICKNESS") = kPurpleCortexThickness;
+  m.attr("PURPLE_BELOW") = NeckColouring::kDefaultBoundary;
+  m.attr("COLOUR_BLEND") = NeckColouring::kDefaultBlend;
+  m.def("_write_feather_ply", &writeFeatherPlyArrays);
 }
 
 }  // namespace columba::python

@@ -45,3 +45,42 @@ def test_feather_errors(tmp_path):
     bad.write_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nzz\n")
     with pytest.raises(columba.InputError, match=str(bad)):
         columba.read_feather_ply(bad)
+
+
+def test_colour_arguments_equal_cli_and_reach_the_file(cli, tmp_path):
+    cli("feather", "--neck", "--feathers", "4", "--barbs", "4", "--height", "0.66", "--purple-height", "0.47",
+        "--height-spread", "0.02", "--purple-below", "0.2", "--colour-blend", "0.1", "-o", tmp_path / "cli.ply")
+    columba.generate_feathers(tmp_path / "py.ply", neck=True, feathers=4, barbs=4, height=0.66, purple_height=0.47,
+                              height_spread=0.02, purple_below=0.2, colour_blend=0.1)
+    assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    heights = columba.read_feather_ply(tmp_path / "py.ply")["height"]
+    assert heights.min() >= 0.47 - 0.028 - 1e-6 and heights.max() <= 0.66 + 0.028 + 1e-6
+    assert heights.max() > 0.6 and heights.min() < 0.5  # both colours on the neck
+    with pytest.raises(ValueError, match="purple_height applies to a neck"):
+        columba.generate_feathers(tmp_path / "x.ply", purple_height=0.5)
+    with pytest.raises(ValueError, match="the height must be a number of micrometres"):
+        columba.generate_feathers(tmp_path / "x.ply", height=-1)
+
+
+def test_write_feather_ply_writes_what_read_feather_ply_reads(tmp_path):
+    barbs = columba.feather_barbs(barbs=5)
+    barbs["height"] = barbs["height"] * 0.9
+    for binary in (False, True):
+        path = tmp_path / f"f{int(binary)}.ply"
+        columba.write_feather_ply(path, barbs, binary=binary)
+        back = columba.read_feather_ply(path)
+        for name in ("positions", "H", "mu", "height"):
+            np.testing.assert_array_equal(back[name], barbs[name], err_msg=name)
+        np.testing.assert_allclose(back["normals"], barbs["normals"], rtol=0, atol=1e-6)  # normalised again
+        assert back["barb_width"] == barbs["barb_width"]
+    # Without per-vertex values and barb width, they stay absent.
+    bare = {"positions": barbs["positions"], "normals": barbs["normals"], "H": None, "mu": None, "height": None,
+            "barb_width": None}
+    columba.write_feather_ply(tmp_path / "bare.ply", bare)
+    back = columba.read_feather_ply(tmp_path / "bare.ply")
+    assert back["height"] is None and back["barb_width"] is None
+    np.testing.assert_array_equal(back["positions"], barbs["positions"])
+    with pytest.raises(ValueError, match="B x 64 x 3"):
+        columba.write_feather_ply(tmp_path / "bad.ply", {"positions": np.zeros((2, 10, 3)), "normals": np.zeros((2, 10, 3))})
+    with pytest.raises(ValueError, match="height at least 0"):
+        columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, height=-barbs["height"]))

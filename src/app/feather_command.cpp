@@ -31,6 +31,23 @@ void addFeatherCommand(CLI::App& app) {
                   "Barbs per side of each feather (default: as many as lie edge to edge at the default barbwidth)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--binary", settings->options.binary, "Write binary_little_endian instead of ASCII");
+  // The colour: the barbules' keratin cortex thickness (docs/feather-ply.md).
+  FeatherGenerationOptions& o = settings->options;
+  cmd->add_option("--height", o.greenHeight, "Cortex thickness of the green barbules (a single feather's), um")
+      ->capture_default_str();
+  cmd->add_option("--purple-height", o.purpleHeight, "Cortex thickness of the purple barbules, um")
+      ->capture_default_str()
+      ->needs(neck);
+  cmd->add_option("--height-spread", o.heightSpread, "Each feather's thickness varies by up to this much, um")
+      ->capture_default_str();
+  cmd->add_option("--purple-below", o.purpleBelow,
+                  "Height on the neck (y, -1.6 at the top to 3 at the bottom) around which green turns purple")
+      ->capture_default_str()
+      ->needs(neck);
+  cmd->add_option("--colour-blend", o.colourBlend,
+                  "Width of the change from green to purple on either side of the boundary (0: sharp)")
+      ->capture_default_str()
+      ->needs(neck);
   cmd->callback([settings] {
     if (settings->single == settings->neck) throw CLI::ValidationError("feather", "choose one of --single or --neck");
     settings->options.neck = settings->neck;

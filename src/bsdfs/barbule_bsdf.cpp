@@ -71,6 +71,16 @@ void makeRule(int n, std::vector<float>& nodes, std::vector<float>& weights) {
 // different line through the tilted cross-sections.)
 Vec3 towardAbove(const Vec3& w) { return w.z < 0.0f ? -w : w; }
 
+// A shape's value of a parameter at the point; a tilt or thickness of exactly 0 stands for the
+// BSDF's own, as in the original implementation (docs/feather-ply.md).
+std::optional<float> shapeValueUnlessZero(const BSDFContext& ctx, SurfaceAttributeKey key) {
+  std::optional<float> v = ctx.attribute(key);
+  return v && *v != 0.0f ? v : std::nullopt;
+}
+
+// A texture's value, `fallback` where it is not a finite number.
+float finiteOr(float value, float fallback) { return std::isfinite(value) ? value : fallback; }
+
 // Fraction of light along w passing through the gaps.
 float gapTransmission(const BarbuleCrossSection& geometry, const Vec3& w) {
   InPlaneDirection p = inPlane(towardAbove(w));
@@ -190,14 +200,31 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
 BarbuleBSDF::PointModel::PointModel(const BarbuleBSDF& bsdf, const BSDFContext& ctx, const Wavelengths& wl)
     : overridden(bsdf.overriddenGeometry(ctx)),
       geometry(overridden ? *overridden : bsdf.geometry_),
-      film(bsdf.params_.filmIOR, bsdf.params_.extIOR,
-           std::max(ctx.attribute(kCortexThicknessAttribute).value_or(bsdf.params_.height), 0.0f), wl) {
+      film(bsdf.params_.filmIOR, bsdf.params_.extIOR, bsdf.cortexThickness(ctx), wl) {
   const std::optional<SpectralDistribution>& own = bsdf.params_.melanin;
   for (int i = 0; i < kSpectrumSamples; ++i) melanin[i] = own ? own->eval(wl[i]) : melaninReflectance(wl[i]);
 }
 
+float BarbuleBSDF::cortexThickness(const BSDFContext& ctx) const {
+  const float height = textures_.height.isTextured()
+                           ? finiteOr(textures_.height.eval(ctx.point), 0.0f)
+                           : shapeValueUnlessZero(ctx, kCortexThicknessAttribute).value_or(params_.height);
+  return std::max(height, 0.0f);
+}
+
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
-  std::optional<float> mu = ctx.attribute(kBarbuleTiltAttribute), H = ctx.attribute(kBarbuleSpacingAttribute);
+  // A texture wins over the shape's value; a spacing below contact acts as contact.
+  std::optional<float> mu = textures_.mu.isTextured() ? finiteOr(textures_.mu.eval(ctx.point), params_.mu)
+                                                      : shapeValueUnlessZero(ctx, kBarbuleTiltAttribute);
+  std::optional<float> H = textures_.H.isTextured() ? finiteOr(textures_.H.eval(ctx.point), params_.H)
+                                                    : ctx.attribute(kBarbuleSpacingAttribute);
+  if (textures_.b.isTextured()) {
+    // A semi-axis that is not positive (or not a number) is taken as a thin one.
+    constexpr float kThinnest = 1e-3f;
+    const float b = textures_.b.eval(ctx.point);
+    return BarbuleCrossSection(b > kThinnest ? b : kThinnest, params_.phi0, params_.phi1, mu.value_or(params_.mu),
+                               H.value_or(params_.H));
+  }
   if (!mu && !H) return std::nullopt;
   return geometry_.withTiltAndSpacing(mu.value_or(params_.mu), H.value_or(params_.H));
 }
@@ -627,14 +654,29 @@ BarbuleParameters readParameters(const Properties& props) {
   return p;
 }
 
+std::shared_ptr<Object> makeBarbule(const Properties& props, BarbuleBSDF::Role role) {
+  auto bsdf = std::make_shared<BarbuleBSDF>(readParameters(props), role);
+  const BarbuleParameters& p = bsdf->parameters();
+  BarbuleTextures textures{readFloatParameter(props, "b", p.b), readFloatParameter(props, "mu", p.mu),
+                           readFloatParameter(props, "H", p.H), readFloatParameter(props, "height", p.height)};
+  bsdf->setSceneSources(std::make_shared<PerPointParameterSources>(
+      props, "preset",
+      std::initializer_list<PerPointParameterSources::Parameter>{
+          {"H", kBarbuleSpacingAttribute, textures.H.isTextured()},
+          {"mu", kBarbuleTiltAttribute, textures.mu.isTextured()},
+          {"height", kCortexThicknessAttribute, textures.height.isTextured()}}));
+  bsdf->setTextures(std::move(textures));
+  return bsdf;
+}
+
 }  // namespace
 
 std::shared_ptr<Object> makeBarbuleBSDF(const Properties& props) {
-  return std::make_shared<BarbuleBSDF>(readParameters(props), BarbuleBSDF::Role::CameraIncident);
+  return makeBarbule(props, BarbuleBSDF::Role::CameraIncident);
 }
 
 std::shared_ptr<Object> makeBarbuleBSDFEv(const Properties& props) {
-  return std::make_shared<BarbuleBSDF>(readParameters(props), BarbuleBSDF::Role::LightIncident);
+  return makeBarbule(props, BarbuleBSDF::Role::LightIncident);
 }
 
 }  // namespace columba

@@ -37,7 +37,9 @@
 #include "bsdfs/barbule_cross_section.h"
 #include "bsdfs/barbule_parameters.h"
 #include "bsdfs/bsdf.h"
+#include "bsdfs/per_point_parameters.h"
 #include "core/properties.h"
+#include "textures/textured_parameter.h"
 
 namespace columba {
 
@@ -55,6 +57,12 @@ struct BarbuleQuadrature {
   int offsetNodes = 4;
   int thetaNodes = 1;
   int lobeShareNodes = 4;
+};
+
+// Parameters a scene gives as textures, per point, in place of BarbuleParameters' constants and
+// of the shape's per-point values; only the textured ones are read.
+struct BarbuleTextures {
+  FloatParameter b = 0.0f, mu = 0.0f, H = 0.0f, height = 0.0f;
 };
 
 class BarbuleBSDF : public BSDF {
@@ -93,14 +101,23 @@ class BarbuleBSDF : public BSDF {
   const BarbuleParameters& parameters() const { return params_; }
   Role role() const { return role_; }
 
+  void setTextures(BarbuleTextures textures) { textures_ = std::move(textures); }
+  // Where a scene gave H, mu and height, for the warning when a shape's values win over them.
+  void setSceneSources(std::shared_ptr<const PerPointParameterSources> sources) { sceneSources_ = std::move(sources); }
+  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const override {
+    if (sceneSources_) sceneSources_->warnIfShadowed(everywhere, shape);
+  }
+
  private:
   struct PointModel;
   struct Incident;
   struct LobeChoice;
   struct Outgoing;
 
-  // The cross-section with the point's own mu and H, when its attributes give any.
+  // The cross-section with the point's own b, mu and H, when textures or its attributes give any.
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
+  // The film thickness at the point (um).
+  float cortexThickness(const BSDFContext& ctx) const;
   // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
   Incident incident(const PointModel& point, const Vec3& w) const;
   Incident incident(const PointModel& point, const Vec3& w, const LitArc& arc) const;
@@ -150,10 +167,13 @@ class BarbuleBSDF : public BSDF {
   std::vector<FloatLanes> offsetNodes_, offsetWeights_;  // in groups of four lanes
   std::vector<float> thetaNodes_, thetaWeights_;
   int lobeShareNodes_;
+  BarbuleTextures textures_;
+  std::shared_ptr<const PerPointParameterSources> sceneSources_;
 };
 
 // Plug-ins `barbulebsdf` and `barbulebsdfev`: preset (a <string>, see barbule_parameters.h; the
-// parameters given beside it override it), b, phi_0, phi_1, mu, H, height (<float>), film_ior
+// parameters given beside it override it), b, phi_0, phi_1, mu, H, height (<float>; b, mu, H
+// and height also as textures, which win over a shape's per-point values), film_ior
 // ("keratin" by default, or a number, a named index, or a <spectrum> of n against wavelength),
 // or film_cauchy_a and film_cauchy_b (n = a + b / lambda^2, lambda in nm), ext_ior ("air" by
 // default), melanin (a <spectrum> or <float> of reflectance; the embedded measured table by

@@ -4,6 +4,7 @@
 // (Mitsuba's convention). Values include the cosine of `wo`.
 #include <cmath>
 #include <optional>
+#include <string>
 #include <string_view>
 #include "core/object.h"
 #include "core/spectrum.h"
@@ -13,13 +14,12 @@
 
 namespace columba {
 
-// Per-call inputs besides the directions: the shading point's attributes, the values of BSDF
-// parameters its shape gives per point (none by default), where textured parameters are looked up
-// (its surface coordinates, and on meshes with per-vertex or per-face values the triangle and
-// barycentric coordinates), and the derivatives of the position in u and v (in the local shading
-// frame; zero where the shape gives none), which bump maps perturb.
+// Per-call inputs besides the directions: where textured parameters are looked up (its surface
+// coordinates, on meshes with per-vertex or per-face values the triangle and barycentric
+// coordinates, and the values of BSDF parameters its shape gives per point, none by default), and
+// the derivatives of the position in u and v (in the local shading frame; zero where the shape
+// gives none), which bump maps perturb.
 struct BSDFContext {
-  const SurfaceAttributes* attributes = nullptr;
   TexturePoint point;
   Vec3 dpdu, dpdv;
   // The caller carries light straight through the surface itself (it continues the ray with
@@ -30,7 +30,7 @@ struct BSDFContext {
   bool passThroughByCaller = false;
 
   std::optional<float> attribute(SurfaceAttributeKey key) const {
-    return attributes ? attributes->find(key) : std::nullopt;
+    return point.attributes ? point.attributes->find(key) : std::nullopt;
   }
 };
 
@@ -143,6 +143,10 @@ class BSDF : public Object {
   // that light it finds needs no emitter sample beside it (Scene::EmitterSet). False where a
   // user's parameters switch a strategy off.
   virtual bool samplesAllItScatters() const { return true; }
+  // Called by a shape that gives the parameters `everywhere` at every one of its points (a
+  // feather's per-vertex barbule values), which the BSDF's constants for them never reach there:
+  // a BSDF warns, once, for each such parameter the scene gave it. `shape` names the shape.
+  virtual void noteValuesGivenByShape(const SurfaceAttributeSet& /*everywhere*/, const std::string& /*shape*/) const {}
 };
 
 inline float cosTheta(const Vec3& w) { return w.z; }

@@ -19,6 +19,10 @@ class TwoSidedBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
   bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
+  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const override {
+    front_->noteValuesGivenByShape(everywhere, shape);
+    back_->noteValuesGivenByShape(everywhere, shape);
+  }
   bool samplesAllItScatters() const override { return front_->samplesAllItScatters() && back_->samplesAllItScatters(); }
 
  private:

@@ -13,6 +13,9 @@ class NameTable {
  public:
   // The number of `name`, added if it is new: 0, 1, ... in the order names first arrive.
   int idOf(std::string_view name);
+  // The number of `name` if it was added, -1 otherwise; and the name of number `id`.
+  int find(std::string_view name);
+  std::string nameOf(int id);
 
  private:
   std::mutex mutex_;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace columba {
@@ -16,10 +17,25 @@ class SurfaceAttributeKey {
   // The slot of `name`: the same for every key of that name in the program (std::logic_error
   // past SurfaceAttributes::kCapacity distinct names).
   explicit SurfaceAttributeKey(std::string_view name);
+  // The key of `name` if some shape or BSDF declared it, without declaring it (a texture naming a
+  // parameter no code gives per point takes no slot).
+  static std::optional<SurfaceAttributeKey> find(std::string_view name);
   int slot() const { return slot_; }
+  std::string name() const;
 
  private:
+  explicit SurfaceAttributeKey(int slot) : slot_(slot) {}
   int slot_;
+};
+
+// A set of attribute names, e.g. the BSDF parameters a shape gives at every one of its points.
+class SurfaceAttributeSet {
+ public:
+  void add(SurfaceAttributeKey key) { bits_ |= uint32_t(1) << key.slot(); }
+  bool contains(SurfaceAttributeKey key) const { return bits_ >> key.slot() & 1u; }
+
+ private:
+  uint32_t bits_ = 0;
 };
 
 class SurfaceAttributes {
@@ -35,6 +51,9 @@ class SurfaceAttributes {
     if (!(given_ >> key.slot() & 1u)) return std::nullopt;
     return values_[key.slot()];
   }
+  bool empty() const { return given_ == 0; }
+  // The names given here, each after `prefix`, for messages ("vertex_H, vertex_mu").
+  std::string names(const std::string& prefix) const;
 
  private:
   std::array<float, kCapacity> values_{};

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 #include "core/rng.h"
 #include "feather/feather_design.h"
 #include "feather/feather_ply_writer.h"
@@ -65,10 +68,13 @@ class VaneMapping {
 float symmetricJitter(PCG32& rng) { return 2.0f * rng.nextFloat() - 1.0f; }
 
 // The rachis first, then the barbs of one side and of the other, each as one face; false when
-// `cancel` stopped it.
+// options.cancel stopped it.
 bool writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const NeckColouring* colouring,
-                  uint64_t seed, const std::atomic<bool>* cancel, FeatherPlyWriter& writer) {
+                  const FeatherGenerationOptions& options, uint64_t seed, FeatherPlyWriter& writer) {
   PCG32 rng(seed, 0x66656174ULL);
+  // The feather's own thickness offset, from a stream of its own (the barbs' draws stay as they are).
+  PCG32 featherRng(seed, 0x636f7274ULL);
+  const float featherOffset = options.heightSpread * symmetricJitter(featherRng);
   BarbVertex vertices[kBarbVertices];
   auto write = [&](const std::array<Vec2, kBarbVertices>& polyline, float barbuleH, float thicknessOffset) {
     for (int k = 0; k < kBarbVertices; ++k) {
@@ -82,24 +88,28 @@ bool writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
         Vec2 st = mapping.surfaceCoordinates(polyline[k]);
         purple = colouring->purple(st.x, st.y);
       }
-      v.height = lerp(purple, kGreenCortexThickness, kPurpleCortexThickness) + thicknessOffset;
+      v.height = lerp(purple, options.greenHeight, options.purpleHeight) + thicknessOffset + featherOffset;
     }
     writer.writeBarb(vertices);
   };
   write(rachisPolyline(design), kBarbuleH, 0.0f);
   for (int side : {-1, 1}) {
     for (int b = 0; b < design.barbsPerSide; ++b) {
-      if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return false;
       float lengthScale = 1.0f + 0.05f * symmetricJitter(rng);
       float angleOffset = 0.035f * symmetricJitter(rng);
       float barbuleH = kBarbuleH * (1.0f + 0.04f * symmetricJitter(rng));
-      float thicknessOffset = 0.008f * symmetricJitter(rng);
+      float thicknessOffset = kBarbThicknessSpread * symmetricJitter(rng);
       write(barbPolyline(design, side, b, lengthScale, angleOffset), barbuleH, thicknessOffset);
     }
   }
   return true;
 }
 
+}  // namespace
+
+namespace {
+std::string number(float value) { return fmt::format("{}", value); }
 }  // namespace
 
 FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path) {
@@ -112,6 +122,25 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
         fmt::format("{} feathers are too many: a feather PLY holds at most {} faces, 3 or "
                     "more to a feather, so at most {} feathers",
                     options.feathers, kMaxFeatherFaces, kMaxFeatherFaces / 3));
+  const std::pair<const char*, float> thicknesses[] = {{"height", options.greenHeight},
+                                                       {"purple height", options.purpleHeight},
+                                                       {"height spread", options.heightSpread}};
+  for (const auto& [name, value] : thicknesses)
+    if (!(std::isfinite(value) && value >= 0.0f))
+      throw std::invalid_argument(std::string("the ") + name + " must be a number of micrometres, at least 0, not " +
+                                  number(value));
+  // The thinnest cortex written: each feather's spread and each barb's come on top of the colours'.
+  const float thinnest = std::min(options.greenHeight, options.neck ? options.purpleHeight : options.greenHeight) -
+                         options.heightSpread - kBarbThicknessSpread;
+  if (thinnest < 0.0f)
+    throw std::invalid_argument("a height spread of " + number(options.heightSpread) + " um about a height of " +
+                                number(thinnest + options.heightSpread + kBarbThicknessSpread) + " um (with +-" +
+                                number(kBarbThicknessSpread) +
+                                " um from barb to barb) would make cortices thinner than 0");
+  if (!std::isfinite(options.purpleBelow))
+    throw std::invalid_argument("the height where purple begins must be a number, not " + number(options.purpleBelow));
+  if (!(std::isfinite(options.colourBlend) && options.colourBlend >= 0.0f))
+    throw std::invalid_argument("the colour blend must be a width of at least 0, not " + number(options.colourBlend));
   const float barbWidth = FeatherShapeParams().barbWidth;
 
   FeatherDesign design;
@@ -144,11 +173,11 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
                     summary.feathers, summary.feathers == 1 ? "" : "s"));
 
   NeckSurface neck;
-  NeckColouring colouring(options.seed);
+  NeckColouring colouring(options.seed, options.purpleBelow, options.colourBlend);
   FeatherPlyWriter writer(path, options.binary, summary.faces, summary.tilingBarbWidth);
   for (const FeatherPlacement& placement : layout.feathers) {
     VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
-    if (!writeFeather(design, mapping, options.neck ? &colouring : nullptr, placement.seed, options.cancel, writer)) {
+    if (!writeFeather(design, mapping, options.neck ? &colouring : nullptr, options, placement.seed, writer)) {
       summary.written = false;  // the writer removes its temporary file
       return summary;
     }

@@ -9,20 +9,25 @@
 // like the original implementation, renders them as meant (the ramus tilt comes on top):
 // - H (barbule spacing) 1.25, varied by +-4% from barb to barb (file H 0.5);
 // - mu (barbule tilt) -0.35 rad (file mu 0.35);
-// - height (keratin cortex thickness, um): 0.60 for green barbules, 0.51 for purple ones, with
-//   +-0.008 from barb to barb. Through the thin film, 0.60 um reflects green at normal incidence
-//   and turns lilac toward 40 degrees; 0.51 um reflects red and blue (purple) at normal
-//   incidence and turns yellow-green toward 40 degrees, the colour swap of real neck feathers.
-//   A single feather is green; on a neck the two blend smoothly over a boundary region.
+// - height (keratin cortex thickness, um): 0.60 for green barbules, 0.51 for purple ones (or the
+//   options' own), with +-0.008 from barb to barb and the options' spread from feather to feather. Through the thin
+//   film, 0.60 um reflects green at normal incidence and turns lilac toward 40 degrees; 0.51 um reflects red and blue
+//   (purple) at normal incidence and turns yellow-green toward 40 degrees, the colour swap of real neck feathers. A
+//   single feather is green; on a neck the two blend smoothly over a boundary region.
 // The vane normal is that of the feather's surface (the neck, the feather's pitch and its
 // slight dome across the vane). The header records the barbwidth at which neighbouring barbs lie
 // edge to edge (`comment barbwidth W`), which the feather shape uses when the scene sets none.
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include "feather/neck_layout.h"
 #include "shapes/feather_ply.h"
 
 namespace columba {
+
+inline constexpr float kGreenCortexThickness = 0.60f;   // um
+inline constexpr float kPurpleCortexThickness = 0.51f;  // um
+inline constexpr float kBarbThicknessSpread = 0.008f;   // um, from barb to barb
 
 // The most faces (rachises and barbs) a file may hold: a feather PLY numbers its vertices with
 // 32-bit signed integers, kBarbVertices to a face (2^25 faces, 2^31 vertices; some 77 GB binary).
@@ -35,6 +40,12 @@ struct FeatherGenerationOptions {
   uint64_t seed = 1;
   bool binary = false;
   const std::atomic<bool>* cancel = nullptr;  // when set, the generation stops at the next barb
+  // Cortex thickness (um) of the green barbules (a single feather's) and of the purple ones, and
+  // the spread of each feather's thickness about them (uniform in +-spread).
+  float greenHeight = kGreenCortexThickness, purpleHeight = kPurpleCortexThickness, heightSpread = 0.0f;
+  // Neck only: the height on the neck (surface coordinate Y, -1.6 at the top to 3.0 at the bottom)
+  // around which green turns purple, and the width of the change on either side (0: sharp).
+  float purpleBelow = NeckColouring::kDefaultBoundary, colourBlend = NeckColouring::kDefaultBlend;
 };
 
 struct FeatherGenerationSummary {
@@ -47,11 +58,9 @@ struct FeatherGenerationSummary {
 
 // Writes the PLY to `path` (atomically: a temporary file renamed when complete, removed when the
 // generation fails or is cancelled). Memory use does not grow with the number of barbs, and by
-// some 40 bytes per feather of a neck. Throws std::invalid_argument for negative counts, a neck
-// without feathers or more than kMaxFeatherFaces faces.
+// some 40 bytes per feather of a neck. std::invalid_argument, naming the option and its value, for
+// negative counts, a neck without feathers, more than kMaxFeatherFaces faces or a negative
+// thickness.
 FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& options, const std::string& path);
-
-inline constexpr float kGreenCortexThickness = 0.60f;   // um
-inline constexpr float kPurpleCortexThickness = 0.51f;  // um
 
 }  // namespace columba

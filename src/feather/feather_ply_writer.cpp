@@ -15,19 +15,27 @@ namespace {
 constexpr size_t kFlushSize = 1 << 20;
 }  // namespace
 
-FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, float barbWidth)
-    : path_(path), tempPath_(path + ".tmp" + std::to_string(getpid())), binary_(binary), barbCount_(barbCount) {
+FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount,
+                                   std::optional<float> barbWidth, bool barbuleValues)
+    : path_(path),
+      tempPath_(path + ".tmp" + std::to_string(getpid())),
+      binary_(binary),
+      barbuleValues_(barbuleValues),
+      barbCount_(barbCount) {
   file_ = std::fopen(tempPath_.c_str(), "wb");
   if (!file_) throw std::runtime_error("cannot create '" + tempPath_ + "': " + std::strerror(errno));
   buffer_.reserve(2 * kFlushSize);
   std::string header = fmt::format(
       "ply\nformat {} 1.0\ncomment Columba procedural feathers: one face per barb, base first\n"
-      "comment {} {}\n"
+      "{}"
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
-      "property float H\nproperty float mu\nproperty float height\n"
+      "{}"
       "property float out1\nproperty float out2\nproperty float out3\n"
       "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
-      binary ? "binary_little_endian" : "ascii", kBarbWidthComment, barbWidth, barbCount * kBarbVertices, barbCount);
+      binary ? "binary_little_endian" : "ascii",
+      barbWidth ? fmt::format("comment {} {}\n", kBarbWidthComment, *barbWidth) : std::string(),
+      barbCount * kBarbVertices, barbuleValues ? "property float H\nproperty float mu\nproperty float height\n" : "",
+      barbCount);
   put(header.data(), header.size());
 }
 
@@ -53,12 +61,16 @@ void FeatherPlyWriter::writeBarb(const BarbVertex* vertices) {
     const BarbVertex& v = vertices[i];
     const float values[9] = {v.position.x, v.position.y, v.position.z, v.fileH,   v.fileMu,
                              v.height,     v.normal.x,   v.normal.y,   v.normal.z};
+    const float withoutValues[6] = {v.position.x, v.position.y, v.position.z, v.normal.x, v.normal.y, v.normal.z};
+    const float* record = barbuleValues_ ? values : withoutValues;
+    const size_t count = barbuleValues_ ? 9 : 6;
     if (binary_) {
-      put(reinterpret_cast<const char*>(values), sizeof(values));
+      put(reinterpret_cast<const char*>(record), count * sizeof(float));
     } else {
       // Shortest representation that reads back to the same float.
-      auto line = fmt::format("{} {} {} {} {} {} {} {} {}\n", values[0], values[1], values[2], values[3], values[4],
-                              values[5], values[6], values[7], values[8]);
+      fmt::memory_buffer line;
+      for (size_t k = 0; k < count; ++k) fmt::format_to(std::back_inserter(line), k ? " {}" : "{}", record[k]);
+      line.push_back('\n');
       put(line.data(), line.size());
     }
   }

@@ -5,6 +5,7 @@
 // files of any size can be written. The file appears under its name only when complete: it is
 // written beside it under a temporary name and renamed by commit().
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 #include "core/vector.h"
@@ -22,8 +23,10 @@ struct BarbVertex {
 class FeatherPlyWriter {
  public:
   // Throws std::runtime_error if the temporary file cannot be created. `barbWidth` is recorded
-  // in the header (`comment barbwidth W`) for the feather shape to use when the scene sets none.
-  FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, float barbWidth);
+  // in the header (`comment barbwidth W`) for the feather shape to use when the scene sets none;
+  // without `barbuleValues` the vertices have no H, mu and height.
+  FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, std::optional<float> barbWidth,
+                   bool barbuleValues = true);
   ~FeatherPlyWriter();
   FeatherPlyWriter(const FeatherPlyWriter&) = delete;
   FeatherPlyWriter& operator=(const FeatherPlyWriter&) = delete;
@@ -38,7 +41,7 @@ class FeatherPlyWriter {
   void put(const char* data, size_t size);
 
   std::string path_, tempPath_;
-  bool binary_;
+  bool binary_, barbuleValues_;
   size_t barbCount_, written_ = 0;
   std::FILE* file_ = nullptr;
   std::vector<char> buffer_;

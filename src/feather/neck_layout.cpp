@@ -58,15 +58,16 @@ NeckLayout layOutNeck(int featherCount, uint64_t seed) {
   return layout;
 }
 
-NeckColouring::NeckColouring(uint64_t seed) {
+NeckColouring::NeckColouring(uint64_t seed, float boundary, float blend) : boundary_(boundary), blend_(blend) {
   PCG32 rng(seed, 0x636f6c6fULL);
   phase1_ = kTwoPi * rng.nextFloat();
   phase2_ = kTwoPi * rng.nextFloat();
 }
 
 float NeckColouring::purple(float X, float Y) const {
-  float boundary = 0.7f + 0.4f * std::sin(0.8f * X + phase1_) + 0.2f * std::sin(1.9f * X + phase2_);
-  return smoothstep(-0.35f, 0.35f, Y - boundary);
+  float boundary = boundary_ + 0.4f * std::sin(0.8f * X + phase1_) + 0.2f * std::sin(1.9f * X + phase2_);
+  if (!(blend_ > 0.0f)) return Y >= boundary ? 1.0f : 0.0f;
+  return smoothstep(-blend_, blend_, Y - boundary);
 }
 
 }  // namespace columba

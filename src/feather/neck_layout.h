@@ -44,14 +44,17 @@ struct NeckLayout {
 
 NeckLayout layOutNeck(int featherCount, uint64_t seed);
 
-// Fraction of purple (against green) barbules at surface point (X, Y), smooth over the neck.
+// Fraction of purple (against green) barbules at surface point (X, Y), smooth over the neck: 0
+// above a wavy boundary around height `boundary` (Y), 1 below it, blending over `blend` on either
+// side of it (0: a sharp edge).
 class NeckColouring {
  public:
-  explicit NeckColouring(uint64_t seed);
+  static constexpr float kDefaultBoundary = 0.7f, kDefaultBlend = 0.35f;
+  explicit NeckColouring(uint64_t seed, float boundary = kDefaultBoundary, float blend = kDefaultBlend);
   float purple(float X, float Y) const;
 
  private:
-  float phase1_, phase2_;
+  float phase1_, phase2_, boundary_, blend_;
 };
 
 }  // namespace columba

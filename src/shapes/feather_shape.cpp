@@ -127,6 +127,17 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     });
   }
 
+  givenEverywhere_.add(kBarbuleSpacingAttribute);
+  bool zeroTiltSegment = false, zeroThicknessSegment = false;
+  for (size_t i = 0; i + 1 < barbuleValues_.size(); ++i) {
+    if (i % kBarbVertices == kBarbSegments) continue;  // the last vertex of a barb starts no segment
+    const BarbuleValues &a = barbuleValues_[i], &b = barbuleValues_[i + 1];
+    zeroTiltSegment |= a.mu == 0.0f && b.mu == 0.0f;
+    zeroThicknessSegment |= a.height == 0.0f && b.height == 0.0f;
+  }
+  if (!zeroTiltSegment) givenEverywhere_.add(kBarbuleTiltAttribute);
+  if (!zeroThicknessSegment) givenEverywhere_.add(kCortexThicknessAttribute);
+
   const float scale = linearScale(toWorld);
   const float halfWidth = 0.5f * params.barbWidth * scale;
   radius_ = halfWidth / std::sin(params.cover);
@@ -235,11 +246,11 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   }
   const float edgeAngle = std::asin(std::min(profiles_[seg].halfWidthAt(hit.u) / radius_, 1.0f));
   values.mu += ramusTilt(angle, edgeAngle);
-  // Named as the barbule BSDF's parameters. A zero tilt or thickness leaves the BSDF's own
-  // parameter in force, as in the original.
+  // Named as the barbule BSDF's parameters, which reads a zero tilt or thickness as its own
+  // parameter's, as the original does.
   si.attributes.set(kBarbuleSpacingAttribute, values.h);
-  if (values.mu != 0.0f) si.attributes.set(kBarbuleTiltAttribute, values.mu);
-  if (values.height != 0.0f) si.attributes.set(kCortexThicknessAttribute, values.height);
+  si.attributes.set(kBarbuleTiltAttribute, values.mu);
+  si.attributes.set(kCortexThicknessAttribute, values.height);
   return si;
 }
 

@@ -36,8 +36,9 @@
 //   the segment's base-ward vertex). A file without them gets the feather's defaults (file H
 //   0.5, mu 0.35, height 0.65 um), not the BSDF's. At a hit at angle phi, mu gains the ramus
 //   tilt 0.5 (|phi| / d_r - 1) where |phi| < d_r = 0.1 phi_edge. The hit carries them as its
-//   attributes "H", "mu" and "height"; a mu or height of exactly 0 is left out, so the BSDF's
-//   own parameter stays in force, as in the original.
+//   attributes "H", "mu" and "height" (what a mesh_attribute texture reads as vertex_H, vertex_mu
+//   and vertex_height); the barbule BSDF reads a mu or height of exactly 0 as its own parameter,
+//   as the original does.
 #include <array>
 #include <memory>
 #include <vector>
@@ -84,6 +85,10 @@ class FeatherShape : public Shape {
     strips_[primID].bounds(profiles_[primID % kBarbSegments], lo, hi);
   }
   float radius() const { return radius_; }
+  // The BSDF parameters the feather gives at every point, so that a BSDF's own constants for them
+  // have no effect on it: H always, mu and height unless some segment has 0 at both ends (a zero
+  // leaves the BSDF's own, as in the original).
+  const SurfaceAttributeSet& valuesGivenEverywhere() const { return givenEverywhere_; }
   // Bytes held by the loaded geometry (not counting Embree's BVH).
   size_t memoryBytes() const;
 
@@ -100,6 +105,7 @@ class FeatherShape : public Shape {
   static constexpr BarbuleValues kDefaultBarbuleValues{modelSpacingFromFile(kDefaultFileSpacing),
                                                        modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
   std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
+  SurfaceAttributeSet givenEverywhere_;
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };

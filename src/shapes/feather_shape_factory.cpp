@@ -44,6 +44,8 @@ std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
   shape->bsdf = props.child<BSDF>();
   // Mitsuba's default material when none is nested.
   if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
+  shape->bsdf->noteValuesGivenByShape(shape->valuesGivenEverywhere(),
+                                      "the feather '" + props.getString("filename") + "'");
   return shape;
 }
 

@@ -48,11 +48,10 @@ struct SurfaceInteraction {
     p.mesh = meshAttributes;
     p.triangle = triangle;
     p.barycentric = barycentric;
+    p.attributes = &attributes;
     return p;
   }
-  BSDFContext bsdfContext() const {
-    return BSDFContext{&attributes, texturePoint(), shading.toLocal(dpdu), shading.toLocal(dpdv)};
-  }
+  BSDFContext bsdfContext() const { return BSDFContext{texturePoint(), shading.toLocal(dpdu), shading.toLocal(dpdv)}; }
 
   // A ray leaving the surface without hitting it again (offset along ng to the side of `d`).
   Ray spawnRay(const Vec3& d) const;

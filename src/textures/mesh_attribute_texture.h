@@ -3,9 +3,12 @@
 // interpolated across each triangle) or per face ("face_<name>"), times `scale`. A 3-channel
 // attribute is a colour: each vertex's or face's colour becomes a smooth spectrum when the mesh is
 // loaded, and a lookup blends the spectra of the triangle's vertices, as bitmaps blend texels'.
-// Looked up on a shape that does not have the attribute, it stops the render with an error that
-// names the texture's line and the attributes the mesh has, as Mitsuba does.
+// On a shape that gives BSDF parameters per point (a feather: H, mu and height, in the model's
+// terms), "vertex_<parameter>" reads that value at the hit. Looked up on a shape that does not
+// have the attribute, it stops the render with an error that names the texture's line and the
+// attributes the mesh has, as Mitsuba does.
 #include <memory>
+#include <optional>
 #include <string>
 #include "core/properties.h"
 #include "textures/mesh_attributes.h"
@@ -15,8 +18,7 @@ namespace columba {
 
 class MeshAttributeTexture : public Texture {
  public:
-  MeshAttributeTexture(std::string name, float scale, SourceLocation where)
-      : key_(name), name_(std::move(name)), scale_(scale), where_(std::move(where)) {}
+  MeshAttributeTexture(std::string name, float scale, SourceLocation where);
   Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
   float evalFloat(const TexturePoint& p) const override;
   bool givesTriples() const override { return true; }
@@ -26,10 +28,14 @@ class MeshAttributeTexture : public Texture {
   float mean() const override { return 0.5f * scale_; }
 
  private:
-  const MeshAttributes::Attribute& attributeAt(const TexturePoint& p) const;
+  // The mesh's attribute at `p`, or null where the shape gives the value per point instead (its
+  // value then in `shapeValue`); throws where there is neither.
+  const MeshAttributes::Attribute* attributeAt(const TexturePoint& p, float& shapeValue) const;
 
   MeshAttributeKey key_;  // what each lookup finds the attribute by
-  std::string name_;      // for messages
+  // A "vertex_" name's rest, where some shape gives a BSDF parameter of that name per point.
+  std::optional<SurfaceAttributeKey> shapeKey_;
+  std::string name_;  // for messages
   float scale_;
   SourceLocation where_;
 };
