@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <vector>
 #include "bsdfs/barbule_bsdf.h"
@@ -893,4 +894,22 @@ TEST(BarbuleBSDF, FactoriesRejectInvalidParameters) {
   rejects("H", "", 0.0f, false);
   rejects("height", "", -0.5f, false);
   rejects("phi_1", "", 4.0f, false);  // arc of more than pi but less than the whole ellipse
+}
+
+// A NaN sample or wavelength indexed the TRT share's nodes with int(NaN) and crashed (clampf let
+// NaN through); whatever it draws, it must not read out of bounds.
+TEST(BarbuleBSDF, NaNSamplesAndWavelengthsDoNotCrash) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const BarbuleBSDF bsdf{BarbuleParameters{}};
+  const Vec3 wi = normalize(Vec3(0.3f, 0.1f, 0.9f));
+  const Wavelengths green = Wavelengths::fixed({550.0f, 550.0f, 550.0f, 550.0f});
+  for (const Wavelengths& wl : {green, Wavelengths::fixed({nan, nan, nan, nan}), Wavelengths::fixed({0, 0, 0, 0})})
+    for (float u1 : {0.5f, nan})
+      for (Vec2 u2 : {Vec2(0.5f, 0.5f), Vec2(nan, nan)}) {
+        std::optional<BSDFSample> s = bsdf.sample(BSDFContext{}, wi, wl, u1, u2);
+        if (s && wl[0] == 550.0f && u1 == 0.5f && u2.x == 0.5f) {
+          EXPECT_TRUE(s->weight.isFinite());
+        }
+      }
+  EXPECT_EQ(clampf(nan, 0.0f, 3.0f), 0.0f);
 }

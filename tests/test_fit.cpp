@@ -221,6 +221,50 @@ TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
               r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.values[1], r.fit.evaluations);
 }
 
+// Checked by the fit library, so that Python's fit and fit_spectra refuse what `columba fit` does:
+// they accepted max_evals 0, negative budgets and rises, a name varied twice or also fixed, and
+// negative sample and thread counts.
+TEST(FitSettings, WhatNoFitCanRunWithIsRefusedBeforeAnyEvaluation) {
+  auto spectraError = [](auto change) {
+    SpectraFitSettings s;
+    s.samples = {{10.0f, 0.0f, 10.0f, 180.0f, 500.0f, 0.2f}};
+    s.parameters = {parseFitParameter("height=0.4:0.7")};
+    change(s);
+    try {
+      fitSpectra(s);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  auto contains = [](const std::string& message, const char* part) {
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: '" << message << "'";
+  };
+  contains(spectraError([](SpectraFitSettings& s) { s.fit.optimizer.maxEvaluations = 0; }), "at least 3");
+  contains(spectraError([](SpectraFitSettings& s) { s.fit.optimizer.maxSeconds = -1.0; }), "not -1");
+  contains(spectraError([](SpectraFitSettings& s) { s.fit.profileRise = -0.1; }), "rise must be positive");
+  contains(spectraError([](SpectraFitSettings& s) { s.parameters.push_back(parseFitParameter("height=0.5:0.6")); }),
+           "'height' is varied twice");
+  contains(spectraError([](SpectraFitSettings& s) { s.fixed["height"] = 0.5; }), "'height' is both held fixed");
+  contains(spectraError([](SpectraFitSettings& s) { s.parameters.clear(); }), "at least one parameter");
+
+  auto sceneError = [](auto change) {
+    SceneFitSettings s;
+    s.scenePath = "never-loaded.xml";
+    s.parameters = {parseFitParameter("height=0.4:0.7")};
+    change(s);
+    try {
+      fitScene(s);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  contains(sceneError([](SceneFitSettings& s) { s.samplesPerPixel = -1; }), "not -1");
+  contains(sceneError([](SceneFitSettings& s) { s.threads = -2; }), "not -2");
+  contains(sceneError([](SceneFitSettings& s) { s.defines["height"] = "0.5"; }), "'height' is both held fixed");
+}
+
 // As spreadsheet programs save CSV: "the header has no column 'theta_i'".
 TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
   const std::string path =

@@ -19,12 +19,12 @@ Image imageFromArray(const py::array& input);  // module.cpp
 
 namespace {
 
-// What image and spectra fits share: the varied parameters, the loss and the budgets.
+// What image and spectra fits share: the varied parameters, the loss and the budgets (checked by
+// the fit itself, as for `columba fit`).
 template <typename Settings>
 void setCommon(Settings& s, const std::vector<std::string>& vary, const std::string& scale, const std::string& loss,
                int maxEvaluations, double maxSeconds, double rise) {
   for (const std::string& text : vary) s.parameters.push_back(parseFitParameter(text));
-  if (s.parameters.empty()) throw py::value_error("give at least one parameter to vary, as 'NAME=LO:HI[:START]'");
   s.scale = parseScaleMode(scale);
   s.loss = parseLossKind(loss);
   s.fit.optimizer.maxEvaluations = maxEvaluations;

@@ -1,5 +1,6 @@
 // The barbule BSDF evaluated over numpy arrays, its virtual measurements, the optics it is built
 // from (thin film, Fresnel, dispersion, melanin) and the feather generator.
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -124,6 +125,20 @@ FloatArray directions(const py::array& input, const char* name) {
   return a;
 }
 
+// Every value of `values` in [lo, hi] (or [lo, hi) when `openAbove`); NaN is in no range.
+void requireRange(const float* values, py::ssize_t count, float lo, float hi, bool openAbove, const char* what) {
+  for (py::ssize_t i = 0; i < count; ++i) {
+    const float v = values[i];
+    if (v >= lo && (openAbove ? v < hi : v <= hi)) continue;
+    throw py::value_error(
+        fmt::format("{} must lie in [{:g}, {:g}{}, not {:g} (element {})", what, lo, hi, openAbove ? ")" : "]", v, i));
+  }
+}
+// The wavelengths the BSDF is evaluated at: the renderer's range.
+void requireVisible(const float* lambdas, py::ssize_t count) {
+  requireRange(lambdas, count, kLambdaMin, kLambdaMax, false, "wavelengths (nm)");
+}
+
 // Wavelengths (nm), N (one per direction, in all four lanes) or N x 4 (a path's four).
 struct WavelengthArg {
   FloatArray a;
@@ -142,6 +157,7 @@ WavelengthArg wavelengths(const py::array& input, py::ssize_t n) {
   if (!single && !w.four)
     throw py::value_error("wavelengths must have shape (N,) or (N, 4) for N = " + std::to_string(n) +
                           " directions, not " + py::str(py::tuple(input.attr("shape"))).cast<std::string>());
+  requireVisible(w.a.data(), w.a.size());
   return w;
 }
 
@@ -205,6 +221,8 @@ py::dict sampleArray(const PyBarbule& self, const py::array& wiIn, const py::arr
     throw py::value_error("u1 must have shape (N,): one number per direction");
   if (!u2 || u2.ndim() != 2 || u2.shape(0) != n || u2.shape(1) != 2)
     throw py::value_error("u2 must have shape (N, 2): two numbers per direction");
+  requireRange(u1.data(), u1.size(), 0.0f, 1.0f, true, "u1");
+  requireRange(u2.data(), u2.size(), 0.0f, 1.0f, true, "u2");
   WavelengthArg wl = wavelengths(wlIn, n);
   py::array_t<float> wo({n, py::ssize_t(3)}), pdf(n);
   py::array_t<float> weight = spectrumArray(wl, n);
@@ -287,6 +305,7 @@ std::vector<float> lambdaList(const py::object& lambdas) {
   if (lambdas.is_none()) return visibleWavelengthGrid(1.0f);
   FloatArray a = FloatArray::ensure(lambdas);
   if (!a || a.ndim() != 1 || a.size() == 0) throw py::value_error("wavelengths must be a non-empty 1-D array (nm)");
+  requireVisible(a.data(), a.size());
   return std::vector<float>(a.data(), a.data() + a.size());
 }
 

@@ -173,6 +173,30 @@ def test_shape_errors():
         bsdf.sample(wi, np.zeros(4), np.zeros(4), np.full(4, 500))
 
 
+def test_values_outside_their_range_are_value_errors():
+    # A NaN u1, or a NaN or 0 nm wavelength, crashed the interpreter in sample; -5 nm gave R = 4.6.
+    bsdf = columba.BarbuleBSDF()
+    wi = directions(4, 7)
+    u1, u2, wl = np.full(4, 0.5), np.full((4, 2), 0.5), np.full(4, 550.0)
+    for bad in (np.nan, 0.0, -5.0, 359.0, 831.0, np.inf):
+        lambdas = np.array([550.0, bad, 550.0, 550.0])
+        with pytest.raises(ValueError, match=r"wavelengths \(nm\) must lie in \[360, 830\]"):
+            bsdf.sample(wi, u1, u2, lambdas)
+        with pytest.raises(ValueError, match="element 1"):
+            bsdf.eval(wi, wi, lambdas)
+        with pytest.raises(ValueError, match="wavelengths"):
+            bsdf.specular_spectra(30, wavelengths=[500.0, bad])
+        with pytest.raises(ValueError, match="wavelengths"):
+            bsdf.lobe_reflectance(30, wavelengths=[bad])
+    for bad in (np.nan, -0.1, 1.0):
+        with pytest.raises(ValueError, match=r"u1 must lie in \[0, 1\)"):
+            bsdf.sample(wi, np.array([0.5, 0.5, bad, 0.5]), u2, wl)
+        with pytest.raises(ValueError, match=r"u2 must lie in \[0, 1\)"):
+            bsdf.sample(wi, u1, np.array([[0.5, 0.5]] * 3 + [[0.5, bad]]), wl)
+    ends = bsdf.specular_spectra(30, wavelengths=[360.0, 830.0])
+    assert np.all(np.isfinite(ends["R"]))
+
+
 def test_spectral_hemisphere_reads_back(cli, tmp_path):
     hemisphere(cli, tmp_path, "--angles", "20", "--res", "16", "--spectral", "--bins", "4")
     rgb, centres, bands = columba.read_image(tmp_path / "bsdf_hemisphere_theta20.exr", spectral=True)

@@ -34,3 +34,26 @@ def test_fit_errors_are_python_exceptions(repo):
         columba.fit(scene, np.zeros((4, 4, 3), np.float32), vary=["height"])
     with pytest.raises(ValueError, match="at least one parameter"):
         columba.fit(scene, np.zeros((4, 4, 3), np.float32), vary=[])
+
+
+def test_fit_settings_are_checked_as_the_command_checks_them(repo, tmp_path):
+    # max_evals=0, negative budgets, rises, threads and spp, a name varied twice or also fixed were
+    # accepted; the fit library checks them for the command and Python alike.
+    scene = repo / "examples" / "fit_scatterometer.xml"
+    target = np.zeros((4, 4, 3), np.float32)
+    vary = ["height=0.5:0.7"]
+    for kwargs, message in [(dict(max_evals=0), "at least 3"), (dict(max_seconds=-1.0), "not -1"),
+                            (dict(rise=-0.5), "rise must be positive"), (dict(threads=-1), "not -1"),
+                            (dict(spp=-4), "not -4"), (dict(vary=vary * 2), "'height' is varied twice"),
+                            (dict(defines={"height": "0.6"}), "'height' is both held fixed")]:
+        args = dict(vary=vary, **kwargs) if "vary" not in kwargs else kwargs
+        with pytest.raises(ValueError, match=message):
+            columba.fit(scene, target, **args)
+    spectra = tmp_path / "spectra.csv"
+    spectra.write_text("theta_i,phi_i,theta_o,phi_o,wavelength_nm,reflectance\n10,0,10,180,500,0.2\n")
+    for kwargs, message in [(dict(max_evals=0), "at least 3"), (dict(max_seconds=-1.0), "not -1"),
+                            (dict(rise=-0.5), "rise must be positive")]:
+        with pytest.raises(ValueError, match=message):
+            columba.fit_spectra(spectra, vary=vary, **kwargs)
+    with pytest.raises(ValueError, match="varied twice"):
+        columba.fit_spectra(spectra, vary=vary * 2)

@@ -74,21 +74,9 @@ int runFitCommand(const FitOptions& o) {
     throw std::runtime_error("give either a scene (with --target) or --spectra, not both or neither");
   std::vector<FitParameter> parameters;
   for (const std::string& text : o.vary) parameters.push_back(parseFitParameter(text));
-  for (size_t i = 0; i < parameters.size(); ++i)
-    for (size_t j = 0; j < i; ++j)
-      if (parameters[i].name == parameters[j].name)
-        throw std::runtime_error(fmt::format("--vary names '{}' twice", parameters[i].name));
   const Defines defines = parseDefines(o.defines);
-  for (const FitParameter& p : parameters)
-    if (defines.count(p.name)) throw std::runtime_error(fmt::format("'{}' is both fixed by -D and varied", p.name));
-  if (o.maxEvaluations < int(parameters.size()) + 2)
-    throw std::runtime_error(
-        fmt::format("--max-evals {} is too small for {} parameters", o.maxEvaluations, parameters.size()));
-  if (!(o.maxSeconds > 0.0))
-    throw std::runtime_error(fmt::format("--max-seconds must be positive, not {}", o.maxSeconds));
-  if (!(o.rise > 0.0)) throw std::runtime_error(fmt::format("--rise must be positive, not {}", o.rise));
-  const fs::path dir = o.outputDir;
-  fs::create_directories(dir);
+  std::vector<std::string> fixed;
+  for (const auto& define : defines) fixed.push_back(define.first);
 
   FitSettings fit;
   fit.optimizer.maxEvaluations = o.maxEvaluations;
@@ -96,6 +84,10 @@ int runFitCommand(const FitOptions& o) {
   fit.optimizer.globalAlgorithm = o.global;
   fit.profileRise = o.rise;
   fit.progress = terminalProgress(parameters);
+  // Before the output directory is made: the library checks the fits Python runs alike.
+  checkFitSettings(parameters, fit, fixed);
+  const fs::path dir = o.outputDir;
+  fs::create_directories(dir);
   nlohmann::json settings = {
       {"vary", o.vary},
       {"defines", o.defines},
@@ -109,15 +101,15 @@ int runFitCommand(const FitOptions& o) {
   if (!o.spectraPath.empty()) {
     SpectraFitSettings s;
     s.samples = readSpectraCSV(o.spectraPath);
-    std::map<std::string, double> fixed;
+    std::map<std::string, double> fixedValues;
     for (const auto& [name, value] : defines) {
       try {
-        fixed[name] = std::stod(value);
+        fixedValues[name] = std::stod(value);
       } catch (const std::exception&) {
         throw std::runtime_error(fmt::format("-D {}={}: not a number", name, value));
       }
     }
-    s.base = barbuleParametersWith(BarbuleParameters{}, fixed);
+    s.fixed = fixedValues;
     s.parameters = parameters;
     s.loss = parseLossKind(o.loss);
     s.scale = parseScaleMode(o.scale);

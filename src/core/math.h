@@ -18,7 +18,9 @@ template <typename T>
 constexpr T sqr(T x) {
   return x * x;
 }
-inline float clampf(float x, float lo, float hi) { return std::min(std::max(x, lo), hi); }
+// x limited to [lo, hi]; NaN gives lo, so that an index computed from a clamped value is always
+// one (a NaN sample or wavelength made int(NaN) index tables out of bounds).
+inline float clampf(float x, float lo, float hi) { return std::isnan(x) ? lo : std::min(std::max(x, lo), hi); }
 inline float lerp(float t, float a, float b) { return a + t * (b - a); }
 inline float safeSqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }
 inline double safeSqrt(double x) { return std::sqrt(std::max(x, 0.0)); }

@@ -1,6 +1,7 @@
 #pragma once
 // What a fit found, and the fit itself for any objective: the two optimiser stages, then the
 // loss profiles that give each parameter its uncertainty.
+#include <string>
 #include <vector>
 #include "fit/loss_profile.h"
 #include "fit/optimizer.h"
@@ -26,6 +27,14 @@ struct FitSettings {
   FitProgress progress;  // may be empty
 };
 
+// Throws std::invalid_argument naming the value, for what no fit can run with: no parameter, one
+// varied twice or also held fixed (`fixed`: the names given values, a scene's -D variables), an
+// evaluation budget below the parameters' count + 2, a time budget or rise that is not positive.
+// What `columba fit` and Python's fit and fit_spectra check alike, before any evaluation.
+void checkFitSettings(const std::vector<FitParameter>& parameters, const FitSettings& settings,
+                      const std::vector<std::string>& fixed);
+
+// Checks the settings (with nothing fixed), then fits.
 FitResult runFit(const std::vector<FitParameter>& parameters, FitObjective objective, const FitSettings& settings);
 
 }  // namespace columba

@@ -72,6 +72,14 @@ Image renderSceneWith(const SceneFitSettings& settings, const std::vector<double
 }
 
 SceneFitResult fitScene(const SceneFitSettings& settings) {
+  std::vector<std::string> fixed;
+  for (const auto& define : settings.defines) fixed.push_back(define.first);
+  checkFitSettings(settings.parameters, settings.fit, fixed);
+  if (settings.samplesPerPixel < 0)
+    throw std::invalid_argument(
+        fmt::format("samples per pixel must be 0 (the scene's sampler) or more, not {}", settings.samplesPerPixel));
+  if (settings.threads < 0)
+    throw std::invalid_argument(fmt::format("threads must be 0 (all cores) or more, not {}", settings.threads));
   ScaledLoss loss(settings.target.rgb, maskWeights(settings), settings.loss, settings.scale);
   // The scene's warnings are shown by the first evaluation only.
   std::optional<QuietWarnings> quiet;

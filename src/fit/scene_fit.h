@@ -30,8 +30,9 @@ struct SceneFitResult {
   Image render;  // at the fitted values, before scaling
 };
 
-// Throws std::runtime_error / InputError naming the file and value for a scene that does not use
-// a fitted variable, a mask of another size or a scene that cannot be rendered.
+// Throws std::invalid_argument for settings checkFitSettings refuses (the defines held fixed) or a
+// negative sample or thread count; std::runtime_error / InputError naming the file and value for a scene that does not
+// use a fitted variable, a mask of another size or a scene that cannot be rendered.
 SceneFitResult fitScene(const SceneFitSettings& settings);
 
 // The scene rendered with `values` for the settings' parameters, at the target's size.

@@ -115,13 +115,17 @@ BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std
 }
 
 SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
+  std::vector<std::string> fixedNames;
+  for (const auto& value : settings.fixed) fixedNames.push_back(value.first);
+  checkFitSettings(settings.parameters, settings.fit, fixedNames);
+  const BarbuleParameters base = barbuleParametersWith(settings.base, settings.fixed);
   std::vector<float> target;
   for (const SpectraSample& s : settings.samples) target.push_back(s.reflectance);
   ScaledLoss loss(std::move(target), {}, settings.loss, settings.scale);
   auto parametersAt = [&](const std::vector<double>& values) {
     std::map<std::string, double> named;
     for (size_t i = 0; i < values.size(); ++i) named[settings.parameters[i].name] = values[i];
-    return barbuleParametersWith(settings.base, named);
+    return barbuleParametersWith(base, named);
   };
   SpectraFitResult result;
   result.fit = runFit(

@@ -31,7 +31,8 @@ BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std
 
 struct SpectraFitSettings {
   std::vector<SpectraSample> samples;
-  BarbuleParameters base;  // the parameters not fitted
+  BarbuleParameters base;               // the parameters not fitted
+  std::map<std::string, double> fixed;  // set on base (-D), by barbuleParametersWith
   std::vector<FitParameter> parameters;
   LossKind loss = LossKind::MSE;
   ScaleMode scale = ScaleMode::Free;
@@ -43,6 +44,7 @@ struct SpectraFitResult {
   std::vector<float> model;  // modelSpectra at the fitted values, before scaling
 };
 
+// Throws std::invalid_argument for settings checkFitSettings refuses (`fixed` held fixed).
 SpectraFitResult fitSpectra(const SpectraFitSettings& settings);
 
 }  // namespace columba
