@@ -206,6 +206,38 @@ TEST(Sweep, FrameFileNames) {
   EXPECT_EQ(frameFiles("x.exr", "", expandSweeps({})), std::vector<std::string>{"x.exr"});
 }
 
+TEST(Sweep, FrameFilesNoLongerThanAFileSystemTakes) {
+  std::vector<SweepFrame> frames = expandSweeps({parseSweep("v=1,2")});
+  // A width or precision beyond the longest file name is refused before it is formatted.
+  for (const char* pattern : {"x{v:>10000000}.exr", "x{v:.10000000f}.exr", "x{v:0300}.exr", "x{v:>256}.exr"}) {
+    try {
+      frameFileFromPattern(pattern, frames[0]);
+      ADD_FAILURE() << pattern;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("more than 255 (the longest file name)"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(frameFileFromPattern("x{v:>200}.exr", frames[0]).size(), 205u);
+  EXPECT_EQ(frameFileFromPattern("{v:0>5}_{v:.3f}_{v:07.2f}.exr", frames[1]), "00002_2.000_0002.00.exr");
+  // Names and paths that no file can have.
+  try {
+    frameFiles("", "x{v:>200}{v:>60}_%d.exr", frames);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a name in its path is 267 bytes long, more than 255"), std::string::npos)
+        << e.what();
+  }
+  std::string deep;
+  for (int i = 0; i < 17; ++i) deep += "{v:>240}/";
+  try {
+    frameFiles("", deep + "%d.exr", frames);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("its path is 4102 bytes long, more than 4095"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(frameFiles(std::string(300, 'o') + ".exr", "", frames), std::runtime_error);
+}
+
 namespace {
 Manifest sampleManifest(int frames, int parts, int passes) {
   Manifest m;

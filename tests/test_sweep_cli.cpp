@@ -276,3 +276,11 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("is of another render: its seed is 0, now 9"), std::string::npos) << r.output;
 }
+
+TEST_F(SweepCli, FrameNamesLongerThanAFileNameAreRefusedAtOnce) {
+  for (const char* pattern : {"x{v:>1000000000}.exr", "x{v:.1000000000f}.exr"}) {
+    CommandResult r = run("render " + scene() + " --sweep v=1,2 --frames '" + at(pattern) + "'");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("more than 255 (the longest file name)"), std::string::npos) << r.output;
+  }
+}
