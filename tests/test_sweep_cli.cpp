@@ -284,3 +284,36 @@ TEST_F(SweepCli, FrameNamesLongerThanAFileNameAreRefusedAtOnce) {
     EXPECT_NE(r.output.find("more than 255 (the longest file name)"), std::string::npos) << r.output;
   }
 }
+
+TEST_F(SweepCli, MergeNeverWritesOverAPiece) {
+  const std::string s = scene();
+  for (int k = 1; k <= 2; ++k)
+    ASSERT_EQ(run("render " + s + " --spp 2 -o " + at("A.exr") + " --part " + std::to_string(k) + "/2").status, 0);
+  const std::string pieces = at("A.part1of2.exr") + " " + at("A.part2of2.exr");
+  const std::string first = readText(at("A.part1of2.exr")), second = readText(at("A.part2of2.exr"));
+  fs::create_directories(dir_ / "sub");
+  fs::create_symlink(at("A.part1of2.exr"), at("link.exr"));
+  // The merged EXR beside a PNG named like a piece, a piece itself, by `..`, and through a link.
+  for (const std::string& output :
+       {at("A.part1of2.png"), at("A.part2of2.exr"), at("sub/../A.part2of2.exr"), at("link.png")}) {
+    CommandResult r = run("merge " + pieces + " -o " + output);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("which the merge reads"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(readText(at("A.part1of2.exr")), first);
+  EXPECT_EQ(readText(at("A.part2of2.exr")), second);
+  // A manifest whose frame is one of its own pieces.
+  const std::string env = "cd " + dir_.string() + " && ";
+  ASSERT_EQ(runShell(env + COLUMBA_BINARY + " slurm " + s + " --spp 2 --parts 2 --out-dir out").status, 0);
+  ASSERT_EQ(runShell(env + "for t in 0 1; do SLURM_ARRAY_TASK_ID=$t bash out/render.sbatch || exit 1; done").status, 0);
+  nlohmann::json j = nlohmann::json::parse(readText(dir_ / "out/manifest.json"));
+  j["frames"][0]["output"] = j["frames"][0]["pieces"][1]["file"];
+  std::ofstream(dir_ / "out/manifest.json") << j.dump();
+  const std::string piece = readText(dir_ / "out/parts/sphere.part2of2.exr");
+  CommandResult r = run("merge --manifest " + at("out/manifest.json"));
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("it is the piece '" + at("out/parts/sphere.part2of2.exr") + "', which the merge reads"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(readText(dir_ / "out/parts/sphere.part2of2.exr"), piece);
+}
