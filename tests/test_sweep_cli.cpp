@@ -317,3 +317,30 @@ TEST_F(SweepCli, MergeNeverWritesOverAPiece) {
       << r.output;
   EXPECT_EQ(readText(dir_ / "out/parts/sphere.part2of2.exr"), piece);
 }
+
+TEST_F(SweepCli, ASweepReplacesOnlyALocalSweepsManifest) {
+  const std::string s = scene();
+  const std::string env = "cd " + dir_.string() + " && ";
+  const std::string sweep =
+      std::string(COLUMBA_BINARY) + " render " + s + " --spp 1 --sweep angle=0,10 --frames 'f%d.exr'";
+  // A Slurm job's manifest in the directory the frames go to.
+  ASSERT_EQ(runShell(env + COLUMBA_BINARY + " slurm " + s + " --spp 1 --out-dir .").status, 0);
+  const std::string slurmManifest = readText(dir_ / "manifest.json");
+  CommandResult r = runShell(env + sweep);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("the manifest of a Slurm job"), std::string::npos) << r.output;
+  EXPECT_EQ(readText(dir_ / "manifest.json"), slurmManifest);
+  EXPECT_FALSE(fs::exists(dir_ / "f0.exr"));
+  // A file that is no manifest.
+  write("manifest.json", "{\"name\": \"an application's manifest\"}\n");
+  r = runShell(env + sweep);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("which is no Columba manifest"), std::string::npos) << r.output;
+  EXPECT_EQ(readText(dir_ / "manifest.json"), "{\"name\": \"an application's manifest\"}\n");
+  // An earlier local sweep's: replaced, as a rerun does.
+  fs::remove(dir_ / "manifest.json");
+  ASSERT_EQ(runShell(env + sweep).status, 0);
+  r = runShell(env + sweep);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(readManifest(at("manifest.json")).frames.size(), 2u);
+}
