@@ -28,7 +28,10 @@ struct TaskPiece {
 TaskPiece taskPiece(int task, int parts, int passes);
 int taskIndex(const TaskPiece& piece, int parts, int passes);
 
-// The job array's batch script and the merge job's.
+// The job array's batch script and the merge job's. Every value is quoted, for bash in the
+// commands and for sbatch in the #SBATCH lines (which bash reads as comments, so that a line
+// break in a value would start a command of its own): a value holding a control character is
+// refused with a std::runtime_error naming it.
 std::string renderBatchScript(const SlurmJob& job);
 std::string mergeBatchScript(const SlurmJob& job);
 
