@@ -194,10 +194,8 @@ int runRender(const RenderOptions& options) {
     const Defines defines = plan.frameDefines(f);
     const std::string label = frameLabel(plan.frames[size_t(f)]);
     if (sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
-    ParsedScene parsed = options.scene.scenePath.empty()
-                             ? loadDefaultScene(defines)
-                             : loadSceneFile(options.scene.scenePath, defines, builtinPlugins());
-    SourceLocation source{options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath, 0};
+    ParsedScene parsed = loadFrameScene(options.scene, defines);
+    const SourceLocation source = frameSceneSource(options.scene);
     for (const std::string& name : parsed.unusedDefines)
       if (warned.insert(name).second)
         fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
@@ -319,6 +317,15 @@ int runRender(const RenderOptions& options) {
   return 0;
 }
 }  // namespace
+
+ParsedScene loadFrameScene(const SceneOptions& options, const Defines& defines) {
+  return options.scenePath.empty() ? loadDefaultScene(defines)
+                                   : loadSceneFile(options.scenePath, defines, builtinPlugins());
+}
+
+SourceLocation frameSceneSource(const SceneOptions& options) {
+  return {options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
+}
 
 std::map<std::string, std::string> FramePlan::frameDefines(int f) const {
   std::map<std::string, std::string> all = defines;

@@ -3,12 +3,17 @@
 // piece (frame x part x pass), and a merge job that runs after all of them succeeded (afterok).
 // Task t renders frame t / (parts * passes), part (t / passes) % parts + 1 and pass
 // t % passes + 1; the task numbers stay the same when only missing pieces are resubmitted.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 #include "distribute/manifest.h"
 
 namespace columba {
+
+// The most array tasks of one job: Slurm's MaxArraySize allows 1,000 by default and at most
+// 4,000,000, and the manifest holds every task's piece.
+constexpr int64_t kMostArrayTasks = 1000000;
 
 struct SlurmJob {
   std::string columba;                       // the binary the tasks run (absolute)
