@@ -2,13 +2,19 @@
 // manifests and Slurm batch scripts (src/distribute/).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
 
+#include "cli_test_support.h"
 #include "distribute/manifest.h"
 #include "distribute/pieces.h"
 #include "distribute/slurm.h"
 #include "distribute/sweep.h"
+#include "temp_dir_test.h"
 
 using namespace columba;
 
@@ -206,6 +212,38 @@ TEST(Sweep, FrameFileNames) {
   EXPECT_EQ(frameFiles("x.exr", "", expandSweeps({})), std::vector<std::string>{"x.exr"});
 }
 
+TEST(Sweep, FrameFilesNoLongerThanAFileSystemTakes) {
+  std::vector<SweepFrame> frames = expandSweeps({parseSweep("v=1,2")});
+  // A width or precision beyond the longest file name is refused before it is formatted.
+  for (const char* pattern : {"x{v:>10000000}.exr", "x{v:.10000000f}.exr", "x{v:0300}.exr", "x{v:>256}.exr"}) {
+    try {
+      frameFileFromPattern(pattern, frames[0]);
+      ADD_FAILURE() << pattern;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("more than 255 (the longest file name)"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(frameFileFromPattern("x{v:>200}.exr", frames[0]).size(), 205u);
+  EXPECT_EQ(frameFileFromPattern("{v:0>5}_{v:.3f}_{v:07.2f}.exr", frames[1]), "00002_2.000_0002.00.exr");
+  // Names and paths that no file can have.
+  try {
+    frameFiles("", "x{v:>200}{v:>60}_%d.exr", frames);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a name in its path is 267 bytes long, more than 255"), std::string::npos)
+        << e.what();
+  }
+  std::string deep;
+  for (int i = 0; i < 17; ++i) deep += "{v:>240}/";
+  try {
+    frameFiles("", deep + "%d.exr", frames);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("its path is 4102 bytes long, more than 4095"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(frameFiles(std::string(300, 'o') + ".exr", "", frames), std::runtime_error);
+}
+
 namespace {
 Manifest sampleManifest(int frames, int parts, int passes) {
   Manifest m;
@@ -350,4 +388,193 @@ TEST(Slurm, JobIdsAndPrograms) {
   EXPECT_EQ(r.status, 3);
   EXPECT_EQ(r.output, "out\nerr\n");
   EXPECT_EQ(runProgram({"/nonexistent/sbatch"}).status, 127);
+}
+
+namespace {
+// A job whose every value is ordinary.
+SlurmJob plainJob() {
+  SlurmJob job;
+  job.columba = "/opt/columba/bin/columba";
+  job.workDir = "/home/me/project";
+  job.renderArguments = {"/s/scene.xml", "-D", "res=64", "--frames", "/o/parts/la%d.exr"};
+  job.manifestPath = "/o/manifest.json";
+  job.logDir = "/o/logs";
+  job.jobName = "columba-la";
+  job.partition = "short";
+  job.time = "30:00";
+  job.frames = 2;
+  job.parts = 3;
+  return job;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> all;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) all.push_back(line);
+  return all;
+}
+
+// The arguments sbatch takes from the text after "#SBATCH", read as its batch-script parser
+// reads them: words split at blanks, quotes grouping, a backslash escaping the next character
+// (within quotes too) and an unquoted '#' ending the line.
+std::vector<std::string> sbatchArguments(const std::string& text) {
+  std::vector<std::string> words;
+  std::string word;
+  bool inWord = false, escaped = false;
+  char quote = 0;
+  for (char c : text) {
+    if (escaped) {
+      word += c;
+      escaped = false;
+    } else if (c == '\\') {
+      escaped = inWord = true;
+    } else if (quote) {
+      if (c == quote)
+        quote = 0;
+      else
+        word += c;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+      inWord = true;
+    } else if (c == '#') {
+      break;
+    } else if (std::isspace(static_cast<unsigned char>(c))) {
+      if (inWord) words.push_back(word);
+      word.clear();
+      inWord = false;
+    } else {
+      word += c;
+      inWord = true;
+    }
+  }
+  if (inWord) words.push_back(word);
+  return words;
+}
+}  // namespace
+
+TEST(Slurm, ControlCharactersInAnyValueOfTheScriptsAreRefused) {
+  const std::pair<const char*, std::string SlurmJob::*> fields[] = {
+      {"the job name (--job-name)", &SlurmJob::jobName}, {"the partition (--partition)", &SlurmJob::partition},
+      {"the time limit (--time)", &SlurmJob::time},      {"the log directory", &SlurmJob::logDir},
+      {"the working directory", &SlurmJob::workDir},     {"the manifest", &SlurmJob::manifestPath},
+      {"the columba binary", &SlurmJob::columba}};
+  const std::pair<const char*, const char*> controls[] = {{"\n", "\\n"},     {"\r", "\\r"},     {"\t", "\\t"},
+                                                          {"\x01", "\\x01"}, {"\x1b", "\\x1b"}, {"\x7f", "\\x7f"}};
+  for (const auto& [control, shown] : controls) {
+    std::vector<SlurmJob> jobs;
+    std::vector<std::string> names;
+    for (const auto& [name, field] : fields) {
+      SlurmJob job = plainJob();
+      job.*field = std::string("x") + control + "touch FILE";
+      jobs.push_back(job);
+      names.push_back(name);
+    }
+    // A scene file whose name holds the character, and a -D value.
+    SlurmJob scene = plainJob();
+    scene.renderArguments[0] = std::string("/s/x") + control + "touch FILE.xml";
+    jobs.push_back(scene);
+    names.push_back("the render argument");
+    SlurmJob define = plainJob();
+    define.renderArguments[2] = std::string("res=6") + control + "4";
+    jobs.push_back(define);
+    names.push_back("the render argument");
+    for (size_t j = 0; j < jobs.size(); ++j)
+      for (auto script : {renderBatchScript, mergeBatchScript}) {
+        try {
+          script(jobs[j]);
+          ADD_FAILURE() << names[j] << " with " << shown << " was written into a script";
+        } catch (const std::runtime_error& e) {
+          const std::string message = e.what();
+          EXPECT_NE(message.find(names[j]), std::string::npos) << message;
+          EXPECT_NE(message.find(std::string("holds a control character (") + shown + ")"), std::string::npos)
+              << message;
+          EXPECT_EQ(message.find(control), std::string::npos) << "the message shows the character itself";
+        }
+      }
+  }
+}
+
+TEST(Slurm, AwkwardValuesStayWithinTheirLines) {
+  // Blanks, both quotes, $(...), backticks, ';', '#', '%' and backslashes: in the commands, bash
+  // must read them back as given; in the #SBATCH lines (comments to bash), sbatch must.
+  const std::string awkward = "a b 'c' \"d\" $(touch CANARY) `touch CANARY`; #e % \\f";
+  SlurmJob job = plainJob();
+  job.columba = "/opt/" + awkward + "/columba";
+  job.workDir = "/home/" + awkward;
+  job.renderArguments = {"/s/" + awkward + ".xml", "-D", "text=" + awkward, "--frames", "/o/" + awkward + "%d.exr"};
+  job.manifestPath = "/o/" + awkward + "/manifest.json";
+  job.logDir = "/o/" + awkward;
+  job.jobName = awkward;
+  job.partition = awkward;
+  job.time = awkward;
+  const std::string logDir = "/o/a b 'c' \"d\" $(touch CANARY) `touch CANARY`; #e %% \\f";  // % written %%
+  const std::map<std::string, std::string> sbatchValues = {{"--job-name", awkward + "-render"},
+                                                           {"--output", logDir + "/render_%A_%a.log"},
+                                                           {"--partition", awkward},
+                                                           {"--time", awkward}};
+  const std::string script = renderBatchScript(job), plain = renderBatchScript(plainJob());
+  const std::vector<std::string> got = lines(script), expected = lines(plain);
+  // Line for line the script of ordinary values, but for the lines that hold the values.
+  ASSERT_EQ(got.size(), expected.size()) << script;
+  std::set<std::string> changed;
+  for (size_t i = 0; i < got.size(); ++i) {
+    if (got[i] == expected[i]) continue;
+    const std::string kind = expected[i].substr(0, expected[i].find_first_of("= "));
+    changed.insert(kind == "#SBATCH" ? expected[i].substr(0, expected[i].find('=')) : kind);
+    if (kind == "#SBATCH") {
+      const std::string option = expected[i].substr(8, expected[i].find('=') - 8);
+      ASSERT_TRUE(sbatchValues.count(option)) << expected[i];
+      EXPECT_EQ(sbatchArguments(got[i].substr(8)), std::vector<std::string>{option + "=" + sbatchValues.at(option)})
+          << got[i];
+    }
+  }
+  EXPECT_EQ(changed, (std::set<std::string>{"#SBATCH --job-name", "#SBATCH --output", "#SBATCH --partition",
+                                            "#SBATCH --time", "cd", "/opt/columba/bin/columba"}))
+      << script;
+  const std::string merge = mergeBatchScript(job);
+  EXPECT_EQ(lines(merge).size(), lines(mergeBatchScript(plainJob())).size()) << merge;
+  EXPECT_NE(merge.find("#SBATCH --job-name=\"a b 'c' \\\"d\\\" $(touch CANARY) `touch CANARY`; #e % \\\\f-merge\"\n"),
+            std::string::npos)
+      << merge;
+}
+
+namespace {
+class SlurmScripts : public columba::testing::TempDirTest {};
+}  // namespace
+
+TEST_F(SlurmScripts, BashRunsTheCommandsWithAwkwardValuesAsGiven) {
+  const std::string awkward = "a b 'c' \"d\" $(touch CANARY) `touch CANARY`; #e % \\f";
+  const std::filesystem::path bin = dir_ / awkward, work = dir_ / ("work " + awkward);
+  std::filesystem::create_directories(bin);
+  std::filesystem::create_directories(work);
+  // A stand-in for columba that prints where it runs and its arguments, one a line.
+  std::ofstream(bin / "columba") << "#!/bin/sh\npwd\nfor a in \"$@\"; do printf '[%s]\\n' \"$a\"; done\n";
+  std::filesystem::permissions(bin / "columba", std::filesystem::perms::owner_all);
+  SlurmJob job = plainJob();
+  job.columba = (bin / "columba").string();
+  job.workDir = work.string();
+  job.renderArguments = {"/s/" + awkward + ".xml", "-D", "text=" + awkward};
+  job.manifestPath = (dir_ / awkward / "manifest.json").string();
+  job.jobName = job.partition = job.time = awkward;
+  const std::string render = write("render.sbatch", renderBatchScript(job));
+  const std::string merge = write("merge.sbatch", mergeBatchScript(job));
+  for (const std::string& script : {render, merge}) {
+    columba::testing::CommandResult r = columba::testing::runShell("bash -n " + shellQuote(script));
+    EXPECT_EQ(r.status, 0) << r.output;
+  }
+  // Task 4 of 2 frames x 3 parts: frame 1, part 2/3.
+  columba::testing::CommandResult r = columba::testing::runShell("cd " + shellQuote(dir_.string()) +
+                                                                 " && SLURM_ARRAY_TASK_ID=4 SLURM_CPUS_PER_TASK=2 "
+                                                                 "bash render.sbatch");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(work.string() + "\n[render]\n[/s/" + awkward + ".xml]\n[-D]\n[text=" + awkward +
+                          "]\n[--frame]\n[1]\n[--part]\n[2/3]\n[--threads]\n[2]\n"),
+            std::string::npos)
+      << r.output;
+  r = columba::testing::runShell("cd " + shellQuote(dir_.string()) + " && bash merge.sbatch");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(work.string() + "\n[merge]\n[--manifest]\n[" + job.manifestPath + "]\n"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "CANARY"));
+  EXPECT_FALSE(std::filesystem::exists(work / "CANARY"));
 }

@@ -10,6 +10,7 @@
 
 #include "cli_test_support.h"
 #include "distribute/manifest.h"
+#include "distribute/slurm.h"
 #include "io/image.h"
 #include "render_test_support.h"
 #include "temp_dir_test.h"
@@ -275,4 +276,186 @@ TEST_F(SweepCli, SlurmJobsRunTheirPiecesAndRerunsSubmitOnlyWhatIsMissing) {
                "--parts 3 --out-dir out");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("is of another render: its seed is 0, now 9"), std::string::npos) << r.output;
+}
+
+TEST_F(SweepCli, FrameNamesLongerThanAFileNameAreRefusedAtOnce) {
+  for (const char* pattern : {"x{v:>1000000000}.exr", "x{v:.1000000000f}.exr"}) {
+    CommandResult r = run("render " + scene() + " --sweep v=1,2 --frames '" + at(pattern) + "'");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("more than 255 (the longest file name)"), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(SweepCli, MergeNeverWritesOverAPiece) {
+  const std::string s = scene();
+  for (int k = 1; k <= 2; ++k)
+    ASSERT_EQ(run("render " + s + " --spp 2 -o " + at("A.exr") + " --part " + std::to_string(k) + "/2").status, 0);
+  const std::string pieces = at("A.part1of2.exr") + " " + at("A.part2of2.exr");
+  const std::string first = readText(at("A.part1of2.exr")), second = readText(at("A.part2of2.exr"));
+  fs::create_directories(dir_ / "sub");
+  fs::create_symlink(at("A.part1of2.exr"), at("link.exr"));
+  // The merged EXR beside a PNG named like a piece, a piece itself, by `..`, and through a link.
+  for (const std::string& output :
+       {at("A.part1of2.png"), at("A.part2of2.exr"), at("sub/../A.part2of2.exr"), at("link.png")}) {
+    CommandResult r = run("merge " + pieces + " -o " + output);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("which the merge reads"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(readText(at("A.part1of2.exr")), first);
+  EXPECT_EQ(readText(at("A.part2of2.exr")), second);
+  // A manifest whose frame is one of its own pieces.
+  const std::string env = "cd " + dir_.string() + " && ";
+  ASSERT_EQ(runShell(env + COLUMBA_BINARY + " slurm " + s + " --spp 2 --parts 2 --out-dir out").status, 0);
+  ASSERT_EQ(runShell(env + "for t in 0 1; do SLURM_ARRAY_TASK_ID=$t bash out/render.sbatch || exit 1; done").status, 0);
+  nlohmann::json j = nlohmann::json::parse(readText(dir_ / "out/manifest.json"));
+  j["frames"][0]["output"] = j["frames"][0]["pieces"][1]["file"];
+  std::ofstream(dir_ / "out/manifest.json") << j.dump();
+  const std::string piece = readText(dir_ / "out/parts/sphere.part2of2.exr");
+  CommandResult r = run("merge --manifest " + at("out/manifest.json"));
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("it is the piece '" + at("out/parts/sphere.part2of2.exr") + "', which the merge reads"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(readText(dir_ / "out/parts/sphere.part2of2.exr"), piece);
+}
+
+TEST_F(SweepCli, ASweepReplacesOnlyALocalSweepsManifest) {
+  const std::string s = scene();
+  const std::string env = "cd " + dir_.string() + " && ";
+  const std::string sweep =
+      std::string(COLUMBA_BINARY) + " render " + s + " --spp 1 --sweep angle=0,10 --frames 'f%d.exr'";
+  // A Slurm job's manifest in the directory the frames go to.
+  ASSERT_EQ(runShell(env + COLUMBA_BINARY + " slurm " + s + " --spp 1 --out-dir .").status, 0);
+  const std::string slurmManifest = readText(dir_ / "manifest.json");
+  CommandResult r = runShell(env + sweep);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("the manifest of a Slurm job"), std::string::npos) << r.output;
+  EXPECT_EQ(readText(dir_ / "manifest.json"), slurmManifest);
+  EXPECT_FALSE(fs::exists(dir_ / "f0.exr"));
+  // A file that is no manifest.
+  write("manifest.json", "{\"name\": \"an application's manifest\"}\n");
+  r = runShell(env + sweep);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("which is no Columba manifest"), std::string::npos) << r.output;
+  EXPECT_EQ(readText(dir_ / "manifest.json"), "{\"name\": \"an application's manifest\"}\n");
+  // An earlier local sweep's: replaced, as a rerun does.
+  fs::remove(dir_ / "manifest.json");
+  ASSERT_EQ(runShell(env + sweep).status, 0);
+  r = runShell(env + sweep);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(readManifest(at("manifest.json")).frames.size(), 2u);
+}
+
+TEST_F(SweepCli, SlurmRefusesControlCharactersBeforeWritingAnything) {
+  const std::string s = scene();
+  const struct {
+    std::vector<std::string> option;
+    std::string named;
+  } cases[] = {
+      {{"--job-name", "x\ntouch FILE"}, "the job name (--job-name) 'x\\ntouch FILE' holds a control character (\\n)"},
+      {{"--partition", "p\rq"}, "the partition (--partition) 'p\\rq' holds a control character (\\r)"},
+      {{"--time", "1:00\x01"}, "the time limit (--time) '1:00\\x01' holds a control character (\\x01)"},
+      {{"--out-dir", at("o\tq")}, "the render argument '" + at("o\\tq") + "/parts/sphere.exr'"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> command = {COLUMBA_BINARY, "slurm", s, "--spp", "2"};
+    if (c.option[0] != "--out-dir") command.insert(command.end(), {"--out-dir", at("out")});
+    command.insert(command.end(), c.option.begin(), c.option.end());
+    ProgramResult r = runProgram(command);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(c.named), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(at("out"))) << c.option[0];
+    EXPECT_FALSE(fs::exists(at("o\tq")));
+  }
+  // A scene file whose name holds a line break: its default job name and output directory would too.
+  write("x\ntouch FILE.xml", kScene);
+  CommandResult r = runShell("cd " + shellQuote(dir_.string()) + " && " + COLUMBA_BINARY +
+                             " slurm \"$(printf 'x\\ntouch FILE.xml')\"");
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("the render argument '" + at("x\\ntouch FILE.xml") + "' holds a control character (\\n)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2) << "only the scenes";
+}
+
+TEST_F(SweepCli, SlurmScriptsOfAwkwardValuesRunAsGiven) {
+  // Run from a directory, and named, with blanks, quotes, $(...), ';' and '#': the tasks and the
+  // merge find their files, and nothing else runs.
+  const fs::path work = dir_ / "work 'q' \"d\" $(touch CANARY); #x";
+  fs::create_directories(work);
+  std::ofstream(work / "sphere.xml") << kScene;
+  const std::string jobName = "a b'c\"$(touch CANARY);d #e \\f";
+  CommandResult r =
+      runShell("cd " + shellQuote(work.string()) + " && " + COLUMBA_BINARY +
+               " slurm sphere.xml --spp 2 --parts 2 --partition 'p q' --time 1:00 --job-name " + shellQuote(jobName));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path out = work / "slurm-sphere";
+  for (const char* script : {"render.sbatch", "merge.sbatch"}) {
+    r = runShell("bash -n " + shellQuote((out / script).string()));
+    EXPECT_EQ(r.status, 0) << script << ": " << r.output;
+  }
+  const std::string render = readText(out / "render.sbatch");
+  EXPECT_NE(render.find("\n#SBATCH --job-name=\"a b'c\\\"$(touch CANARY);d #e \\\\f-render\"\n"), std::string::npos)
+      << render;
+  EXPECT_NE(render.find("\n#SBATCH --partition=\"p q\"\n"), std::string::npos) << render;
+  r = runShell("cd " + shellQuote(dir_.string()) + " && for t in 0 1; do SLURM_ARRAY_TASK_ID=$t bash " +
+               shellQuote((out / "render.sbatch").string()) + " || exit 1; done && bash " +
+               shellQuote((out / "merge.sbatch").string()));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "sphere.exr")) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "CANARY"));
+  EXPECT_FALSE(fs::exists(work / "CANARY"));
+}
+
+TEST_F(SweepCli, SlurmRendersAgainAPieceCutShort) {
+  const std::string slurm =
+      "cd " + dir_.string() + " && " + COLUMBA_BINARY + " slurm " + scene() + " --spp 2 --parts 2 --out-dir out";
+  ASSERT_EQ(runShell(slurm).status, 0);
+  CommandResult r = runShell("cd " + dir_.string() +
+                             " && for t in 0 1; do SLURM_ARRAY_TASK_ID=$t bash out/render.sbatch" + " || exit 1; done");
+  ASSERT_EQ(r.status, 0) << r.output;
+  // Its header whole, its pixels not.
+  fs::resize_file(dir_ / "out/parts/sphere.part1of2.exr", 1200);
+  r = runShell(slurm);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("1 to render, 1 frame to merge"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--array=0 "), std::string::npos) << r.output;
+  Manifest m = readManifest((dir_ / "out/manifest.json").string());
+  EXPECT_EQ(m.frames[0].pieces[0].status, "pending");
+  EXPECT_EQ(m.frames[0].pieces[1].status, "done");
+}
+
+TEST_F(SweepCli, SlurmRefusesSplitsEveryTaskWouldFail) {
+  const std::string s = scene();
+  std::string tracer = kScene;
+  tracer.replace(tracer.find("<integrator type=\"direct\"/>"), 27, "<integrator type=\"ptracer\"/>");
+  const std::string ptracer = write("ptracer.xml", tracer);
+  const std::pair<std::string, std::string> cases[] = {
+      {s + " --spp 2 --parts 13", "--parts 13: the image of " + s + " has 12 rows, and a part is at least one row"},
+      {s + " --spp 2 --passes 3", "--passes 3: " + s + " renders 2 samples per pixel (--spp)"},
+      {s + " --passes 4", "--passes 4: " + s + " renders 3 samples per pixel (its sampler's sample_count)"},
+      {s + " --sweep spp=4,2 --passes 3", "--passes 3: " + s + " (frame 1, spp=2) renders 2 samples per pixel"},
+      {ptracer + " --spp 2", ptracer + ": its integrator is ptracer, which renders whole images"},
+      {s + " --spp 2 --parts 1000 --passes 100000",
+       "1 frame x --parts 1000 x --passes 100000 make 100000000 array tasks, more than 1000000"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    CommandResult r = run("slurm " + arguments + " --out-dir " + at("out"));
+    EXPECT_NE(r.status, 0) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(at("out"))) << arguments;
+  }
+}
+
+TEST_F(SweepCli, SlurmFramesStayInTheOutputDirectory) {
+  const std::string s = scene();
+  for (const char* frames : {"../../x%d.exr", "/tmp/x%d.exr", "{d}/x.exr", "a/../../x%d.exr"}) {
+    CommandResult r = run("slurm " + s + " --spp 1 --sweep d=..,y --frames '" + frames + "' --out-dir " + at("out"));
+    EXPECT_NE(r.status, 0) << frames << "\n" << r.output;
+    EXPECT_NE(r.output.find("is not in --out-dir '" + at("out") + "'"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(at("out"))) << frames;
+  }
+  CommandResult r = run("slurm " + s + " --spp 1 --sweep d=..,y --frames 'a/../f{d}.exr' --out-dir " + at("out"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(fs::path(readManifest(at("out/manifest.json")).frames[0].output).lexically_normal(), at("out/f...exr"));
 }

@@ -20,8 +20,8 @@ struct MergeOptions {
   int frame = -1;
 };
 
-// OUT.exr and OUT.png from -o naming either.
-std::pair<std::string, std::string> outputPair(const std::string& output) {
+// OUT.exr and OUT.png from -o naming either, neither of them one of the pieces.
+std::pair<std::string, std::string> outputPair(const std::string& output, const std::vector<std::string>& pieces) {
   std::filesystem::path exr = output, png = output;
   if (checkOutputImagePath(output) == ImageFormat::EXR)
     png.replace_extension(".png");
@@ -29,6 +29,8 @@ std::pair<std::string, std::string> outputPair(const std::string& output) {
     exr.replace_extension(".exr");
   checkOutputImagePath(exr.string());
   checkOutputImagePath(png.string());
+  refuseWritingOverAPiece(exr.string(), pieces);
+  refuseWritingOverAPiece(png.string(), pieces);
   return {exr.string(), png.string()};
 }
 
@@ -40,8 +42,8 @@ std::string mergedFrom(const MergedImage& merged) {
                            : fmt::format("{} parts (bit-identical to a one-piece render)", merged.parts);
 }
 
-void writeMerged(const MergedImage& merged, const std::string& output) {
-  auto [exr, png] = outputPair(output);
+void writeMerged(const MergedImage& merged, const std::pair<std::string, std::string>& output) {
+  const auto& [exr, png] = output;
   ImageMetadata metadata = pieceMetadata(merged.info);
   metadata.emplace_back("Merged from", mergedFrom(merged));
   writeEXRAndPNG(exr, png, merged.image, metadata);
@@ -49,9 +51,9 @@ void writeMerged(const MergedImage& merged, const std::string& output) {
 
 int mergeFiles(const MergeOptions& options) {
   if (options.output.empty()) throw std::runtime_error("merge needs -o OUT.exr (or --manifest FILE)");
-  outputPair(options.output);  // checked before reading the pieces
+  const auto output = outputPair(options.output, options.pieces);  // checked before reading the pieces
   MergedImage merged = mergePieceFiles(options.pieces);
-  writeMerged(merged, options.output);
+  writeMerged(merged, output);
   fmt::print("Merged {} pieces into {}: {}\n", options.pieces.size(), options.output, mergedFrom(merged));
   return 0;
 }
@@ -68,7 +70,14 @@ int mergeManifest(const MergeOptions& options) {
       ++skipped;
       continue;
     }
-    std::vector<std::string> problems;
+    std::vector<std::string> problems, files;
+    for (const ManifestPiece& p : frame.pieces) files.push_back(p.file);
+    std::pair<std::string, std::string> output;
+    try {
+      output = outputPair(frame.output, files);
+    } catch (const std::exception& e) {
+      problems.push_back(e.what());
+    }
     std::vector<Piece> pieces;
     for (ManifestPiece& p : frame.pieces) {
       std::string what = p.part ? "part " + p.part->str() : "";
@@ -92,7 +101,7 @@ int mergeManifest(const MergeOptions& options) {
     if (problems.empty()) {
       try {
         MergedImage image = mergePieces(pieces);
-        writeMerged(image, frame.output);
+        writeMerged(image, output);
         frame.status = "done";
         frame.spp = image.info.spp;
         frame.seconds = image.info.seconds;

@@ -92,6 +92,26 @@ std::string defaultManifestPath(const RenderOptions& options) {
   return out.replace_extension().string() + ".manifest.json";
 }
 
+// A sweep replaces only a local sweep's manifest: not a Slurm job's (whose merge job and reruns
+// read it), nor a file that is no manifest (a default name such as ./manifest.json may be taken).
+void refuseReplacingManifest(const std::string& path) {
+  if (!std::filesystem::exists(path)) return;
+  Manifest old;
+  try {
+    old = readManifest(path);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(
+        fmt::format("the sweep's manifest would replace '{}', which is no Columba manifest ({}): "
+                    "give --manifest FILE, or remove it",
+                    path, e.what()));
+  }
+  if (!old.renderScript.empty() || !old.submissions.empty())
+    throw std::runtime_error(fmt::format(
+        "the sweep's manifest would replace '{}', the manifest of a Slurm job (columba slurm): give --manifest FILE, "
+        "or put the frames elsewhere",
+        path));
+}
+
 std::string frameLabel(const SweepFrame& frame) {
   std::string label;
   for (const auto& [name, value] : frame.values) label += (label.empty() ? "" : " ") + name + "=" + value;
@@ -142,6 +162,7 @@ int runRender(const RenderOptions& options) {
   const std::string manifestPath = options.manifest.empty() ? defaultManifestPath(options) : options.manifest;
   Manifest manifest;
   if (keepManifest) {
+    refuseReplacingManifest(manifestPath);
     manifest.columbaVersion = kColumbaVersion;
     manifest.scene = options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath;
     manifest.sceneHash = plan.sceneHash;
@@ -177,10 +198,8 @@ int runRender(const RenderOptions& options) {
     const Defines defines = plan.frameDefines(f);
     const std::string label = frameLabel(plan.frames[size_t(f)]);
     if (sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
-    ParsedScene parsed = options.scene.scenePath.empty()
-                             ? loadDefaultScene(defines)
-                             : loadSceneFile(options.scene.scenePath, defines, builtinPlugins());
-    SourceLocation source{options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath, 0};
+    ParsedScene parsed = loadFrameScene(options.scene, defines);
+    const SourceLocation source = frameSceneSource(options.scene);
     for (const std::string& name : parsed.unusedDefines)
       if (warned.insert(name).second)
         fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
@@ -306,6 +325,15 @@ int runRender(const RenderOptions& options) {
   return 0;
 }
 }  // namespace
+
+ParsedScene loadFrameScene(const SceneOptions& options, const Defines& defines) {
+  return options.scenePath.empty() ? loadDefaultScene(defines)
+                                   : loadSceneFile(options.scenePath, defines, builtinPlugins());
+}
+
+SourceLocation frameSceneSource(const SceneOptions& options) {
+  return {options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
+}
 
 std::map<std::string, std::string> FramePlan::frameDefines(int f) const {
   std::map<std::string, std::string> all = defines;

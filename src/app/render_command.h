@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "distribute/sweep.h"
+#include "scene/scene_loader.h"
 
 namespace columba {
 
@@ -41,6 +42,10 @@ struct FramePlan {
 // `output` is -o (or "" for the scene's name in the working directory); throws std::runtime_error
 // for a bad sweep, pattern, output name or scene path, before any work.
 FramePlan planFrames(const SceneOptions& options, const std::string& output);
+// A frame's scene with its -D values (`defines`), loaded as `columba render` loads it (the
+// built-in scene when options.scenePath is empty), and the name messages give it.
+ParsedScene loadFrameScene(const SceneOptions& options, const Defines& defines);
+SourceLocation frameSceneSource(const SceneOptions& options);
 // "name=value" lines, as images record their defines.
 std::string describeDefines(const std::map<std::string, std::string>& defines);
 // A whole number given for `option`, or 0 if it was not given.

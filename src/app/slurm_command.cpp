@@ -7,12 +7,15 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "app/render_command.h"
+#include "core/quiet_warnings.h"
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/slurm.h"
 #include "samplers/sampler_parameters.h"
+#include "scene/scene.h"
 
 namespace columba {
 
@@ -38,12 +41,13 @@ std::string nowISO() {
 }
 
 // A finished image (whole or piece) of this render at `path`: complete, of the same scene text,
-// defines and seed.
+// defines and seed, and whole: its pixels are read, so that a file cut short (a full disk, a
+// copy broken off) is rendered again instead of failing every merge.
 bool finishedImage(const std::string& path, const Manifest& manifest, const ManifestFrame& frame) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return false;
   try {
-    PieceInfo info = pieceInfoFromFile(path, readEXRFile(path, false));
+    PieceInfo info = pieceInfoFromFile(path, readEXRFile(path));
     return info.complete && info.sceneHash == manifest.sceneHash && info.defines == describeDefines(frame.defines) &&
            info.seed == frame.seed && (manifest.spp == 0 || info.spp == manifest.spp);
   } catch (const std::exception&) {
@@ -92,6 +96,46 @@ std::string activeJobs(const Manifest& manifest) {
   return active;
 }
 
+// Refuses, before any job is written, a split that every task of a frame would fail at: a
+// light-tracing scene (whose image is rendered whole), more parts than the image has rows, more
+// passes than samples per pixel. Every frame's scene is loaded once, as its tasks load it.
+void checkSplit(const SceneOptions& options, const FramePlan& plan, int sppOption, int parts, int passes) {
+  const SourceLocation source = frameSceneSource(options);
+  for (size_t f = 0; f < plan.frames.size(); ++f) {
+    std::optional<QuietWarnings> quiet;
+    if (f > 0) quiet.emplace();  // shown once, for the first frame
+    const Scene scene(loadFrameScene(options, plan.frameDefines(int(f))), source);
+    std::string frame;
+    for (const auto& [name, value] : plan.frames[f].values) frame += fmt::format(", {}={}", name, value);
+    if (!frame.empty()) frame = fmt::format(" (frame {}{})", f, frame);
+    if (scene.particleTracer())
+      throw std::runtime_error(fmt::format(
+          "{}{}: its integrator is ptracer, which renders whole images; a Slurm job renders every frame in parts",
+          source.file, frame));
+    const int rows = scene.sensor().film().crop().height();
+    if (parts > rows)
+      throw std::runtime_error(fmt::format("--parts {}: the image of {}{} has {} rows, and a part is at least one row",
+                                           parts, source.file, frame, rows));
+    const int spp = sppOption > 0 ? sppOption : scene.sensor().sampler().sampleCount();
+    if (passes > spp)
+      throw std::runtime_error(
+          fmt::format("--passes {}: {}{} renders {} samples per pixel ({}), and a pass is at least one sample", passes,
+                      source.file, frame, spp, sppOption > 0 ? "--spp" : "its sampler's sample_count"));
+  }
+}
+
+// Every frame and piece of the job in `outDir`, as --out-dir promises (--frames may not leave it).
+void checkInside(const fs::path& outDir, const std::string& framesPattern, const std::vector<std::string>& files) {
+  for (const std::string& file : files) {
+    const fs::path relative = fs::path(file).lexically_normal().lexically_relative(outDir);
+    if (relative.empty() || relative == "." || *relative.begin() == "..")
+      throw std::runtime_error(
+          fmt::format("--frames '{}': '{}' is not in --out-dir '{}'; --frames names the frames "
+                      "inside it (give a relative name without '..')",
+                      framesPattern, file, outDir.string()));
+  }
+}
+
 void writeScript(const std::string& path, const std::string& text) {
   const std::string temporary = path + ".tmp";
   {
@@ -124,9 +168,45 @@ int runSlurm(const SlurmOptions& options) {
     frameOptions.framesPattern = (outDir / options.scene.framesPattern).string();
     pieceOptions.framesPattern = (partsDir / options.scene.framesPattern).string();
   }
-  fs::create_directories(outDir);
   const FramePlan plan = planFrames(frameOptions, (outDir / (stem + ".exr")).string());
   const FramePlan piecePlan = planFrames(pieceOptions, (partsDir / (stem + ".exr")).string());
+  checkInside(outDir, options.scene.framesPattern, plan.files);
+  checkInside(outDir, options.scene.framesPattern, piecePlan.files);
+  const int64_t taskCount = int64_t(plan.frames.size()) * parts * passes;
+  if (taskCount > kMostArrayTasks)
+    throw std::runtime_error(fmt::format(
+        "{} frame{} x --parts {} x --passes {} make {} array tasks, more than {} (Slurm's MaxArraySize allows 1,000 "
+        "by default)",
+        plan.frames.size(), plan.frames.size() == 1 ? "" : "s", parts, passes, taskCount, kMostArrayTasks));
+  checkSplit(options.scene, plan, sppOption, parts, passes);
+
+  SlurmJob job;
+  job.columba = fs::read_symlink("/proc/self/exe").string();
+  job.workDir = fs::current_path().string();
+  job.manifestPath = manifestPath.string();
+  job.logDir = logDir.string();
+  job.jobName = options.jobName.empty() ? "columba-" + stem : options.jobName;
+  job.partition = options.partition;
+  job.time = options.time;
+  job.cpusPerTask = cpus;
+  job.frames = int(plan.frames.size());
+  job.parts = parts;
+  job.passes = passes;
+  if (!frameOptions.scenePath.empty()) job.renderArguments.push_back(frameOptions.scenePath);
+  for (const std::string& d : options.scene.defines) job.renderArguments.insert(job.renderArguments.end(), {"-D", d});
+  if (sppOption) job.renderArguments.insert(job.renderArguments.end(), {"--spp", std::to_string(sppOption)});
+  job.renderArguments.insert(job.renderArguments.end(), {"--seed", std::to_string(options.scene.seed)});
+  if (options.scene.spectral)
+    job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
+  for (const SweepAxis& axis : plan.axes) job.renderArguments.insert(job.renderArguments.end(), {"--sweep", axis.spec});
+  if (pieceOptions.framesPattern.empty())
+    job.renderArguments.insert(job.renderArguments.end(), {"-o", (partsDir / (stem + ".exr")).string()});
+  else
+    job.renderArguments.insert(job.renderArguments.end(), {"--frames", pieceOptions.framesPattern});
+  // Written before anything is created, so that a value no script can hold is refused first.
+  const std::string renderText = renderBatchScript(job), mergeText = mergeBatchScript(job);
+
+  fs::create_directories(outDir);
   for (const std::string& file : plan.files) fs::create_directories(fs::path(file).parent_path());
   for (const std::string& file : piecePlan.files) fs::create_directories(fs::path(file).parent_path());
   fs::create_directories(logDir);
@@ -186,39 +266,15 @@ int runSlurm(const SlurmOptions& options) {
       manifest, [](const ManifestFrame& f) { return f.status == "done"; },
       [](const ManifestPiece& p) { return p.status == "done"; });
 
-  SlurmJob job;
-  job.columba = fs::read_symlink("/proc/self/exe").string();
-  job.workDir = fs::current_path().string();
-  job.manifestPath = manifestPath.string();
-  job.logDir = logDir.string();
-  job.jobName = options.jobName.empty() ? "columba-" + stem : options.jobName;
-  job.partition = options.partition;
-  job.time = options.time;
-  job.cpusPerTask = cpus;
-  job.frames = int(plan.frames.size());
-  job.parts = parts;
-  job.passes = passes;
-  if (!frameOptions.scenePath.empty()) job.renderArguments.push_back(frameOptions.scenePath);
-  for (const std::string& d : options.scene.defines) job.renderArguments.insert(job.renderArguments.end(), {"-D", d});
-  if (sppOption) job.renderArguments.insert(job.renderArguments.end(), {"--spp", std::to_string(sppOption)});
-  job.renderArguments.insert(job.renderArguments.end(), {"--seed", std::to_string(options.scene.seed)});
-  if (options.scene.spectral)
-    job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
-  for (const SweepAxis& axis : plan.axes) job.renderArguments.insert(job.renderArguments.end(), {"--sweep", axis.spec});
-  if (pieceOptions.framesPattern.empty())
-    job.renderArguments.insert(job.renderArguments.end(), {"-o", (partsDir / (stem + ".exr")).string()});
-  else
-    job.renderArguments.insert(job.renderArguments.end(), {"--frames", pieceOptions.framesPattern});
   const std::string renderScript = (outDir / "render.sbatch").string(),
                     mergeScript = (outDir / "merge.sbatch").string();
   manifest.renderScript = renderScript;
   manifest.mergeScript = mergeScript;
   manifest.logDir = logDir.string();
-  writeScript(renderScript, renderBatchScript(job));
-  writeScript(mergeScript, mergeBatchScript(job));
+  writeScript(renderScript, renderText);
+  writeScript(mergeScript, mergeText);
   writeManifest(manifestPath.string(), manifest);
 
-  const int taskCount = job.frames * parts * passes;
   fmt::print("{} frame{} x {} part{} x {} pass{} = {} array tasks; {} to render, {} frame{} to merge\n", job.frames,
              job.frames == 1 ? "" : "s", parts, parts == 1 ? "" : "s", passes, passes == 1 ? "" : "es", taskCount,
              work.tasks.size(), work.framesToMerge.size(), work.framesToMerge.size() == 1 ? "" : "s");

@@ -20,11 +20,28 @@ int taskIndex(const TaskPiece& piece, int parts, int passes) {
   return (piece.frame * parts + piece.part - 1) * passes + piece.pass - 1;
 }
 
+namespace {
+bool needsNoQuotes(const std::string& word) {
+  return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("@%+=:,./-_", c) != nullptr;
+  });
+}
+
+// `word` quoted as one argument of an #SBATCH line: sbatch reads backslashes as escapes even
+// within quotes, so a shell's quoting would lose them.
+std::string sbatchQuote(const std::string& word) {
+  if (needsNoQuotes(word)) return word;
+  std::string quoted = "\"";
+  for (char c : word) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+}  // namespace
+
 std::string shellQuote(const std::string& word) {
-  if (!word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("@%+=:,./-_", c) != nullptr;
-      }))
-    return word;
+  if (needsNoQuotes(word)) return word;
   std::string quoted = "'";
   for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
@@ -51,16 +68,67 @@ std::string arraySpec(std::vector<int> tasks) {
 }
 
 namespace {
+// `text` with its control characters written as C escapes, for messages.
+std::string visible(const std::string& text) {
+  std::string shown;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n')
+      shown += "\\n";
+    else if (c == '\r')
+      shown += "\\r";
+    else if (c == '\t')
+      shown += "\\t";
+    else if (u < 0x20 || u == 0x7f)
+      shown += fmt::format("\\x{:02x}", u);
+    else
+      shown += c;
+  }
+  return shown;
+}
+
+void refuseControlCharacters(const char* what, const std::string& value) {
+  for (char c : value) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f)
+      throw std::runtime_error(fmt::format(
+          "cannot write a Slurm batch script: {} '{}' holds a control character ({}), which a batch script cannot "
+          "hold safely",
+          what, visible(value), visible(std::string(1, c))));
+  }
+}
+
+// Every value the scripts hold.
+void checkJob(const SlurmJob& job) {
+  refuseControlCharacters("the columba binary", job.columba);
+  refuseControlCharacters("the working directory", job.workDir);
+  for (const std::string& argument : job.renderArguments) refuseControlCharacters("the render argument", argument);
+  refuseControlCharacters("the manifest", job.manifestPath);
+  refuseControlCharacters("the log directory", job.logDir);
+  refuseControlCharacters("the job name (--job-name)", job.jobName);
+  refuseControlCharacters("the partition (--partition)", job.partition);
+  refuseControlCharacters("the time limit (--time)", job.time);
+}
+
+std::string sbatchLine(const std::string& option, const std::string& value) {
+  return "#SBATCH " + option + "=" + sbatchQuote(value) + "\n";
+}
+
+// `log` names a file in the log directory by Slurm's replacement symbols (%A, %a, %j); a '%' in
+// the directory's own name is written %%, which Slurm reads as a '%'.
 std::string sbatchHeader(const SlurmJob& job, const std::string& name, const std::string& log, int cpus) {
-  std::string text = fmt::format(
-      "#SBATCH --job-name={}\n#SBATCH --output={}\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task={}\n", name, log, cpus);
-  if (!job.partition.empty()) text += "#SBATCH --partition=" + job.partition + "\n";
-  if (!job.time.empty()) text += "#SBATCH --time=" + job.time + "\n";
+  std::string logDir;
+  for (char c : job.logDir) logDir += c == '%' ? std::string("%%") : std::string(1, c);
+  std::string text = sbatchLine("--job-name", name) + sbatchLine("--output", logDir + "/" + log) +
+                     "#SBATCH --ntasks=1\n" + fmt::format("#SBATCH --cpus-per-task={}\n", cpus);
+  if (!job.partition.empty()) text += sbatchLine("--partition", job.partition);
+  if (!job.time.empty()) text += sbatchLine("--time", job.time);
   return text;
 }
 }  // namespace
 
 std::string renderBatchScript(const SlurmJob& job) {
+  checkJob(job);
   const int perFrame = job.parts * job.passes, tasks = job.frames * perFrame;
   std::string text = "#!/bin/bash\n";
   text += fmt::format(
@@ -68,7 +136,7 @@ std::string renderBatchScript(const SlurmJob& job) {
       "# Task t renders frame t / {}, part (t / {}) % {} + 1, pass t % {} + 1. Written by `columba slurm`,\n"
       "# which prints the sbatch command with the tasks still missing (all: --array=0-{}).\n",
       job.frames, job.parts, job.passes, tasks, perFrame, job.passes, job.parts, job.passes, tasks - 1);
-  text += sbatchHeader(job, job.jobName + "-render", job.logDir + "/render_%A_%a.log", job.cpusPerTask);
+  text += sbatchHeader(job, job.jobName + "-render", "render_%A_%a.log", job.cpusPerTask);
   text += "set -uo pipefail\n";
   text += "task=${SLURM_ARRAY_TASK_ID:?submit this script as a job array: sbatch --array=...}\n";
   text += fmt::format("frame=$(( task / {} ))\npart=$(( task / {} % {} + 1 ))\npass=$(( task % {} + 1 ))\n", perFrame,
@@ -97,12 +165,13 @@ std::string renderBatchScript(const SlurmJob& job) {
 }
 
 std::string mergeBatchScript(const SlurmJob& job) {
+  checkJob(job);
   std::string text = "#!/bin/bash\n";
   text += fmt::format(
       "# Columba: merges the pieces of {} frame(s) into their images once every render task has succeeded\n"
       "# (submitted with --dependency=afterok:RENDER_JOB); frames already merged are left alone.\n",
       job.frames);
-  text += sbatchHeader(job, job.jobName + "-merge", job.logDir + "/merge_%j.log", 1);
+  text += sbatchHeader(job, job.jobName + "-merge", "merge_%j.log", 1);
   text += "set -uo pipefail\n";
   text += "echo \"columba merge: job ${SLURM_JOB_ID:-?} on $(hostname), started $(date -Is)\"\n";
   text += "cd " + shellQuote(job.workDir) + " || exit 1\n";

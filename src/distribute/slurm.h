@@ -3,12 +3,17 @@
 // piece (frame x part x pass), and a merge job that runs after all of them succeeded (afterok).
 // Task t renders frame t / (parts * passes), part (t / passes) % parts + 1 and pass
 // t % passes + 1; the task numbers stay the same when only missing pieces are resubmitted.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 #include "distribute/manifest.h"
 
 namespace columba {
+
+// The most array tasks of one job: Slurm's MaxArraySize allows 1,000 by default and at most
+// 4,000,000, and the manifest holds every task's piece.
+constexpr int64_t kMostArrayTasks = 1000000;
 
 struct SlurmJob {
   std::string columba;                       // the binary the tasks run (absolute)
@@ -28,7 +33,10 @@ struct TaskPiece {
 TaskPiece taskPiece(int task, int parts, int passes);
 int taskIndex(const TaskPiece& piece, int parts, int passes);
 
-// The job array's batch script and the merge job's.
+// The job array's batch script and the merge job's. Every value is quoted, for bash in the
+// commands and for sbatch in the #SBATCH lines (which bash reads as comments, so that a line
+// break in a value would start a command of its own): a value holding a control character is
+// refused with a std::runtime_error naming it.
 std::string renderBatchScript(const SlurmJob& job);
 std::string mergeBatchScript(const SlurmJob& job);
 

@@ -16,6 +16,9 @@ namespace columba {
 namespace {
 
 constexpr size_t kMostFrames = 1000000;
+// The longest file name and path Linux takes (NAME_MAX, PATH_MAX): a frame's file is refused
+// before any work when it could not be created.
+constexpr size_t kLongestFileName = 255, kLongestPath = 4095;
 
 bool parseNumber(const std::string& text, double& value) {
   if (text.empty()) return false;
@@ -66,6 +69,22 @@ const std::string& valueOf(const SweepFrame& frame, const std::string& name, con
   for (const auto& [n, v] : frame.values) names += (names.empty() ? "" : ", ") + n;
   throw std::runtime_error(fmt::format("--frames '{}': {{{}}} names no swept variable (swept: {})", pattern, name,
                                        names.empty() ? "none" : names));
+}
+
+// A name cut to its first characters, for messages.
+std::string shortened(const std::string& name) { return name.size() <= 80 ? name : name.substr(0, 80) + "..."; }
+
+void checkFileNameLength(const std::string& file) {
+  if (file.size() > kLongestPath)
+    throw std::runtime_error(fmt::format("cannot write '{}': its path is {} bytes long, more than {}", shortened(file),
+                                         file.size(), kLongestPath));
+  for (size_t start = 0; start < file.size();) {
+    size_t end = std::min(file.find('/', start), file.size());
+    if (end - start > kLongestFileName)
+      throw std::runtime_error(fmt::format("cannot write '{}': a name in its path is {} bytes long, more than {}",
+                                           shortened(file), end - start, kLongestFileName));
+    start = end + 1;
+  }
 }
 
 }  // namespace
@@ -183,6 +202,18 @@ std::string frameFileFromPattern(const std::string& pattern, const SweepFrame& f
         out += safeForFileName(value);
       } else {
         const std::string spec = "{:" + field.substr(colon + 1) + "}";
+        // A width or precision is a run of digits (the fill, if a digit, is one alone): bounded
+        // before formatting, which would make a string as long as either.
+        for (size_t d = colon + 1; d < field.size();) {
+          size_t end = d, first = d;
+          while (end < field.size() && std::isdigit(static_cast<unsigned char>(field[end]))) ++end;
+          while (first < end && field[first] == '0') ++first;
+          if (end - first > 3 || (end > first && std::stoi(field.substr(first, end - first)) > int(kLongestFileName)))
+            throw std::runtime_error(
+                fmt::format("--frames '{}': {{{}}}: a width or precision of {}, more than {} (the longest file name)",
+                            pattern, field, field.substr(d, end - d), kLongestFileName));
+          d = std::max(end, d + 1);
+        }
         double number = 0;
         if (!parseNumber(value, number))
           throw std::runtime_error(
@@ -218,6 +249,7 @@ std::vector<std::string> frameFiles(const std::string& output, const std::string
   std::map<std::string, int> first;
   for (const SweepFrame& frame : frames) {
     files.push_back(pattern.empty() ? frameFileFromOutput(output, frame) : frameFileFromPattern(pattern, frame));
+    checkFileNameLength(files.back());
     auto [at, inserted] = first.emplace(files.back(), frame.index);
     if (!inserted)
       throw std::runtime_error(fmt::format("frames {} and {} would both be written to '{}'{}", at->second, frame.index,

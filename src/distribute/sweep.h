@@ -34,11 +34,13 @@ std::vector<SweepFrame> expandSweeps(const std::vector<SweepAxis>& axes);
 // output itself when the frame has no values. From a --frames pattern: "%d" (or "%03d", "%5d",
 // ...) is the frame index, "{name}" a swept value as given and "{name:spec}" the value
 // formatted by a {fmt} spec ("{angle:03}" writes -10, 000, 010); "%%", "{{" and "}}" are
-// literal. Throws std::runtime_error for a malformed pattern or an unknown name.
+// literal. Throws std::runtime_error for a malformed pattern, an unknown name, or a width or
+// precision above 255 (the longest file name).
 std::string frameFileFromOutput(const std::string& output, const SweepFrame& frame);
 std::string frameFileFromPattern(const std::string& pattern, const SweepFrame& frame);
 // The frames' files (from the pattern if it is not empty, else from the output); throws if two
-// frames would get the same file.
+// frames would get the same file, or if a file's name or path is longer than Linux allows (255
+// and 4,095 bytes).
 std::vector<std::string> frameFiles(const std::string& output, const std::string& pattern,
                                     const std::vector<SweepFrame>& frames);
 
