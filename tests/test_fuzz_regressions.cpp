@@ -38,6 +38,11 @@ const std::map<std::string, Reader>& readers() {
       {"serialized_mesh", columba::fuzz::serializedMeshFromBytes},
       {"sdf_grid", columba::fuzz::sdfGridFromBytes},
       {"exr_envmap", columba::fuzz::exrEnvmapFromBytes},
+      {"hdr_envmap", columba::fuzz::hdrEnvmapFromBytes},
+      {"bitmap", columba::fuzz::bitmapFromBytes},
+      {"merge_piece", columba::fuzz::mergePieceFromBytes},
+      {"manifest", columba::fuzz::manifestFromBytes},
+      {"spectra_csv", columba::fuzz::spectraCSVFromBytes},
   };
   return r;
 }
