@@ -185,8 +185,12 @@ void mergePieceFromBytes(const uint8_t* data, size_t size) {
   std::string path = writeScratchFile(data, size, ".part1of2.exr");
   rejectingWithInputError([&] {
     Piece piece = loadPiece(path);
-    try {
+    if (!piece.info.part) {
       (void)mergePieces({piece});
+      return;
+    }
+    try {
+      (void)mergePieces({piece});  // part 2 is missing
     } catch (const std::runtime_error&) {
     }
     (void)mergePieces({part2, piece});

@@ -35,8 +35,8 @@ void hdrEnvmapFromBytes(const uint8_t* data, size_t size);
 // then a texture and a few lookups); a PNG is also read through readPNG, as `fit --mask` and
 // `montage` read it.
 void bitmapFromBytes(const uint8_t* data, size_t size);
-// A piece of a split render (loadPiece), merged alone and after part 2 of 2 of a 16 x 16 frame
-// (fuzzPieceInfo), which part 1 of fuzz/seeds/merge_piece completes. loadPiece and mergePieces
+// A piece of a split render (loadPiece), merged alone and, if it is a part, after part 2 of 2 of
+// a 16 x 16 frame, which part 1 of fuzz/seeds/merge_piece completes. loadPiece and mergePieces
 // reject bad pieces with std::runtime_error naming the file: reported as an InputError.
 void mergePieceFromBytes(const uint8_t* data, size_t size);
 // A sweep's manifest (readManifest), which rejects bad input with std::runtime_error: reported as
