@@ -8,6 +8,8 @@
 #include <regex>
 #include <set>
 
+#include "io/declared_image_size.h"
+
 namespace columba {
 
 namespace {
@@ -84,6 +86,9 @@ Piece loadPiece(const std::string& path) {
   piece.path = path;
   piece.info = pieceInfoFromFile(path, file);
   piece.image = std::move(file.image);
+  // The merge allocates the whole frame, whatever the pieces hold.
+  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight, 3 + int64_t(piece.image.spectral.count()),
+                   sizeof(float), "its frame (the EXR display window) is");
   return piece;
 }
 
