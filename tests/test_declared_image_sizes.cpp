@@ -106,7 +106,14 @@ TEST_F(DeclaredImageSizes, FilesWithoutTheirPixelsAreErrorsNotBlackImages) {
                                     {"short.bmp", bmpHeader(4, 4) + std::string(40, '\x7f')}})
     expectContains(errorOf([&, name = name, bytes = bytes] { readImagePixels(writeBytes(name, bytes), false); }),
                    {name, "the file ends before the pixels its header declares (4 x 4) are all there"});
-  // Radiance HDR, flat (narrower than 8 pixels) and run-length encoded.
+  // A JPEG's headers without its scan (the start of scan replaced with the end of the image).
+  std::ifstream in(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/bitmap/baseline.jpg", std::ios::binary);
+  std::string jpeg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NO_THROW(readImagePixels(writeBytes("whole.jpg", jpeg), false));
+  jpeg = jpeg.substr(0, jpeg.find("\xff\xda")) + "\xff\xd9";
+  expectContains(errorOf([&] { readImagePixels(writeBytes("noscan.jpg", jpeg), false); }),
+                 {"noscan.jpg", "the JPEG image has no scan"});
+  // Radiance HDR, flat (narrower than 8 pixels).
   expectContains(errorOf([&] { readImagePixels(writeBytes("flat.hdr", hdrHeader(4, 4) + "abcd"), false); }),
                  {"flat.hdr", "Radiance HDR scanline 0 of 4: the file ends 4 bytes into 64 bytes of pixels"});
 }

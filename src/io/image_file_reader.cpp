@@ -72,6 +72,24 @@ struct StbSource {
   stbi_io_callbacks callbacks() const { return {&StbSource::read, &StbSource::skip, &StbSource::eof}; }
 };
 
+// Whether a JPEG's marker segments reach a start of scan before the end of the image: stb_image
+// decodes one without any as a grey image, without an error.
+bool hasJPEGScan(const std::vector<unsigned char>& bytes) {
+  for (size_t at = 2; at + 1 < bytes.size();) {
+    if (bytes[at] != 0xff) return false;
+    const unsigned char marker = bytes[at + 1];
+    if (marker == 0xda) return true;
+    if (marker == 0xd9) return false;
+    if (marker == 0xff || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {  // fill byte, no length
+      at += marker == 0xff ? 1 : 2;
+      continue;
+    }
+    if (at + 3 >= bytes.size()) return false;
+    at += 2 + (size_t(bytes[at + 2]) << 8 | bytes[at + 3]);
+  }
+  return false;
+}
+
 // Reads through stb_image: floats for Radiance HDR files, 8- or 16-bit integers otherwise
 // (scaled to [0, 1] and decoded from sRGB when asked). The declared size is checked against the
 // file's length and the memory budget first, and the decoder must find all of its pixels.
@@ -89,6 +107,8 @@ PixelGrid readWithStb(const std::string& path, bool decodeSRGB) {
   grid.channels = stored <= 2 ? 1 : 3;
   checkDeclaredImageSize(path, width, height, grid.channels, sizeof(float), bytes.size(),
                          mostPixelsPerByte(bytes.data(), bytes.size()) * grid.channels);
+  if (bytes.size() >= 2 && bytes[0] == 0xff && bytes[1] == 0xd8 && !hasJPEGScan(bytes))
+    throw InputError(where, "the JPEG image has no scan: its pixels are not there");
   const bool hdr = stbi_is_hdr_from_memory(bytes.data(), length);
   if (hdr) checkHDRScanlines(path, bytes.data(), bytes.size(), width, height);
   grid.width = width;
