@@ -119,6 +119,30 @@ TEST(FuzzRegressions, ExrAttributeLargerThanTheFileIsAnErrorBeforeOpenEXRAllocat
   }
 }
 
+// Found by the merge_piece fuzzer: OpenEXR reads a channel list to its end (and most types at
+// their own size), whatever size the file declares, then goes on from there: a channel list
+// declared a byte short had the size check read the rest of the header out of step and miss an
+// attribute declaring 1.2 GB, which OpenEXR allocated.
+TEST(FuzzRegressions, ExrAttributeDeclaringAnotherSizeThanItsValueIsAnError) {
+  std::ifstream in(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/exr_envmap/rgb_none.exr", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key("channels\0chlist\0", 16);
+  size_t at = bytes.find(key);
+  ASSERT_NE(at, std::string::npos);
+  int32_t declared = 0;
+  std::memcpy(&declared, &bytes[at + key.size()], 4);
+  --declared;
+  std::memcpy(&bytes[at + key.size()], &declared, 4);
+  try {
+    columba::fuzz::exrEnvmapFromBytes(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    FAIL() << "no error";
+  } catch (const columba::InputError& e) {
+    const std::string expected = "attribute 'channels' of type 'chlist' declares " + std::to_string(declared) +
+                                 " bytes, but its value takes " + std::to_string(declared + 1);
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
 // Found by the EXR fuzzer: a NaN, infinite or overly bright pixel made the environment map's
 // sampling distribution throw std::invalid_argument instead of an error naming the file.
 TEST(FuzzRegressions, EnvmapPixelsThatCannotBeSampledAreInputErrors) {

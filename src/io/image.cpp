@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -367,11 +368,13 @@ static void checkEXRDeclaredSize(const std::string& path, const EXRDeclaredSize&
 static int exrSampleBytes(int pixelType) { return pixelType == Imf::HALF ? 2 : 4; }
 
 // Adds a chlist attribute's channels (name, int32 pixel type, 4 bytes, int32 x and y sampling,
-// ending with an empty name) to `size`.
-static void addEXRChannels(const std::string& list, EXRDeclaredSize& size) {
-  for (size_t at = 0; at < list.size() && list[at] != '\0';) {
+// ending with an empty name) to `size`; returns the bytes the list takes to its end, as OpenEXR
+// reads it (0 if it has no end).
+static size_t addEXRChannels(const std::string& list, EXRDeclaredSize& size) {
+  for (size_t at = 0; at < list.size();) {
+    if (list[at] == '\0') return at + 1;
     const size_t end = list.find('\0', at);
-    if (end == std::string::npos || list.size() - end - 1 < 16) return;
+    if (end == std::string::npos || list.size() - end - 1 < 16) return 0;
     int32_t fields[4];
     std::memcpy(fields, list.data() + end + 1, sizeof fields);
     size.storedBytesPerPixel +=
@@ -379,6 +382,50 @@ static void addEXRChannels(const std::string& list, EXRDeclaredSize& size) {
     if (spectralChannelCentre(list.substr(at, end - at))) ++size.spectralBands;
     at = end + 17;
   }
+  return 0;
+}
+
+// The bytes OpenEXR reads for a header attribute's value of type `type` with `value` (of the
+// size the file declares): a fixed size for most types, whatever the file declares; the channel
+// list to its end; a preview image by its width and height. 0 for the types it reads by the
+// declared size.
+static size_t exrAttributeValueBytes(const std::string& type, const std::string& value) {
+  static const std::map<std::string, size_t> fixed = {{"box2i", 16},
+                                                      {"box2f", 16},
+                                                      {"chromaticities", 32},
+                                                      {"compression", 1},
+                                                      {"deepImageState", 1},
+                                                      {"double", 8},
+                                                      {"envmap", 1},
+                                                      {"float", 4},
+                                                      {"int", 4},
+                                                      {"keycode", 28},
+                                                      {"lineOrder", 1},
+                                                      {"m33f", 36},
+                                                      {"m33d", 72},
+                                                      {"m44f", 64},
+                                                      {"m44d", 128},
+                                                      {"rational", 8},
+                                                      {"tiledesc", 9},
+                                                      {"timecode", 8},
+                                                      {"v2i", 8},
+                                                      {"v2f", 8},
+                                                      {"v2d", 16},
+                                                      {"v3i", 12},
+                                                      {"v3f", 12},
+                                                      {"v3d", 24}};
+  if (auto f = fixed.find(type); f != fixed.end()) return f->second;
+  if (type == "chlist") {  // without its end in the declared bytes, OpenEXR reads past them
+    EXRDeclaredSize ignored;
+    const size_t end = addEXRChannels(value, ignored);
+    return end ? end : value.size() + 1;
+  }
+  if (type == "preview" && value.size() >= 8) {
+    uint32_t size[2];
+    std::memcpy(size, value.data(), sizeof size);
+    return 8 + 4 * size_t(size[0]) * size_t(size[1]);
+  }
+  return 0;
 }
 
 // OpenEXR allocates every header attribute at the size the file declares before reading it (a
@@ -417,6 +464,12 @@ static void checkEXRAttributeSizes(const std::string& path) {
                                       " bytes left");
     std::string value(size_t(declared), '\0');
     if (!in.read(value.data(), declared)) return;
+    // OpenEXR goes on reading where its reader of the type stops: a value of another size than
+    // the one declared would have it read the rest of the header out of step with this check.
+    if (const size_t read = exrAttributeValueBytes(type, value); read != 0 && read != size_t(declared))
+      throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' of type '" + type.substr(0, 60) +
+                                      "' declares " + std::to_string(declared) + " bytes, but its value takes " +
+                                      std::to_string(read));
     if (name == "dataWindow" && type == "box2i" && declared == 16) {
       int32_t box[4];
       std::memcpy(box, value.data(), sizeof box);
