@@ -32,7 +32,7 @@ void exrEnvmapFromBytes(const uint8_t* data, size_t size);
 // map and a few lookups).
 void hdrEnvmapFromBytes(const uint8_t* data, size_t size);
 // Image file of any format a bitmap texture reads (readImagePixels, decoded from sRGB and raw,
-// then a texture and a few lookups); a PNG is also read through readPNG, as `fit --mask` and
+// then a raw texture and a few lookups); a PNG is also read through readPNG, as `fit --mask` and
 // `montage` read it.
 void bitmapFromBytes(const uint8_t* data, size_t size);
 // A piece of a split render (loadPiece), merged alone and, if it is a part, after part 2 of 2 of

@@ -99,6 +99,16 @@ TEST_F(DeclaredImageSizes, SizesTheFileCannotHoldAreErrorsBeforeDecoding) {
   }
 }
 
+// Found by the bitmap fuzzer: stb_image allocates a PNG chunk at its declared length before reading
+// it (1.85 GB for an image of 9 x 5 pixels).
+TEST_F(DeclaredImageSizes, PNGChunksLongerThanTheFileAreErrorsBeforeDecoding) {
+  std::string png = pngHeader(9, 5);
+  const size_t idat = png.find("IDAT") - 4;
+  png.replace(idat, 4, be32(1852112923));
+  expectContains(errorOf([&] { readImagePixels(writeBytes("chunk.png", png), false); }),
+                 {"chunk.png: PNG chunk 'IDAT' at byte 33 declares 1852112923 bytes, but the file has"});
+}
+
 TEST_F(DeclaredImageSizes, FilesWithoutTheirPixelsAreErrorsNotBlackImages) {
   for (const auto& [name, bytes] : {std::pair<const char*, std::string>{"empty.bmp", bmpHeader(4, 4)},
                                     {"empty.tga", tgaHeader(4, 4)},

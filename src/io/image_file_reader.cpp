@@ -90,6 +90,23 @@ bool hasJPEGScan(const std::vector<unsigned char>& bytes) {
   return false;
 }
 
+// Throws InputError naming `path` when a PNG chunk before the end of the image declares more
+// bytes than the file has left: stb_image allocates a chunk's declared length before reading it.
+void checkPNGChunks(const std::string& path, const std::vector<unsigned char>& bytes) {
+  for (size_t at = 8; at + 8 <= bytes.size();) {
+    const uint32_t length = uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 |
+                            uint32_t(bytes[at + 3]);
+    const std::string type(reinterpret_cast<const char*>(&bytes[at + 4]), 4);
+    const size_t left = bytes.size() - at - 8;
+    if (length > left)
+      throw InputError({path, 0}, "PNG chunk '" + type + "' at byte " + std::to_string(at) + " declares " +
+                                      std::to_string(length) + " bytes, but the file has " + std::to_string(left) +
+                                      " bytes left");
+    if (type == "IEND") return;
+    at += 12 + size_t(length);
+  }
+}
+
 // Reads through stb_image: floats for Radiance HDR files, 8- or 16-bit integers otherwise
 // (scaled to [0, 1] and decoded from sRGB when asked). The declared size is checked against the
 // file's length and the memory budget first, and the decoder must find all of its pixels.
@@ -107,6 +124,7 @@ PixelGrid readWithStb(const std::string& path, bool decodeSRGB) {
   grid.channels = stored <= 2 ? 1 : 3;
   checkDeclaredImageSize(path, width, height, grid.channels, sizeof(float), bytes.size(),
                          mostPixelsPerByte(bytes.data(), bytes.size()) * grid.channels);
+  if (bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG", 4) == 0) checkPNGChunks(path, bytes);
   if (bytes.size() >= 2 && bytes[0] == 0xff && bytes[1] == 0xd8 && !hasJPEGScan(bytes))
     throw InputError(where, "the JPEG image has no scan: its pixels are not there");
   const bool hdr = stbi_is_hdr_from_memory(bytes.data(), length);
