@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -10,8 +12,12 @@
 #include "builtin/builtin_plugins.h"
 #include "core/error.h"
 #include "core/transform.h"
+#include "distribute/manifest.h"
+#include "distribute/merge.h"
 #include "emitters/envmap_emitter.h"
+#include "fit/spectra_fit.h"
 #include "io/image.h"
+#include "io/image_file_reader.h"
 #include "io/volume_grid_file.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -22,8 +28,54 @@
 #include "shapes/sdf_grid_shape.h"
 #include "shapes/serialized_mesh.h"
 #include "shapes/triangle_mesh.h"
+#include "textures/bitmap_texture.h"
 
 namespace columba::fuzz {
+
+namespace {
+// An environment map of `image` and a few lookups and samples.
+void lookUpEnvmap(Image image, const std::string& path) {
+  EnvmapEmitter envmap(std::move(image), 1.0f, Transform(), {path, 0});
+  Wavelengths wl = Wavelengths::sample(0.5f, WavelengthDensity::RGBMatching);
+  for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.3f, 0.2f, -0.93f)}) {
+    (void)envmap.radianceFromDirection(d, wl);
+    (void)envmap.pdfDirection(d);
+  }
+  (void)envmap.sample(Vec3(0, 0, 0), Vec2(0.25f, 0.75f), wl);
+}
+
+// Runs `read`, reporting the std::runtime_error it rejects bad input with as an InputError.
+template <class Read>
+void rejectingWithInputError(Read read) {
+  try {
+    read();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError({}, e.what());
+  }
+}
+
+// Part 2 of 2 of a 16 x 16 render, written once, for fuzzed pieces to be merged with.
+const Piece& fuzzPart2() {
+  static const Piece piece = [] {
+    PieceInfo info;
+    info.scene = "fuzz.xml";
+    info.sceneHash = textHash("fuzz");
+    info.spp = 4;
+    info.frameWidth = info.frameHeight = 16;
+    info.part = PieceIndex{2, 2};
+    info.partBounds = {0, 8, 16};
+    const PixelRect window{0, 8, 16, 16};
+    Image image(window.width(), window.height());
+    std::fill(image.rgb.begin(), image.rgb.end(), 0.5f);
+    const std::string path = writeScratchFile(nullptr, 0, ".part2of2.exr");
+    writeEXRWindow(path, image, window, 16, 16, pieceMetadata(info));
+    return loadPiece(path);
+  }();
+  return piece;
+}
+}  // namespace
 
 std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix) {
   static const std::filesystem::path dir = [] {
@@ -107,13 +159,53 @@ void sdfGridFromBytes(const uint8_t* data, size_t size) {
 
 void exrEnvmapFromBytes(const uint8_t* data, size_t size) {
   std::string path = writeScratchFile(data, size, ".exr");
-  EnvmapEmitter envmap(readEXR(path), 1.0f, Transform(), {path, 0});
+  lookUpEnvmap(readEXR(path), path);
+}
+
+void hdrEnvmapFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".hdr");
+  lookUpEnvmap(readLinearRGBImage(path), path);
+}
+
+void bitmapFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".img");
+  (void)readImagePixels(path, true);
+  // Raw: fitting every texel's colour to a spectrum is the texture's work, not the reader's, and
+  // slows the fuzzer a hundredfold.
+  BitmapTexture texture(readImagePixels(path, false), true, TextureFilter::Bilinear, TextureWrap::Mirror, Transform());
   Wavelengths wl = Wavelengths::sample(0.5f, WavelengthDensity::RGBMatching);
-  for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.3f, 0.2f, -0.93f)}) {
-    (void)envmap.radianceFromDirection(d, wl);
-    (void)envmap.pdfDirection(d);
+  for (const Vec2& uv : {Vec2(0.1f, 0.2f), Vec2(0.9f, 0.6f), Vec2(-3.3f, 7.1f)}) {
+    (void)texture.evalSpectrum(TexturePoint{uv}, wl);
+    (void)texture.evalFloatGradient(TexturePoint{uv});
   }
-  (void)envmap.sample(Vec3(0, 0, 0), Vec2(0.25f, 0.75f), wl);
+  if (size >= 4 && std::memcmp(data, "\x89PNG", 4) == 0) (void)readPNG(path);
+}
+
+void mergePieceFromBytes(const uint8_t* data, size_t size) {
+  const Piece& part2 = fuzzPart2();
+  std::string path = writeScratchFile(data, size, ".part1of2.exr");
+  rejectingWithInputError([&] {
+    Piece piece = loadPiece(path);
+    if (!piece.info.part) {
+      (void)mergePieces({piece});
+      return;
+    }
+    try {
+      (void)mergePieces({piece});  // part 2 is missing
+    } catch (const std::runtime_error&) {
+    }
+    (void)mergePieces({part2, piece});
+  });
+}
+
+void manifestFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".json");
+  rejectingWithInputError([&] { (void)readManifest(path); });
+}
+
+void spectraCSVFromBytes(const uint8_t* data, size_t size) {
+  std::string path = writeScratchFile(data, size, ".csv");
+  (void)readSpectraCSV(path);
 }
 
 }  // namespace columba::fuzz

@@ -28,6 +28,22 @@ void serializedMeshFromBytes(const uint8_t* data, size_t size);
 void sdfGridFromBytes(const uint8_t* data, size_t size);
 // OpenEXR image (readEXR, then an environment map and a few lookups).
 void exrEnvmapFromBytes(const uint8_t* data, size_t size);
+// Radiance HDR image, or any other the bitmap reader takes (readLinearRGBImage, then an environment
+// map and a few lookups).
+void hdrEnvmapFromBytes(const uint8_t* data, size_t size);
+// Image file of any format a bitmap texture reads (readImagePixels, decoded from sRGB and raw,
+// then a raw texture and a few lookups); a PNG is also read through readPNG, as `fit --mask` and
+// `montage` read it.
+void bitmapFromBytes(const uint8_t* data, size_t size);
+// A piece of a split render (loadPiece), merged alone and, if it is a part, after part 2 of 2 of
+// a 16 x 16 frame, which part 1 of fuzz/seeds/merge_piece completes. loadPiece and mergePieces
+// reject bad pieces with std::runtime_error naming the file: reported as an InputError.
+void mergePieceFromBytes(const uint8_t* data, size_t size);
+// A sweep's manifest (readManifest), which rejects bad input with std::runtime_error: reported as
+// an InputError.
+void manifestFromBytes(const uint8_t* data, size_t size);
+// A table of measured spectra (readSpectraCSV).
+void spectraCSVFromBytes(const uint8_t* data, size_t size);
 
 // The readers take paths: the bytes are written to a file of this process named with `suffix`
 // (".ply", ".obj", ".exr"), which is returned.

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built in BUILD_DIR, one after another, each for SECONDS:
-#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap)
+#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv)
 # Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET (small
-# scenes, meshes, feathers written by `columba feather`, EXR images of every compression), the
+# scenes, meshes, feathers written by `columba feather`, EXR images of every compression, images
+# of every format stb_image reads, a piece of a split render, a manifest, a spectra table), the
 # project's scenes and examples, the inputs of tests/fuzz-regressions/TARGET, and feathers that
 # $COLUMBA (build/columba by default; skipped when not built) generates. Findings go to BUILD_DIR/fuzz/findings/TARGET, logs to
 # BUILD_DIR/fuzz/logs. Prints one line per target (executions, coverage, findings); exits non-zero
@@ -12,7 +13,7 @@ cd "$(dirname "$0")/.."
 build=$1 seconds=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap)
+[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv)
 work="$build/fuzz"
 columba=${COLUMBA:-build/columba}
 mkdir -p "$work/logs"
@@ -41,7 +42,17 @@ seed() {  # seed TARGET CORPUS
 dict_of() {
   case $1 in scene) echo fuzz/dict/scene.dict ;; ply_mesh|feather_ply) echo fuzz/dict/ply.dict ;;
     obj_mesh) echo fuzz/dict/obj.dict ;; exr_envmap) echo fuzz/dict/exr.dict ;;
-    serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid) echo fuzz/dict/vol.dict ;; esac
+    serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid) echo fuzz/dict/vol.dict ;;
+    hdr_envmap) echo fuzz/dict/hdr.dict ;; bitmap) echo fuzz/dict/bitmap.dict ;; merge_piece) echo fuzz/dict/piece.dict ;;
+    manifest) echo fuzz/dict/manifest.dict ;; spectra_csv) echo fuzz/dict/spectra.dict ;; esac
+}
+
+# Memory limits (MB: one allocation, the whole process). The image and piece readers check every
+# declared size against the file's length before allocating: a few kilobytes of input must never
+# take hundreds of megabytes.
+limits_of() {
+  case $1 in hdr_envmap|bitmap|merge_piece) echo "-malloc_limit_mb=512 -rss_limit_mb=1024" ;;
+    *) echo "-malloc_limit_mb=2048 -rss_limit_mb=2560" ;; esac
 }
 
 status=0
@@ -54,8 +65,9 @@ for t in "${targets[@]}"; do
   seed "$t" "$corpus"
   start=$(date +%s)
   # -close_fd_mask=2: the readers' warnings are not shown (sanitizer reports still are).
-  "$binary" "$corpus" -dict="$(dict_of "$t")" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
-    -malloc_limit_mb=2048 -close_fd_mask=2 -print_final_stats=1 -artifact_prefix="$findings/" > "$log" 2>&1
+  # shellcheck disable=SC2046  # the limits are two words
+  "$binary" "$corpus" -dict="$(dict_of "$t")" -max_total_time="$seconds" -timeout=20 $(limits_of "$t") \
+    -close_fd_mask=2 -print_final_stats=1 -artifact_prefix="$findings/" > "$log" 2>&1
   rc=$?
   elapsed=$(( $(date +%s) - start ))
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | tail -1 | awk '{print $2}')

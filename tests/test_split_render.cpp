@@ -253,3 +253,52 @@ TEST_F(SplitRenderFiles, PiecesWrittenAndReadBackMergeBitForBit) {
     EXPECT_NE(std::string(e.what()).find("absent.exr"), std::string::npos) << e.what();
   }
 }
+
+// A piece's part bounds must run from the frame's first row to its last: bounds reaching past the
+// frame had the merge look up rows it never allocated (a heap over-read) and report them missing.
+TEST_F(SplitRenderFiles, PartBoundsPastTheFrameAreRejectedAsThePieceIsRead) {
+  PieceInfo info;
+  info.scene = "s.xml";
+  info.spp = 4;
+  info.frameWidth = info.frameHeight = 16;
+  info.part = PieceIndex{1, 2};
+  Image band(16, 8);
+  for (const std::vector<int>& bounds : {std::vector<int>{0, 8, 1073741824}, {0, 8, 15}, {1, 8, 16}, {0, 8, 8}}) {
+    info.partBounds = bounds;
+    const std::string path = (dir_ / "img.part1of2.exr").string();
+    writeEXRWindow(path, band, {0, 0, 16, 8}, 16, 16, pieceMetadata(info));
+    try {
+      loadPiece(path);
+      ADD_FAILURE() << "no error for " << ::testing::PrintToString(bounds);
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("img.part1of2.exr"), std::string::npos) << message;
+      EXPECT_NE(message.find("'Part bounds' attribute is '" + fmt::format("{}", fmt::join(bounds, ",")) + "'"),
+                std::string::npos)
+          << message;
+      EXPECT_NE(message.find("increasing from 0 to the frame's height 16"), std::string::npos) << message;
+    }
+  }
+}
+
+// The merge allocates the frame a piece's display window declares: a frame larger than the
+// memory budget is an error as the piece is read (a 1 x 1 piece of a 20000 x 20000 frame had the
+// merge allocate 400 MB before finding the frame uncovered).
+TEST_F(SplitRenderFiles, AFrameLargerThanTheMemoryBudgetIsRejectedAsThePieceIsRead) {
+  PieceInfo info;
+  info.scene = "s.xml";
+  info.spp = 4;
+  info.frameWidth = info.frameHeight = 20000;
+  const std::string path = (dir_ / "img.exr").string();
+  writeEXRWindow(path, Image(1, 1), {0, 0, 1, 1}, 20000, 20000, pieceMetadata(info));
+  try {
+    loadPiece(path);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("img.exr: its frame (the EXR display window) is 20000 x 20000 pixels of 3 channels (4.5 "
+                           "GiB), more than the 4.0 GiB an image may take"),
+              std::string::npos)
+        << message;
+  }
+}

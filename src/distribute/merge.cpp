@@ -8,6 +8,8 @@
 #include <regex>
 #include <set>
 
+#include "io/declared_image_size.h"
+
 namespace columba {
 
 namespace {
@@ -84,6 +86,9 @@ Piece loadPiece(const std::string& path) {
   piece.path = path;
   piece.info = pieceInfoFromFile(path, file);
   piece.image = std::move(file.image);
+  // The merge allocates the whole frame, whatever the pieces hold.
+  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight, 3 + int64_t(piece.image.spectral.count()),
+                   sizeof(float), "its frame (the EXR display window) is");
   return piece;
 }
 
@@ -230,7 +235,9 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
   const size_t bands = pieces.front().image.spectral.count();
   image.spectral.centres = pieces.front().image.spectral.centres;
   image.spectral.values.assign(size_t(width) * size_t(height) * bands, 0.0f);
-  for (auto& [key, group] : groups) {
+  for (const auto& window : groups) {
+    // A variable, not a structured binding: clang 14 cannot capture those in the lambdas below.
+    const std::vector<const Piece*>& group = window.second;
     const PixelRect w = group.front()->info.window;
     for (int y = w.y0; y < w.y1; ++y)
       for (int x = w.x0; x < w.x1; ++x) {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 
 namespace columba {
@@ -180,9 +181,16 @@ PieceInfo pieceInfoFromFile(const std::string& path, const EXRImageFile& file) {
   info.window = file.dataWindow;
   if (has("Part")) {
     info.part = parsePieceIndex("its 'Part' attribute", get("Part"), 1 << 20);
-    if (!parseIntList(get("Part bounds"), info.partBounds) || int(info.partBounds.size()) != info.part->count + 1)
-      throw fail("its 'Part bounds' attribute is '" + get("Part bounds") + "', not " +
-                 std::to_string(info.part->count + 1) + " row numbers");
+    // Every band's rows, increasing from the frame's first row to its last: the merge looks up
+    // the rows of every band in the frame.
+    const std::vector<int>& bounds = info.partBounds;
+    if (!parseIntList(get("Part bounds"), info.partBounds) || int(bounds.size()) != info.part->count + 1 ||
+        bounds.front() != 0 || bounds.back() != info.frameHeight ||
+        std::adjacent_find(bounds.begin(), bounds.end(), std::greater_equal<int>()) != bounds.end())
+      throw fail(
+          fmt::format("its 'Part bounds' attribute is '{}', not {} row numbers increasing from 0 to the "
+                      "frame's height {}",
+                      get("Part bounds"), info.part->count + 1, info.frameHeight));
   }
   if (has("Pass")) {
     info.pass = parsePieceIndex("its 'Pass' attribute", get("Pass"), 1 << 20);

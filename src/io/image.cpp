@@ -25,12 +25,15 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 #include "core/error.h"
 #include "core/spectrum.h"
 #include "core/version.h"
+#include "io/compression_bounds.h"
+#include "io/declared_image_size.h"
 
 namespace columba {
 
@@ -344,21 +347,91 @@ ImageFormat checkOutputImagePath(const std::string& path) {
   return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
 }
 
-// Pixels are allocated before any is read: a header declaring more than any compression can fit
-// in the file (4096 pixels a byte, eight times ZIP's most for even one half channel) is an error,
-// not gigabytes.
-static void checkEXRPixelCount(const std::string& path, int64_t width, int64_t height) {
-  std::error_code ec;
-  const uint64_t fileSize = std::filesystem::file_size(path, ec);
-  if (!ec && double(width) * double(height) > double(fileSize) * 4096.0)
-    throw InputError({path, 0}, "EXR header declares " + std::to_string(width) + " x " + std::to_string(height) +
-                                    " pixels, more than a file of " + std::to_string(fileSize) + " bytes can hold");
+// An EXR header's pixels, checked before they are allocated: by OpenEXR as it opens the file
+// (its line buffers), then by readEXRFile (3 floats a pixel and one a spectral band). A header
+// declaring more than its compression can fit in the file is an error, not gigabytes.
+struct EXRDeclaredSize {
+  int64_t width = 0, height = 0;
+  double storedBytesPerPixel = 0;  // of every channel, at its sampling
+  int64_t spectralBands = 0;
+  int compression = 0;
+};
+
+static void checkEXRDeclaredSize(const std::string& path, const EXRDeclaredSize& size) {
+  const int64_t held = 3 + size.spectralBands;
+  // A header without channels still has OpenEXR read a line offset table: a byte a pixel at least.
+  const double stored = std::max(size.storedBytesPerPixel, 1.0);
+  checkDeclaredImageSize(path, size.width, size.height, held, sizeof(float), fileLength(path),
+                         mostEXRBytesPerByte(size.compression) * double(held) / stored);
+}
+
+static int exrSampleBytes(int pixelType) { return pixelType == Imf::HALF ? 2 : 4; }
+
+// Adds a chlist attribute's channels (name, int32 pixel type, 4 bytes, int32 x and y sampling,
+// ending with an empty name) to `size`; returns the bytes the list takes to its end, as OpenEXR
+// reads it (0 if it has no end).
+static size_t addEXRChannels(const std::string& list, EXRDeclaredSize& size) {
+  for (size_t at = 0; at < list.size();) {
+    if (list[at] == '\0') return at + 1;
+    const size_t end = list.find('\0', at);
+    if (end == std::string::npos || list.size() - end - 1 < 16) return 0;
+    int32_t fields[4];
+    std::memcpy(fields, list.data() + end + 1, sizeof fields);
+    size.storedBytesPerPixel +=
+        double(exrSampleBytes(fields[0])) / std::max(1.0, double(fields[2])) / std::max(1.0, double(fields[3]));
+    if (spectralChannelCentre(list.substr(at, end - at))) ++size.spectralBands;
+    at = end + 17;
+  }
+  return 0;
+}
+
+// The bytes OpenEXR reads for a header attribute's value of type `type` with `value` (of the
+// size the file declares): a fixed size for most types, whatever the file declares; the channel
+// list to its end; a preview image by its width and height. 0 for the types it reads by the
+// declared size.
+static size_t exrAttributeValueBytes(const std::string& type, const std::string& value) {
+  static const std::map<std::string, size_t> fixed = {{"box2i", 16},
+                                                      {"box2f", 16},
+                                                      {"chromaticities", 32},
+                                                      {"compression", 1},
+                                                      {"deepImageState", 1},
+                                                      {"double", 8},
+                                                      {"envmap", 1},
+                                                      {"float", 4},
+                                                      {"int", 4},
+                                                      {"keycode", 28},
+                                                      {"lineOrder", 1},
+                                                      {"m33f", 36},
+                                                      {"m33d", 72},
+                                                      {"m44f", 64},
+                                                      {"m44d", 128},
+                                                      {"rational", 8},
+                                                      {"tiledesc", 9},
+                                                      {"timecode", 8},
+                                                      {"v2i", 8},
+                                                      {"v2f", 8},
+                                                      {"v2d", 16},
+                                                      {"v3i", 12},
+                                                      {"v3f", 12},
+                                                      {"v3d", 24}};
+  if (auto f = fixed.find(type); f != fixed.end()) return f->second;
+  if (type == "chlist") {  // without its end in the declared bytes, OpenEXR reads past them
+    EXRDeclaredSize ignored;
+    const size_t end = addEXRChannels(value, ignored);
+    return end ? end : value.size() + 1;
+  }
+  if (type == "preview" && value.size() >= 8) {
+    uint32_t size[2];
+    std::memcpy(size, value.data(), sizeof size);
+    return 8 + 4 * size_t(size[0]) * size_t(size[1]);
+  }
+  return 0;
 }
 
 // OpenEXR allocates every header attribute at the size the file declares before reading it (a
 // string attribute declaring 2 GB takes seconds and gigabytes): each declared size is checked
-// against the bytes the file has left first. Files that are not EXR, or end early, are left to
-// OpenEXR to report.
+// against the bytes the file has left first, and each header's pixels as checkEXRDeclaredSize
+// does. Files that are not EXR, or end early, are left to OpenEXR to report.
 static void checkEXRAttributeSizes(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return;
@@ -370,30 +443,43 @@ static void checkEXRAttributeSizes(const std::string& path) {
     return;
   const bool multipart = start[5] & 0x10;  // bit 12 of the version field
   bool headerEmpty = true;
+  EXRDeclaredSize size;
   for (std::string name, type; std::getline(in, name, '\0');) {
     if (name.empty()) {  // the end of a header; a multi-part file ends with an empty header
+      if (!headerEmpty) checkEXRDeclaredSize(path, size);
       if (!multipart || headerEmpty) return;
       headerEmpty = true;
+      size = EXRDeclaredSize();
       continue;
     }
     headerEmpty = false;
-    unsigned char size[4];
-    if (!std::getline(in, type, '\0') || !in.read(reinterpret_cast<char*>(size), 4)) return;
-    const int32_t declared =
-        int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 | uint32_t(size[3]) << 24);
+    unsigned char sizeBytes[4];
+    if (!std::getline(in, type, '\0') || !in.read(reinterpret_cast<char*>(sizeBytes), 4)) return;
+    const int32_t declared = int32_t(uint32_t(sizeBytes[0]) | uint32_t(sizeBytes[1]) << 8 |
+                                     uint32_t(sizeBytes[2]) << 16 | uint32_t(sizeBytes[3]) << 24);
     const std::streamoff left = fileSize - in.tellg();
     if (declared < 0 || declared > left)
       throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' declares " +
                                       std::to_string(declared) + " bytes but the file has " + std::to_string(left) +
                                       " bytes left");
+    std::string value(size_t(declared), '\0');
+    if (!in.read(value.data(), declared)) return;
+    // OpenEXR goes on reading where its reader of the type stops: a value of another size than
+    // the one declared would have it read the rest of the header out of step with this check.
+    if (const size_t read = exrAttributeValueBytes(type, value); read != 0 && read != size_t(declared))
+      throw InputError({path, 0}, "EXR header attribute '" + name.substr(0, 60) + "' of type '" + type.substr(0, 60) +
+                                      "' declares " + std::to_string(declared) + " bytes, but its value takes " +
+                                      std::to_string(read));
     if (name == "dataWindow" && type == "box2i" && declared == 16) {
-      // OpenEXR sizes its line buffers by the window as it opens the file: checked here first.
       int32_t box[4];
-      if (!in.read(reinterpret_cast<char*>(box), sizeof box)) return;
-      checkEXRPixelCount(path, int64_t(box[2]) - box[0] + 1, int64_t(box[3]) - box[1] + 1);
-      continue;
+      std::memcpy(box, value.data(), sizeof box);
+      size.width = int64_t(box[2]) - box[0] + 1;
+      size.height = int64_t(box[3]) - box[1] + 1;
+    } else if (name == "channels" && type == "chlist") {
+      addEXRChannels(value, size);
+    } else if (name == "compression" && type == "compression" && declared == 1) {
+      size.compression = static_cast<unsigned char>(value[0]);
     }
-    in.seekg(declared, std::ios::cur);
   }
 }
 
@@ -418,7 +504,13 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     if (!rgb && !channels.findChannel("Y"))
       throw InputError({path, 0}, "EXR image has neither R, G, B, nor X, Y, Z, nor Y channels");
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
-    checkEXRPixelCount(path, width, height);
+    EXRDeclaredSize size{width, height, 0.0, 0, int(file.header().compression())};
+    for (auto c = channels.begin(); c != channels.end(); ++c) {
+      size.storedBytesPerPixel += double(exrSampleBytes(c.channel().type)) / std::max(1, c.channel().xSampling) /
+                                  std::max(1, c.channel().ySampling);
+      if (spectralChannelCentre(c.name())) ++size.spectralBands;
+    }
+    checkEXRDeclaredSize(path, size);
     if (!pixels) return result;
     Image& image = result.image;
     image = Image(static_cast<int>(width), static_cast<int>(height));
@@ -474,6 +566,15 @@ Image readPNG(const std::string& path) {
     throw InputError({path, 0}, "cannot read PNG image: " + message);
   }
   png.format = PNG_FORMAT_RGB;
+  try {  // the declared size against the file's length (at the IHDR chunk's bits per pixel) first
+    unsigned char head[26] = {};
+    std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(head), sizeof head);
+    checkDeclaredImageSize(path, png.width, png.height, 3, sizeof(float), fileLength(path),
+                           mostPixelsPerByte(head, sizeof head) * 3);
+  } catch (const InputError&) {
+    png_image_free(&png);
+    throw;
+  }
   std::vector<unsigned char> bytes(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
     std::string message = png.message;
