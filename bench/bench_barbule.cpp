@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <vector>
-#include "bsdfs/barbule_bsdf.h"
+#include "bsdfs/barbulebsdf.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "optics/thin_film.h"

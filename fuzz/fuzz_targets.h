@@ -1,6 +1,6 @@
 #pragma once
 // The readers Columba fuzzes, each as a function of raw bytes. Shared by the libFuzzer entry points
-// (fuzz/fuzz_*.cpp) and the regression replay in the unit suite (tests/test_fuzz_regressions.cpp).
+// (fuzz/fuzz_*.cpp) and the regression replay in the unit suite (tests/io/test_fuzz_regressions.cpp).
 //
 // Each function returns normally when the input was read (and the object built from it), and
 // throws InputError when the input is rejected; any other exception escapes for the caller to

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/barbule_measurement.h"
+#include "bsdfs/barbulebsdf.h"
 #include "core/error.h"
 #include "feather/feather_generator.h"
 #include "feather/feather_ply_writer.h"

@@ -3,7 +3,7 @@
 // would take them: the spectral reflectance of each lobe, and the hemisphere of reflected
 // radiance for one light direction. All deterministic (grids and quadrature, no sampling).
 #include <vector>
-#include "bsdfs/barbule_bsdf.h"
+#include "bsdfs/barbulebsdf.h"
 #include "io/image.h"
 
 namespace columba {

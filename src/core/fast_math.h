@@ -2,7 +2,7 @@
 // SIMD lanes and fast maths, in one place: the four- and eight-float register types with their
 // helpers, and the approximations that stand in for library functions in inner loops (the barbule
 // BSDF's quadrature, the thin film, sampling). Each approximation states its domain and error;
-// tests/test_fast_math.cpp checks them against the standard library over the whole domain.
+// tests/core/test_fast_math.cpp checks them against the standard library over the whole domain.
 //
 // Lanes use the GCC/Clang vector extension: arithmetic evaluated at several points at once (a
 // path's wavelengths, a quadrature's nodes) that must not depend on the compiler choosing to

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "bsdfs/barbule_bsdf.h"
 #include "bsdfs/barbule_measurement.h"
+#include "bsdfs/barbulebsdf.h"
 #include "core/byte_order_mark.h"
 #include "core/error.h"
 #include "core/math.h"

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 #include <vector>
-#include "bsdfs/barbule_parameters.h"
+#include "barbule/parameters.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 #include <limits>
-#include "bsdfs/barbule_parameters.h"
+#include "barbule/parameters.h"
 #include "shapes/embree_user_geometry.h"
 #include "shapes/feather_barbule_values.h"
 

@@ -1,0 +1,56 @@
+#pragma once
+// Which longitudinal normal angles theta at one point of the barbule's cross-section send omega_i's
+// mirror reflection out unblocked (DESIGN.md §5.6). The R lobe samples theta only among those, so
+// that its samples are not lost where a neighbouring barbule masks the reflected direction.
+//
+// At the point with local in-plane normal n (unit) the normal with longitudinal angle theta is
+// m = (cos(theta) n, sin(theta)) and omega_i's mirror direction about it has the in-plane part
+//   v(a) = a n - w,  a(theta) = 2 cos(theta) (A cos(theta) + B sin(theta)) = A + R cos(2 theta - delta),
+// with w omega_i's in-plane part, A = w . n, B = omega_i's component along the barbule, R = |(A, B)|
+// and delta = atan2(B, A). The point is lit along v (BarbuleCrossSection::isLit) when it faces v,
+// n . v = a - A > 0, and the ray from it along v misses both neighbours: for a neighbour centred at
+// c, with e = p - c and the ellipse's metric Q = diag(1 / b^2, 1), the ray meets it when
+//   (e Q v)^2 >= (v Q v) (e Q e - 1)  and  e Q v < 0,
+// a quadratic and a linear condition in a. So the visible values of a are bounded by at most seven
+// numbers, each of which a(theta) crosses at most twice over the normals' range: the visible
+// angles are a few intervals, found exactly, and the mass of theta's density on them is the
+// density's primitive at their ends.
+#include <array>
+#include "barbule/cross_section.h"
+#include "barbule/normals.h"
+
+namespace columba {
+
+class MirrorVisibleAngles {
+ public:
+  // omega_i (w.z > 0) and the point with local in-plane normal `localNormal` on its lit arc.
+  MirrorVisibleAngles(const BarbuleCrossSection& geometry, Vec2 localNormal, const Vec3& w);
+
+  // The share of theta's density (LongitudinalDensity: proportional to omega_i . m) on the visible
+  // angles: 1 where no neighbour masks the mirror direction, 0 where every angle is masked.
+  float visibleFraction() const { return visibleMass_ > 0.0f && mass_ > 0.0f ? visibleMass_ / mass_ : 0.0f; }
+  // theta drawn from that density restricted to the visible angles (visibleFraction() > 0), with
+  // its cosine and sine.
+  AngleCosSin sample(float u) const;
+  // The world in-plane normal this was built with.
+  Vec2 worldNormal() const { return worldNormal_; }
+
+ private:
+  // Whether the point is lit along the mirror direction with this value of a.
+  bool visibleAt(double a) const;
+
+  static constexpr int kMaxIntervals = 8;
+  struct Interval {
+    float lo, hi, massBelow;  // theta range and the density's mass on the intervals before it
+  };
+  Vec2 worldNormal_;
+  LongitudinalDensity longitudinal_;
+  float A_, B_;
+  // The neighbours' conditions for meeting the ray: a^2 q2 - 2 a q1 + q0 >= 0 and a alpha < beta.
+  std::array<double, 2> q2_{}, q1_{}, q0_{}, alpha_{}, beta_{};
+  std::array<Interval, kMaxIntervals> intervals_{};
+  int intervalCount_ = 0;
+  float mass_ = 0.0f, visibleMass_ = 0.0f;
+};
+
+}  // namespace columba

@@ -1,0 +1,44 @@
+#include "bsdfs/thindielectric.h"
+
+#include "bsdfs/bsdf_parameters.h"
+#include "optics/fresnel.h"
+
+namespace columba {
+
+float ThinDielectricBSDF::sheetReflectance(float cosI) const {
+  FresnelAmplitudes a = fresnelAmplitudes(std::abs(cosI), eta_);
+  float r = 0.5f * (a.rs * a.rs + a.rp * a.rp);
+  return r < 1.0f ? 2.0f * r / (1.0f + r) : 1.0f;
+}
+
+std::optional<BSDFSample> ThinDielectricBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
+                                                     float uComponent, Vec2) const {
+  float R = sheetReflectance(cosTheta(wi));
+  BSDFSample s;
+  s.delta = true;
+  if (uComponent < R) {
+    s.wo = mirrorDirection(wi);
+    s.pdf = R;
+    s.weight = specularReflectance_.eval(ctx.point, wl);
+  } else {
+    s.wo = -wi;
+    s.pdf = 1.0f - R;
+    s.weight = specularTransmittance_.eval(ctx.point, wl);
+    s.passThrough = true;
+  }
+  return s;
+}
+
+Spectrum ThinDielectricBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const {
+  return specularTransmittance_.eval(ctx.point, wl) * (1.0f - sheetReflectance(cosTheta(wi)));
+}
+
+std::shared_ptr<Object> makeThinDielectricBSDF(const Properties& props) {
+  float intIOR = readIOR(props, "int_ior", "bk7");
+  float extIOR = readIOR(props, "ext_ior", "air");
+  return std::make_shared<ThinDielectricBSDF>(
+      intIOR / extIOR, readSpectrumParameter(props, "specular_reflectance", 1.0f, SpectrumUse::Reflectance),
+      readSpectrumParameter(props, "specular_transmittance", 1.0f, SpectrumUse::Reflectance));
+}
+
+}  // namespace columba

@@ -1,0 +1,384 @@
+#include <gtest/gtest.h>
+
+#include "support/temp_dir_test.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "io/image.h"
+#include "support/cli_test_support.h"
+
+namespace fs = std::filesystem;
+using columba::testing::CommandResult;
+using columba::testing::renderAndSignal;
+using columba::testing::run;
+using columba::testing::runShell;
+
+namespace {
+
+class CliTest : public columba::testing::TempDirTest {};
+
+const char* kTinyScene = R"(<scene version="3.0.0">
+  <default name="res" value="8"/>
+  <sensor type="perspective">
+    <film type="hdrfilm"><integer name="width" value="$res"/><integer name="height" value="$res"/></film>
+    <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
+  </sensor>
+  <emitter type="constant"><spectrum name="radiance" value="0.5"/></emitter>
+</scene>
+)";
+}  // namespace
+
+TEST_F(CliTest, RenderWritesExrAndPngBesideIt) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = run("render " + scene + " -o " + (dir_ / "img.exr").string() + " -D res=6 -D unused=3");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("samples/s"), std::string::npos) << r.output;
+  columba::Image img = columba::readEXR((dir_ / "img.exr").string());
+  EXPECT_EQ(img.width, 6);
+  EXPECT_NEAR(img.pixel(3, 3)[1], 0.5f, 0.1f);
+  EXPECT_TRUE(fs::exists(dir_ / "img.png"));
+}
+
+TEST_F(CliTest, MalformedScenesFailWithFileLineAndValueSlow) {
+  struct Case {
+    const char* name;
+    std::string xml;
+    std::vector<std::string> expected;  // fragments of the message
+  };
+  std::vector<Case> cases = {
+      {"unknown_plugin.xml", "<scene version=\"3.0.0\">\n  <bsdf type=\"velvet\"/>\n</scene>\n", {":2", "velvet"}},
+      {"bad_number.xml",
+       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n  <float name=\"fov\" "
+       "value=\"4o\"/>\n</sensor>\n</scene>\n",
+       {":3", "4o"}},
+      {"missing_file.xml",
+       "<scene version=\"3.0.0\">\n<shape type=\"obj\">\n<string name=\"filename\" "
+       "value=\"nowhere.obj\"/>\n</shape>\n</scene>\n",
+       {":3", "nowhere.obj"}},
+      {"missing_default.xml",
+       "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">\n<float name=\"fov\" "
+       "value=\"$angle\"/>\n</sensor>\n</scene>\n",
+       {":3", "angle"}},
+      {"unknown_parameter.xml",
+       "<scene version=\"3.0.0\">\n<emitter type=\"constant\">\n<float name=\"radiancee\" "
+       "value=\"1\"/>\n</emitter>\n</scene>\n",
+       {":3", "radiancee"}},
+      {"malformed.xml", "<scene version=\"3.0.0\">\n<shape type=\"sphere\">\n</scene>\n", {"malformed.xml"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string scene = write(c.name, c.xml);
+    CommandResult r = run("render " + scene + " -o " + (dir_ / "out.exr").string());
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(c.name), std::string::npos) << r.output;
+    for (const std::string& fragment : c.expected) EXPECT_NE(r.output.find(fragment), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+  }
+}
+
+TEST_F(CliTest, AFailedRenderLeavesTheOldImageAlone) {
+  std::string good = write("tiny.xml", kTinyScene);
+  std::string out = (dir_ / "keep.exr").string();
+  ASSERT_EQ(run("render " + good + " -o " + out).status, 0);
+  auto before = fs::file_size(out);
+  std::string bad = write("bad.xml",
+                          "<scene version=\"3.0.0\">\n<integrator type=\"path\"><integer name=\"max_depth\" "
+                          "value=\"x\"/></integrator></scene>");
+  EXPECT_NE(run("render " + bad + " -o " + out).status, 0);
+  EXPECT_EQ(fs::file_size(out), before);
+  EXPECT_EQ(columba::readEXR(out).width, 8);
+}
+
+TEST_F(CliTest, BadCommandLineValuesAreRejected) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  EXPECT_NE(run("render " + scene + " --spp 0").status, 0);
+  EXPECT_NE(run("render " + scene + " -D novalue").status, 0);
+  EXPECT_NE(run("render " + (dir_ / "absent.xml").string()).status, 0);
+}
+
+TEST_F(CliTest, AdaptiveSamplingReportsItsPlanAndRefusesPieces) {
+  std::string scene = write("tiny.xml", kTinyScene), out = (dir_ / "img.exr").string();
+  CommandResult r = run("render " + scene + " -o " + out + " --spp 8 --adaptive");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Adaptive sampling: 2 pilot samples per pixel"), std::string::npos) << r.output;
+  EXPECT_NEAR(columba::readEXR(out).pixel(3, 3)[1], 0.5f, 0.1f);
+  r = run("render " + scene + " -o " + out + " --spp 8 --target-error 1.5");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--target-error 1.5: give the relative RMSE to reach"), std::string::npos) << r.output;
+  r = run("render " + scene + " -o " + out + " --spp 8 --adaptive --pass 1/2");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("cannot be combined with --part or --pass"), std::string::npos) << r.output;
+}
+
+double answeredSeconds(const CommandResult& r) {
+  size_t at = r.output.find("answered=");
+  return at == std::string::npos ? 1e9 : std::stod(r.output.substr(at + 9));
+}
+
+TEST_F(CliTest, InterruptWritesThePartialImageBesideTheOutput) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  std::string out = (dir_ / "partial.exr").string();
+  // A render far too long to finish; SIGINT after half a second.
+  CommandResult r = renderAndSignal(scene + " -D res=64 --spp 1000000 -o " + out, "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((dir_ / "partial.partial.exr").string()), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR((dir_ / "partial.partial.exr").string()).width, 64);
+  EXPECT_EQ(columba::readPNG((dir_ / "partial.partial.png").string()).width, 64);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CliTest, SigtermAlsoWritesThePartialImage) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = renderAndSignal(scene + " --spp 16777216 -o " + (dir_ / "t.exr").string(), "TERM", 0.5);
+  EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "t.partial.exr")) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "t.partial.png")) << r.output;
+}
+
+TEST_F(CliTest, CtrlCIsAnsweredWithinASecondAtAnySampleCount) {
+  // Each pixel of this scene takes seconds at 2^24 samples.
+  std::string scene = write("slow.xml", R"(<scene version="3.0.0">
+  <integrator type="path"><integer name="max_depth" value="8"/></integrator>
+  <sensor type="perspective">
+    <film type="hdrfilm"><integer name="width" value="2"/><integer name="height" value="2"/></film>
+  </sensor>
+  <shape type="sphere"><float name="radius" value="100"/><bsdf type="diffuse"/></shape>
+  <emitter type="constant"><spectrum name="radiance" value="0.5"/></emitter>
+</scene>
+)");
+  CommandResult r = renderAndSignal(scene + " --spp 16777216 -o " + (dir_ / "slow.exr").string(), "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_LT(answeredSeconds(r), 1.0) << r.output;
+}
+
+TEST_F(CliTest, ASignalWhileTheSceneLoadsEndsTheRenderAtOnce) {
+  // Nested includes make the load long: 30 x 100 x 100 empty scenes read one after another (more
+  // than a minute on two cores), with nothing rendered yet to save.
+  auto includes = [](const std::string& file, int count) {
+    std::string xml = "<scene version=\"3.0.0\">\n";
+    for (int i = 0; i < count; ++i) xml += "<include filename=\"" + file + "\"/>\n";
+    return xml + "</scene>\n";
+  };
+  write("empty.xml", "<scene version=\"3.0.0\"/>\n");
+  write("hundred.xml", includes("empty.xml", 100));
+  write("ten_thousand.xml", includes("hundred.xml", 100));
+  std::string scene = write("slow_load.xml", includes("ten_thousand.xml", 30));
+  // A sweep names its frame before loading it, after the handlers are in place.
+  CommandResult r =
+      renderAndSignal(scene + " --sweep x=1,2 -o " + (dir_ / "slow.exr").string(), "TERM", 0.3, "^Frame 0 ");
+  EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+  EXPECT_LT(answeredSeconds(r), 1.0) << r.output;
+  EXPECT_EQ(r.output.find("Stopping"), std::string::npos) << r.output;
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().string().find(".partial."), std::string::npos) << entry.path();
+}
+
+TEST_F(CliTest, AnInterruptedFeatherGenerationLeavesNoFile) {
+  // Some minutes of writing; SIGINT after half a second (before the handlers, it kills the
+  // process before its file is begun).
+  const std::string out = (dir_ / "many.ply").string();
+  CommandResult r = runShell(std::string(COLUMBA_BINARY) + " feather --single --barbs 16000000 -o " + out +
+                             " & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo status=$?");
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+  r = run("feather --single --barbs 2000000000 -o " + out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("at most 16777215 barbs per side"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
+}
+
+TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  std::string out = (dir_ / "keep.exr").string();
+  ASSERT_EQ(run("render " + scene + " -o " + out).status, 0);
+  const auto exrBefore = fs::file_size(out), pngBefore = fs::file_size(dir_ / "keep.png");
+  CommandResult r = renderAndSignal(scene + " -D res=64 --spp 1000000 -o " + out, "INT", 0.5);
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR(out).width, 8);
+  EXPECT_EQ(fs::file_size(out), exrBefore);
+  EXPECT_EQ(fs::file_size(dir_ / "keep.png"), pngBefore);
+  EXPECT_EQ(columba::readEXR((dir_ / "keep.partial.exr").string()).width, 64);
+}
+
+TEST_F(CliTest, TheExtensionChoosesTheOutputFormatSlow) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  // A PNG name: the PNG, with the linear EXR beside it.
+  CommandResult r = run("render " + scene + " -o " + (dir_ / "a.png").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(columba::readPNG((dir_ / "a.png").string()).width, 8);
+  EXPECT_EQ(columba::readEXR((dir_ / "a.exr").string()).width, 8);
+  EXPECT_FALSE(fs::exists(dir_ / "a.png.exr"));
+  // Any letter case.
+  ASSERT_EQ(run("render " + scene + " -o " + (dir_ / "b.EXR").string()).status, 0);
+  EXPECT_EQ(columba::readEXR((dir_ / "b.EXR").string()).width, 8);
+  EXPECT_TRUE(fs::exists(dir_ / "b.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "b.EXR.exr"));
+  // Unknown extensions, no extension and directories fail before rendering.
+  fs::create_directories(dir_ / "folder");
+  fs::create_directories(dir_ / "folder.exr");
+  for (std::string bad : {"c.jpg", "c", "folder", "folder.exr"}) {
+    SCOPED_TRACE(bad);
+    CommandResult failed = run("render " + scene + " -o " + (dir_ / bad).string());
+    EXPECT_NE(failed.status, 0);
+    EXPECT_NE(failed.output.find("cannot write '" + (dir_ / bad).string() + "'"), std::string::npos) << failed.output;
+    EXPECT_EQ(failed.output.find("Rendering"), std::string::npos) << failed.output;
+  }
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"a.exr", "a.png", "b.EXR", "b.png", "folder", "folder.exr", "tiny.xml"}));
+}
+
+TEST_F(CliTest, MontageWritesTheFormatItsNameAsksForSlow) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " -o " + (dir_ / "a.exr").string()).status, 0);
+  CommandResult bad = run("montage -o " + (dir_ / "sheet.jpg").string() + " " + (dir_ / "a.exr").string());
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("'.jpg'"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir_ / "sheet.jpg"));
+  CommandResult exr = run("montage -o " + (dir_ / "sheet.EXR").string() + " " + (dir_ / "a.png").string());
+  ASSERT_EQ(exr.status, 0) << exr.output;
+  EXPECT_GT(columba::readEXR((dir_ / "sheet.EXR").string()).width, 0);
+}
+
+TEST_F(CliTest, CommandLineMistakesGetShortNamedMessagesSlow) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  struct Case {
+    std::string args, expected;
+  };
+  std::vector<Case> cases = {
+      {"render " + scene + " --spp 0", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --spp 16777217", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --spp 2147483647", "--spp must be between 1 and 16777216"},
+      {"render " + scene + " --threads 0", "--threads must be between 1 and"},
+      {"rendr", "unknown command 'rendr' \u2014 did you mean 'render'?"},
+      {"render --sp 4", "unknown option '--sp' for 'render' \u2014 did you mean '--spp'?"},
+      {"--versoin", "unknown option '--versoin' for 'columba' \u2014 did you mean '--version'?"},
+      {"bsdf --mu nan -o " + dir_.string(), "--mu: must be a finite number, not 'nan'"},
+      {"bsdf --H nan -o " + dir_.string(), "--H: must be a finite number, not 'nan'"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    CommandResult r = run(c.args);
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
+    EXPECT_LT(r.output.size(), 300u) << r.output;
+  }
+  CommandResult version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.output.rfind("columba ", 0), 0u) << version.output;
+}
+
+TEST_F(CliTest, UnusedDefinesAreNamedInAWarning) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = run("render -D sp=4 " + scene + " -D res=4 -o " + (dir_ / "w.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: -D sp=4"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("-D res"), std::string::npos) << r.output;
+  EXPECT_EQ(columba::readEXR((dir_ / "w.exr").string()).width, 4);
+}
+
+TEST_F(CliTest, ImagesRecordHowTheyWereRendered) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " -D res=4 --spp 3 --seed 9 -o " + (dir_ / "m.exr").string()).status, 0);
+  for (std::string file : {"m.exr", "m.png"}) {
+    SCOPED_TRACE(file);
+    // The metadata is stored as plain text in both formats.
+    std::ifstream in(dir_ / file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    for (const std::string& text : {std::string("Columba "), scene, std::string("res=4"),
+                                    std::string("Samples per pixel"), std::string("Seed"), std::string("Render time")})
+      EXPECT_NE(bytes.find(text), std::string::npos) << text;
+  }
+}
+
+TEST_F(CliTest, AFilmTooLargeForMemorySaysHowMuchItNeeds) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of shadow memory, which the address-space limit this test "
+                  "sets forbids";
+#endif
+  std::string scene = write("huge.xml", R"(<scene version="3.0.0">
+  <sensor type="perspective"><film type="hdrfilm"><integer name="width" value="46341"/>
+    <integer name="height" value="46341"/></film></sensor>
+</scene>
+)");
+  CommandResult r = runShell("ulimit -v 4000000; " + std::string(COLUMBA_BINARY) + " render " + scene + " -o " +
+                             (dir_ / "huge.exr").string());
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("46341 x 46341 pixels needs 24.0 GiB"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, DefaultSceneIsAGeneratedNeckSlow) {
+  std::string out = (dir_ / "default.exr").string();
+  CommandResult r = run("render -D width=40 -D height=30 -D spp=2 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("default scene"), std::string::npos) << r.output;
+  columba::Image img = columba::readEXR(out);
+  EXPECT_EQ(img.width, 40);
+  // Hundreds of thousands of barb segments were generated and loaded.
+  size_t at = r.output.find(" primitives");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  size_t start = r.output.rfind(' ', at - 1) + 1;
+  EXPECT_GT(std::stol(r.output.substr(start, at - start)), 100000) << r.output;
+}
+
+TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirDataSlow) {
+  CommandResult r =
+      run("bsdf --preset dove-green --mode specular,plane,hemisphere --angles 0,30 --res 32 --spectral "
+          "--bins 4 -o " +
+          dir_.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* file : {"bsdf_specular.png", "bsdf_specular.csv", "bsdf_plane_theta0.png", "bsdf_plane_theta30.png",
+                           "bsdf_plane.csv", "bsdf_hemisphere_theta0.exr", "bsdf_hemisphere_theta30.png", "bsdf.json"})
+    EXPECT_TRUE(fs::exists(dir_ / file)) << file;
+  // The CSV starts with its units and the parameters, then the columns.
+  std::ifstream csv(dir_ / "bsdf_specular.csv");
+  std::string units, parameters, columns;
+  std::getline(csv, units);
+  std::getline(csv, parameters);
+  std::getline(csv, columns);
+  EXPECT_NE(units.find("dimensionless"), std::string::npos) << units;
+  EXPECT_NE(parameters.find("height 0.58 um"), std::string::npos) << parameters;
+  EXPECT_EQ(columns, "wavelength_nm,R_theta0,TRT_theta0,total_theta0,R_theta30,TRT_theta30,total_theta30");
+  // The run's record: the version, every parameter and the peaks.
+  std::stringstream json;
+  json << std::ifstream(dir_ / "bsdf.json").rdbuf();
+  for (const char* key : {"\"columba_version\"", "\"height_um\": 0.58", "\"preset\": \"dove-green\"", "\"R_peaks_nm\""})
+    EXPECT_NE(json.str().find(key), std::string::npos) << key;
+  // The spectral hemisphere: RGB plus four bins over 400-700 nm.
+  columba::Image hemisphere = columba::readEXR((dir_ / "bsdf_hemisphere_theta30.exr").string());
+  EXPECT_EQ(hemisphere.spectral.centres, (std::vector<float>{437.5f, 512.5f, 587.5f, 662.5f}));
+  // Parameter mistakes get short messages naming the option.
+  CommandResult bad = run("bsdf --H 0 --mode specular -o " + dir_.string());
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("--H: the barbule spacing must be positive"), std::string::npos) << bad.output;
+  CommandResult preset = run("bsdf --preset dove-blue -o " + dir_.string());
+  EXPECT_NE(preset.output.find("dove-green, dove-purple"), std::string::npos) << preset.output;
+}
+
+TEST_F(CliTest, MontageTakesOneLabelPerImageSlow) {
+  columba::Image tile(4, 4);
+  const std::string a = (dir_ / "a.png").string(), b = (dir_ / "b.png").string();
+  columba::writePNG(a, tile);
+  columba::writePNG(b, tile);
+  const std::string sheet = (dir_ / "sheet.png").string();
+  CommandResult plain = run("montage -o " + sheet + " " + a + " " + b);
+  ASSERT_EQ(plain.status, 0) << plain.output;
+  const int plainHeight = columba::readPNG(sheet).height;
+  // Long labels wrap: the sheet grows by their extra lines.
+  CommandResult labelled =
+      run("montage -o " + sheet +
+          " --label 'a rather long caption that cannot fit in one line of a small tile' --label b " + a + " " + b);
+  ASSERT_EQ(labelled.status, 0) << labelled.output;
+  EXPECT_GT(columba::readPNG(sheet).height, plainHeight);
+  std::string labels = write("labels.txt", "first\nsecond\n");
+  EXPECT_EQ(run("montage -o " + sheet + " --labels " + labels + " " + a + " " + b).status, 0);
+  CommandResult mismatch = run("montage -o " + sheet + " --label only-one " + a + " " + b);
+  EXPECT_NE(mismatch.status, 0);
+  EXPECT_NE(mismatch.output.find("1 labels for 2 images"), std::string::npos) << mismatch.output;
+}

@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "builtin/builtin_plugins.h"
+#include "scene/scene.h"
+#include "shapes/vertex_normals.h"
+#include "support/temp_dir_test.h"
+
+using namespace columba;
+
+namespace {
+
+void expectNear(const Vec3& actual, const Vec3& expected, float tolerance = 1e-6f) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+// Two right triangles hinged along the y axis: one in the z = 0 plane (normal +z, a right angle
+// at the origin), one in the x = 0 plane (normal +x, 45 degrees at the origin).
+const std::vector<Vec3> kHingePositions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 1}};
+const std::vector<uint32_t> kHingeIndices = {0, 1, 2, 0, 2, 3};
+
+// Plain per-face averages, by count or by area, would give (1, 0, 1) / sqrt(2) at the origin.
+TEST(VertexNormals, EachFaceCountsWithItsAngleAtTheVertex) {
+  std::vector<Vec3> n = angleWeightedVertexNormals(kHingePositions, kHingeIndices);
+  ASSERT_EQ(n.size(), 4u);
+  // Origin: +z with weight pi/2, +x with weight pi/4.
+  expectNear(n[0], Vec3(1, 0, 2) / std::sqrt(5.0f));
+  expectNear(n[1], Vec3(0, 0, 1));
+  // (0, 1, 0): +z with weight pi/4, +x with weight pi/2.
+  expectNear(n[2], Vec3(2, 0, 1) / std::sqrt(5.0f));
+  expectNear(n[3], Vec3(1, 0, 0));
+}
+
+TEST(VertexNormals, HowAFaceIsSplitDoesNotTiltTheNormal) {
+  // Three unit squares meeting at the origin's corner of a cube. The z = 0 square is split by
+  // the diagonal through the origin (two triangles there), the others by the other diagonal
+  // (one triangle there); by angle each square weighs pi/2, so the normal is the diagonal.
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {1, 0, 1}};
+  const std::vector<uint32_t> indices = {0, 1, 2, 0, 2, 3,   // z = 0, normal +z
+                                         0, 3, 5, 3, 4, 5,   // x = 0, normal +x
+                                         0, 5, 1, 5, 6, 1};  // y = 0, normal +y
+  std::vector<Vec3> n = angleWeightedVertexNormals(p, indices);
+  expectNear(n[0], Vec3(1, 1, 1) / std::sqrt(3.0f));
+}
+
+TEST(VertexNormals, DegenerateTrianglesAddNothing) {
+  std::vector<Vec3> p = kHingePositions;
+  p.push_back({2, 0, 0});  // on the line through vertices 0 and 1
+  std::vector<uint32_t> indices = kHingeIndices;
+  indices.insert(indices.end(), {0, 1, 4, 4, 4, 4});
+  std::vector<Vec3> n = angleWeightedVertexNormals(p, indices);
+  expectNear(n[0], Vec3(1, 0, 2) / std::sqrt(5.0f));
+  expectNear(n[1], Vec3(0, 0, 1));
+  expectNear(n[4], Vec3(0, 0, 0));  // only in degenerate triangles: no normal
+}
+
+class MeshWithoutNormals : public columba::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    write("hinge.ply",
+          "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+          "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+          "0 0 0\n1 0 0\n0 1 0\n0 1 1\n3 0 1 2\n3 0 2 3\n");
+    write("hinge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 1 1\nf 1 2 3\nf 1 3 4\n");
+  }
+  // The first surface a ray straight down through (0.25, 0.25) meets: the hinge's z = 0 face.
+  SurfaceInteraction hitFromAbove(const std::string& shape) {
+    ParsedScene parsed = loadSceneString("<scene version='3.0.0'>" + shape + "</scene>", "scene.xml", dir_.string(), {},
+                                         builtinPlugins());
+    Scene scene(parsed, SourceLocation{"scene.xml", 0});
+    auto hit = scene.intersect(Ray{Vec3(0.25f, 0.25f, 1.0f), Vec3(0, 0, -1)});
+    EXPECT_TRUE(hit.has_value());
+    return hit.value_or(SurfaceInteraction{});
+  }
+};
+
+// The hinge stretched to twice its height: its x = 0 face then has angle atan(2) at the origin
+// and still a right angle at (0, 1, 0), so the normals are made from the world-space mesh
+// (Mitsuba's order); transforming object-space normals would give other ones.
+TEST_F(MeshWithoutNormals, ShadingInterpolatesSmoothNormalsOfTheWorldSpaceMesh) {
+  const Vec3 n0 = normalize(Vec3(std::atan(2.0f), 0, kHalfPi));
+  const Vec3 n1(0, 0, 1);
+  const Vec3 n2 = normalize(Vec3(kHalfPi, 0, kHalfPi / 2));
+  // (0.25, 0.25, 0) has barycentric weights 0.5, 0.25, 0.25 on vertices 0, 1, 2.
+  const Vec3 expected = normalize(n0 * 0.5f + n1 * 0.25f + n2 * 0.25f);
+  const std::string scale = "<transform name='to_world'><scale x='1' y='1' z='2'/></transform>";
+  for (const char* type : {"ply", "obj"}) {
+    SCOPED_TRACE(type);
+    SurfaceInteraction si = hitFromAbove(std::string("<shape type='") + type +
+                                         "'><string name='filename' value='hinge." + type + "'/>" + scale + "</shape>");
+    expectNear(si.ng, Vec3(0, 0, 1));
+    expectNear(si.shading.n, expected, 1e-5f);
+    EXPECT_NEAR(dot(si.shading.s, si.shading.n), 0.0f, 1e-5f);
+  }
+}
+
+TEST_F(MeshWithoutNormals, FaceNormalsKeepsTheFacets) {
+  for (const char* type : {"ply", "obj"}) {
+    SCOPED_TRACE(type);
+    SurfaceInteraction si =
+        hitFromAbove(std::string("<shape type='") + type + "'><string name='filename' value='hinge." + type +
+                     "'/><boolean name='face_normals' value='true'/></shape>");
+    expectNear(si.shading.n, Vec3(0, 0, 1));
+  }
+}
+
+}  // namespace
