@@ -18,7 +18,6 @@
 #include "core/error.h"
 #include "core/version.h"
 #include "render/renderer.h"
-#include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
 
 namespace py = pybind11;
@@ -92,20 +91,14 @@ namespace {
 // 50 ms: Ctrl-C (or any Python signal handler that raises) stops the render before its next
 // sample and the exception propagates.
 py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads, bool adaptive, double targetError) {
-  if (spp < 0 || spp > kMaxSamplesPerPixel)
-    throw py::value_error("spp must be between 1 and " + std::to_string(kMaxSamplesPerPixel) + ", not " +
-                          std::to_string(spp));
-  if (threads < 0 || threads > 65536)
-    throw py::value_error("threads must be between 1 and 65536, not " + std::to_string(threads));
-  if (targetError != 0.0 && !(targetError > 0.0 && targetError < 1.0))
-    throw py::value_error("target_error must lie between 0 and 1 (a relative RMSE such as 0.02), not " +
-                          std::to_string(targetError));
   RenderSettings settings;
-  settings.samplesPerPixel = spp > 0 ? spp : s.scene->sensor().sampler().sampleCount();
+  settings.samplesPerPixel = spp;
   settings.seed = seed;
   settings.threads = threads;
   settings.adaptive = adaptive || targetError > 0.0;
   settings.targetError = targetError;
+  settings.validate({"spp", "threads", "target_error", "bins"});
+  if (spp == 0) settings.samplesPerPixel = s.scene->sensor().sampler().sampleCount();
   std::atomic<bool> cancel{false};
   settings.cancel = &cancel;
 

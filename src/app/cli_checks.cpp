@@ -1,6 +1,9 @@
 #include "app/cli_checks.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,6 +68,17 @@ std::vector<std::string> optionNames(const CLI::App& command) {
     for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
   }
   return names;
+}
+
+int parseCount(const char* option, const std::string& text, int lowest, int highest) {
+  if (text.empty()) return 0;
+  long long value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::invalid_argument || end != text.data() + text.size())
+    throw std::runtime_error(fmt::format("{} expects a whole number, not '{}'", option, text));
+  if (ec != std::errc() || value < lowest || value > highest)
+    throw std::runtime_error(fmt::format("{} must be between {} and {}, not {}", option, lowest, highest, text));
+  return int(value);
 }
 
 }  // namespace columba

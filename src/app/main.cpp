@@ -6,6 +6,7 @@
 
 #include "app/bsdf_command.h"
 #include "app/cli_checks.h"
+#include "app/compare_command.h"
 #include "app/feather_command.h"
 #include "app/fit_command.h"
 #include "app/merge_command.h"

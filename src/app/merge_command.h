@@ -8,8 +8,4 @@ namespace columba {
 // frame of a split sweep (as the merge job of `columba slurm` does).
 void addMergeCommand(CLI::App& app);
 
-// `columba compare A.exr B.exr [--tolerance T]`: whether two images are bit-identical (or differ
-// by at most T), with the largest difference and where it is.
-void addCompareCommand(CLI::App& app);
-
 }  // namespace columba

@@ -10,11 +10,10 @@
 #include <optional>
 #include <set>
 
+#include "app/cli_checks.h"
 #include "app/interruption.h"
 #include "app/progress_reporter.h"
-#include "builtin/builtin_plugins.h"
-#include "builtin/default_scene.h"
-#include "builtin/default_scene_xml.h"
+#include "app/scene_options.h"
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/pieces.h"
@@ -38,16 +37,6 @@ struct RenderOptions {
   double targetError = 0.0;  // --target-error E (0: none)
 };
 
-Defines parseDefines(const std::vector<std::string>& items) {
-  Defines defines;
-  for (const std::string& item : items) {
-    size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) throw std::runtime_error("-D expects name=value, got '" + item + "'");
-    defines[item.substr(0, eq)] = item.substr(eq + 1);
-  }
-  return defines;
-}
-
 // The EXR and PNG a render writes. -o names one of them; the other is written beside it, so the
 // linear data and the preview always exist together.
 struct OutputPair {
@@ -70,16 +59,6 @@ struct OutputPair {
   // Where an interrupted render goes, so that it never replaces a finished image: OUT.partial.exr.
   OutputPair partial() const { return {partialFileName(exr.string()), partialFileName(png.string())}; }
 };
-
-std::string defaultOutput(const std::string& scenePath) {
-  return (scenePath.empty() ? std::string("default") : std::filesystem::path(scenePath).stem().string()) + ".exr";
-}
-
-std::string readSceneText(const std::string& scenePath) {
-  if (scenePath.empty()) return kDefaultSceneXML;
-  std::ifstream in(scenePath, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // The manifest of a local sweep: written with every frame pending, then as frames finish.
 std::string defaultManifestPath(const RenderOptions& options) {
@@ -118,19 +97,27 @@ std::string frameLabel(const SweepFrame& frame) {
   return label;
 }
 
-int runRender(const RenderOptions& options) {
-  const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
-  const int threads = parseCount("--threads", options.threads, 1, 65536);
-  setImageWriterThreads(threads);
-  const int bins = parseCount("--bins", options.scene.bins, 1, 470);
+// What a render does, decided before its first frame: every option checked, every output named.
+struct RenderPlan {
+  RenderSettings settings;  // from the options; each frame adds its sample count and piece
+  bool spectral = false;
   std::optional<PieceIndex> part, pass;
-  if (!options.part.empty()) part = parsePieceIndex("--part", options.part, 65536);
-  if (!options.pass.empty()) pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
-  const FramePlan plan = planFrames(options.scene, options.output);
-  const int frameCount = int(plan.frames.size());
+  FramePlan frames;
+  std::vector<int> selected;        // the frames to render (all, or --frame's)
+  std::vector<OutputPair> outputs;  // every frame's
+  bool sweeping = false;
+  // A sweep rendered here in full keeps a manifest; the pieces of a split render leave that to
+  // whoever split it (`columba slurm`), since many of them run at once.
+  bool keepManifest = false;
+  std::string manifestPath;
+
+  bool piece() const { return part || pass; }
+};
+
+std::vector<int> selectedFrames(const std::string& frameOption, int frameCount) {
   std::vector<int> selected;
-  if (!options.frame.empty()) {
-    int f = parseCount("--frame", options.frame, 0, 1 << 30);
+  if (!frameOption.empty()) {
+    int f = parseCount("--frame", frameOption, 0, 1 << 30);
     if (f >= frameCount)
       throw std::runtime_error(fmt::format("--frame {}: the sweep has {} frame{} (0 to {})", f, frameCount,
                                            frameCount == 1 ? "" : "s", frameCount - 1));
@@ -138,50 +125,206 @@ int runRender(const RenderOptions& options) {
   } else {
     for (int f = 0; f < frameCount; ++f) selected.push_back(f);
   }
-  const bool piece = part || pass;
-  const double targetError = options.targetError;
-  if (targetError != 0.0 && !(targetError > 0.0 && targetError < 1.0))
-    throw std::runtime_error(fmt::format(
-        "--target-error {}: give the relative RMSE to reach, a number between 0 and 1 (e.g. 0.02)", targetError));
-  const bool adaptive = options.adaptive || targetError > 0.0;
-  if (adaptive && piece)
+  return selected;
+}
+
+RenderPlan planRender(const RenderOptions& options) {
+  RenderPlan plan;
+  RenderSettings& settings = plan.settings;
+  settings.samplesPerPixel = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
+  settings.seed = options.scene.seed;
+  settings.threads = parseCount("--threads", options.threads, 1, kMaxRenderThreads);
+  const int bins = parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
+  plan.spectral = options.scene.spectral;
+  if (plan.spectral) settings.spectralBins = bins;
+  if (!options.part.empty()) plan.part = parsePieceIndex("--part", options.part, 65536);
+  if (!options.pass.empty()) plan.pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
+  plan.frames = planFrames(options.scene, options.output);
+  plan.selected = selectedFrames(options.frame, int(plan.frames.frames.size()));
+  settings.targetError = options.targetError;
+  settings.adaptive = options.adaptive || options.targetError > 0.0;
+  settings.validate({"--spp", "--threads", "--target-error", "--bins"});
+  if (settings.adaptive && plan.piece())
     throw std::runtime_error(
         "--adaptive and --target-error render whole images: they cannot be combined with --part "
         "or --pass");
-  // Every output is checked before the first frame is rendered.
-  std::vector<OutputPair> outputs;
-  for (const std::string& file : plan.files) {
-    outputs.push_back(OutputPair::fromPath(file));
-    if (piece) checkOutputImagePath(pieceFileName(file, part, pass));
+  for (const std::string& file : plan.frames.files) {
+    plan.outputs.push_back(OutputPair::fromPath(file));
+    if (plan.piece()) checkOutputImagePath(pieceFileName(file, plan.part, plan.pass));
   }
+  plan.sweeping = !plan.frames.axes.empty();
+  plan.keepManifest = (plan.sweeping || !options.manifest.empty()) && options.frame.empty() && !plan.piece();
+  plan.manifestPath = options.manifest.empty() ? defaultManifestPath(options) : options.manifest;
+  return plan;
+}
 
-  // A sweep rendered here in full keeps a manifest; the pieces of a split render leave that to
-  // whoever split it (`columba slurm`), since many of them run at once.
-  const bool sweeping = !plan.axes.empty();
-  const bool keepManifest = (sweeping || !options.manifest.empty()) && options.frame.empty() && !piece;
-  const std::string manifestPath = options.manifest.empty() ? defaultManifestPath(options) : options.manifest;
+// The manifest of a sweep rendered here, written with every frame pending.
+Manifest startManifest(const RenderOptions& options, const RenderPlan& plan) {
+  refuseReplacingManifest(plan.manifestPath);
   Manifest manifest;
-  if (keepManifest) {
-    refuseReplacingManifest(manifestPath);
-    manifest.columbaVersion = kColumbaVersion;
-    manifest.scene = options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath;
-    manifest.sceneHash = plan.sceneHash;
-    manifest.defines = plan.defines;
-    manifest.sweeps = plan.axes;
-    manifest.spp = sppOption;
-    manifest.seed = options.scene.seed;
-    for (int f = 0; f < frameCount; ++f) {
-      ManifestFrame frame;
-      frame.frame = f;
-      frame.defines = plan.frameDefines(f);
-      frame.seed = options.scene.seed;
-      frame.spp = sppOption;
-      frame.output = outputs[size_t(f)].exr.string();
-      manifest.frames.push_back(frame);
-    }
-    writeManifest(manifestPath, manifest);
+  manifest.columbaVersion = kColumbaVersion;
+  manifest.scene = options.scene.scenePath.empty() ? "<default scene>" : options.scene.scenePath;
+  manifest.sceneHash = plan.frames.sceneHash;
+  manifest.defines = plan.frames.defines;
+  manifest.sweeps = plan.frames.axes;
+  manifest.spp = plan.settings.samplesPerPixel;
+  manifest.seed = plan.settings.seed;
+  for (int f = 0; f < int(plan.frames.frames.size()); ++f) {
+    ManifestFrame frame;
+    frame.frame = f;
+    frame.defines = plan.frames.frameDefines(f);
+    frame.seed = plan.settings.seed;
+    frame.spp = plan.settings.samplesPerPixel;
+    frame.output = plan.outputs[size_t(f)].exr.string();
+    manifest.frames.push_back(frame);
   }
+  writeManifest(plan.manifestPath, manifest);
+  return manifest;
+}
 
+// Frame f's scene, with a warning (once per name) for each -D it does not use.
+Scene loadFrame(const RenderOptions& options, const RenderPlan& plan, int f, std::set<std::string>& warned) {
+  const Defines defines = plan.frames.frameDefines(f);
+  ParsedScene parsed = loadFrameScene(options.scene, defines);
+  for (const std::string& name : parsed.unusedDefines)
+    if (warned.insert(name).second)
+      fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
+                 defines.at(name), name);
+  return Scene(parsed, frameSceneSource(options.scene));
+}
+
+// A frame's settings and the record its image keeps of them; `pieceText` says which piece it is.
+PieceInfo framePiece(const RenderPlan& plan, int f, const Scene& scene, const std::string& sceneName,
+                     RenderSettings& settings, std::string& pieceText) {
+  const int spp = settings.samplesPerPixel > 0 ? settings.samplesPerPixel : scene.sensor().sampler().sampleCount();
+  settings.samplesPerPixel = spp;
+  PieceInfo info;
+  info.scene = sceneName;
+  info.sceneHash = plan.frames.sceneHash;
+  info.defines = describeDefines(plan.frames.frameDefines(f));
+  info.seed = settings.seed;
+  info.spp = spp;
+  // A split render's frame is the film's crop window (the whole film unless cropped): the pieces'
+  // windows are relative to it, and merged they make the image a render in one piece makes.
+  const PixelRect& crop = scene.sensor().film().crop();
+  info.frameWidth = crop.width();
+  info.frameHeight = crop.height();
+  if (plan.spectral)
+    info.spectral = fmt::format(
+        "{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
+        "(S0.<centre>nm)",
+        settings.spectralBins, (settings.spectralMax - settings.spectralMin) / settings.spectralBins,
+        settings.spectralMin, settings.spectralMax);
+  if (plan.part) {
+    // Bands of rows of about equal cost, from a pilot every part computes alike.
+    const PieceIndex& part = *plan.part;
+    info.part = part;
+    if (part.count == 1) {
+      info.partBounds = {0, crop.height()};
+    } else {
+      const std::vector<uint64_t> rowCosts = estimateRowCosts(scene, settings);
+      info.partBounds = balancedRowBands({rowCosts.begin() + crop.y0, rowCosts.begin() + crop.y1}, part.count);
+    }
+    const PixelRect window = partWindow(info.partBounds, part.index, crop.width());
+    settings.window = {crop.x0 + window.x0, crop.y0 + window.y0, crop.x0 + window.x1, crop.y0 + window.y1};
+    pieceText = fmt::format(", part {} (rows {}-{})", part.str(), window.y0, window.y1 - 1);
+  }
+  if (plan.pass) {
+    info.pass = plan.pass;
+    std::tie(info.sampleBegin, info.sampleEnd) = passSamples(*plan.pass, spp);
+    settings.sampleBegin = info.sampleBegin;
+    settings.sampleEnd = info.sampleEnd;
+    pieceText += fmt::format(", pass {} (samples {}:{})", plan.pass->str(), info.sampleBegin, info.sampleEnd);
+  }
+  return info;
+}
+
+// Writes frame f's image (the piece's, or the partial image of an interrupted render); returns
+// the files written.
+std::string writeFrame(const RenderPlan& plan, int f, const Scene& scene, const RenderSettings& settings,
+                       const Image& image, const RenderStats& stats, const ImageMetadata& metadata) {
+  const OutputPair& output = plan.outputs[size_t(f)];
+  if (plan.piece()) {
+    const PixelRect& crop = scene.sensor().film().crop();
+    const std::string file = pieceFileName(output.exr.string(), plan.part, plan.pass);
+    const std::string written = stats.complete ? file : partialFileName(file);
+    const PixelRect window = settings.window.empty() ? crop : settings.window;
+    writeEXRWindow(written, image, {window.x0 - crop.x0, window.y0 - crop.y0, window.x1 - crop.x0, window.y1 - crop.y0},
+                   crop.width(), crop.height(), metadata);
+    return written;
+  }
+  const OutputPair pair = stats.complete ? output : output.partial();
+  writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);
+  return pair.exr.string() + ", " + pair.png.string();
+}
+
+struct FrameResult {
+  RenderStats stats;
+  int spp = 0;
+};
+
+// Renders frame f (the i-th of those selected) and writes its image.
+FrameResult renderFrame(const RenderOptions& options, const RenderPlan& plan, size_t i, OverallProgress& overall,
+                        InterruptionGuard& interruption, std::set<std::string>& warned) {
+  const int f = plan.selected[i];
+  const std::string label = frameLabel(plan.frames.frames[size_t(f)]);
+  if (plan.sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, plan.selected.size(), label);
+  Scene scene = loadFrame(options, plan, f, warned);
+  const Film& film = scene.sensor().film();
+  RenderSettings settings = plan.settings;
+  std::string pieceText;
+  PieceInfo info = framePiece(plan, f, scene, frameSceneSource(options.scene).file, settings, pieceText);
+  const PixelRect& crop = film.crop();
+  const std::string cropText =
+      crop.width() == film.width() && crop.height() == film.height()
+          ? ""
+          : fmt::format(", cropped to {}x{} at ({}, {})", crop.width(), crop.height(), crop.x0, crop.y0);
+  fmt::print(stderr, "Rendering {} ({}x{}{}, {} spp{}, {} shapes, {} primitives)\n", info.scene, film.width(),
+             film.height(), cropText, settings.samplesPerPixel, pieceText, scene.shapeCount(), scene.primitiveCount());
+
+  overall.done = int(i);
+  ProgressReporter progress(plan.sweeping ? fmt::format("frame {}/{}", i + 1, plan.selected.size()) : "render",
+                            plan.sweeping ? &overall : nullptr);
+  settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
+  settings.cancel = &interruption.requested();
+  interruption.deferStops();
+  RenderStats stats;
+  Image image = renderImage(scene, settings, stats);
+  progress.finish();
+
+  info.complete = stats.complete;
+  info.seconds = stats.seconds;
+  const std::string written = writeFrame(plan, f, scene, settings, image, stats, pieceMetadata(info));
+  std::string dropped =
+      stats.nonFiniteSamples == 0 ? "" : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
+  fmt::print("{} {}{}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}\n",
+             stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", info.scene,
+             plan.sweeping ? " (" + label + ")" : "", stats.seconds, stats.samples / stats.seconds * 1e-6,
+             stats.rays / stats.seconds * 1e-6, dropped, written);
+  if (settings.adaptive && stats.complete)
+    fmt::print(
+        "Adaptive sampling: {} pilot samples per pixel, then {} to {} ({:.1f} on average); predicted relative "
+        "RMSE {:.4f}\n",
+        stats.pilotSamples, stats.fewestSamples, stats.mostSamples,
+        double(stats.samples) / (double(film.width()) * film.height()), stats.predictedRelativeError);
+  std::fflush(stdout);
+  return {stats, settings.samplesPerPixel};
+}
+
+void recordFrame(Manifest& manifest, const RenderPlan& plan, int f, const FrameResult& result) {
+  const RenderStats& stats = result.stats;
+  ManifestFrame& frame = manifest.frames[size_t(f)];
+  frame.status = stats.complete ? "done" : "interrupted";
+  frame.spp = result.spp;
+  frame.seconds = stats.seconds;
+  if (!stats.complete) frame.output = plan.outputs[size_t(f)].partial().exr.string();
+  writeManifest(plan.manifestPath, manifest);
+}
+
+int runRender(const RenderOptions& options) {
+  const RenderPlan plan = planRender(options);
+  setImageWriterThreads(plan.settings.threads);
+  Manifest manifest = plan.keepManifest ? startManifest(options, plan) : Manifest{};
   // Kept until the last image is written. Stops are deferred from the start of each frame's render
   // to its image on disk: a signal while a scene loads ends the process at once, and a second
   // Ctrl-C while writing exits at once.
@@ -189,211 +332,34 @@ int runRender(const RenderOptions& options) {
       "\nStopping: finishing the current samples and saving the partial image "
       "(interrupt again to quit at once)\n");
   OverallProgress overall;
-  overall.total = int(selected.size());
+  overall.total = int(plan.selected.size());
   overall.start = std::chrono::steady_clock::now();
   std::set<std::string> warned;
   double renderSeconds = 0.0;
-  for (size_t i = 0; i < selected.size(); ++i) {
-    const int f = selected[i];
-    const Defines defines = plan.frameDefines(f);
-    const std::string label = frameLabel(plan.frames[size_t(f)]);
-    if (sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, selected.size(), label);
-    ParsedScene parsed = loadFrameScene(options.scene, defines);
-    const SourceLocation source = frameSceneSource(options.scene);
-    for (const std::string& name : parsed.unusedDefines)
-      if (warned.insert(name).second)
-        fmt::print(stderr, "warning: -D {}={}: the scene uses no variable ${}, so it has no effect\n", name,
-                   defines.at(name), name);
-    Scene scene(parsed, source);
-
-    const Film& film = scene.sensor().film();
-    int spp = sppOption > 0 ? sppOption : scene.sensor().sampler().sampleCount();
-    RenderSettings settings;
-    settings.samplesPerPixel = spp;
-    settings.seed = options.scene.seed;
-    settings.threads = threads;
-    settings.adaptive = adaptive;
-    settings.targetError = targetError;
-    if (options.scene.spectral) settings.spectralBins = bins;
-    PieceInfo info;
-    info.scene = source.file;
-    info.sceneHash = plan.sceneHash;
-    info.defines = describeDefines(defines);
-    info.seed = options.scene.seed;
-    info.spp = spp;
-    // A split render's frame is the film's crop window (the whole film unless cropped): the pieces'
-    // windows are relative to it, and merged they make the image a render in one piece makes.
-    const PixelRect& crop = film.crop();
-    info.frameWidth = crop.width();
-    info.frameHeight = crop.height();
-    if (options.scene.spectral)
-      info.spectral = fmt::format(
-          "{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
-          "(S0.<centre>nm)",
-          bins, (settings.spectralMax - settings.spectralMin) / bins, settings.spectralMin, settings.spectralMax);
-    std::string pieceText;
-    if (part) {
-      // Bands of rows of about equal cost, from a pilot every part computes alike.
-      info.part = part;
-      if (part->count == 1) {
-        info.partBounds = {0, crop.height()};
-      } else {
-        const std::vector<uint64_t> rowCosts = estimateRowCosts(scene, settings);
-        info.partBounds = balancedRowBands({rowCosts.begin() + crop.y0, rowCosts.begin() + crop.y1}, part->count);
-      }
-      const PixelRect window = partWindow(info.partBounds, part->index, crop.width());
-      settings.window = {crop.x0 + window.x0, crop.y0 + window.y0, crop.x0 + window.x1, crop.y0 + window.y1};
-      pieceText = fmt::format(", part {} (rows {}-{})", part->str(), window.y0, window.y1 - 1);
-    }
-    if (pass) {
-      info.pass = pass;
-      std::tie(info.sampleBegin, info.sampleEnd) = passSamples(*pass, spp);
-      settings.sampleBegin = info.sampleBegin;
-      settings.sampleEnd = info.sampleEnd;
-      pieceText += fmt::format(", pass {} (samples {}:{})", pass->str(), info.sampleBegin, info.sampleEnd);
-    }
-    const std::string cropText =
-        crop.width() == film.width() && crop.height() == film.height()
-            ? ""
-            : fmt::format(", cropped to {}x{} at ({}, {})", crop.width(), crop.height(), crop.x0, crop.y0);
-    fmt::print(stderr, "Rendering {} ({}x{}{}, {} spp{}, {} shapes, {} primitives)\n", source.file, film.width(),
-               film.height(), cropText, spp, pieceText, scene.shapeCount(), scene.primitiveCount());
-
-    overall.done = int(i);
-    ProgressReporter progress(sweeping ? fmt::format("frame {}/{}", i + 1, selected.size()) : "render",
-                              sweeping ? &overall : nullptr);
-    settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
-    settings.cancel = &interruption.requested();
-    interruption.deferStops();
-    RenderStats stats;
-    Image image = renderImage(scene, settings, stats);
-    progress.finish();
+  const bool several = plan.sweeping && plan.selected.size() > 1;
+  for (size_t i = 0; i < plan.selected.size(); ++i) {
+    const int f = plan.selected[i];
+    const FrameResult result = renderFrame(options, plan, i, overall, interruption, warned);
+    const RenderStats& stats = result.stats;
     renderSeconds += stats.seconds;
-
-    info.complete = stats.complete;
-    info.seconds = stats.seconds;
-    const ImageMetadata metadata = pieceMetadata(info);
-    const OutputPair& output = outputs[size_t(f)];
-    std::string written;
-    if (piece) {
-      const std::string file = pieceFileName(output.exr.string(), part, pass);
-      written = stats.complete ? file : partialFileName(file);
-      const PixelRect window = settings.window.empty() ? crop : settings.window;
-      writeEXRWindow(written, image,
-                     {window.x0 - crop.x0, window.y0 - crop.y0, window.x1 - crop.x0, window.y1 - crop.y0}, crop.width(),
-                     crop.height(), metadata);
-    } else {
-      const OutputPair pair = stats.complete ? output : output.partial();
-      writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);
-      written = pair.exr.string() + ", " + pair.png.string();
-    }
-    std::string dropped =
-        stats.nonFiniteSamples == 0 ? "" : fmt::format(", {} non-finite samples dropped", stats.nonFiniteSamples);
-    fmt::print("{} {}{}: {:.2f} s, {:.3f} M samples/s, {:.3f} M rays/s{} -> {}\n",
-               stats.complete ? "Rendered" : "Interrupted; wrote the partial image of", source.file,
-               sweeping ? " (" + label + ")" : "", stats.seconds, stats.samples / stats.seconds * 1e-6,
-               stats.rays / stats.seconds * 1e-6, dropped, written);
-    if (adaptive && stats.complete)
-      fmt::print(
-          "Adaptive sampling: {} pilot samples per pixel, then {} to {} ({:.1f} on average); predicted relative "
-          "RMSE {:.4f}\n",
-          stats.pilotSamples, stats.fewestSamples, stats.mostSamples,
-          double(stats.samples) / (double(film.width()) * film.height()), stats.predictedRelativeError);
-    std::fflush(stdout);
-    if (keepManifest) {
-      ManifestFrame& frame = manifest.frames[size_t(f)];
-      frame.status = stats.complete ? "done" : "interrupted";
-      frame.spp = spp;
-      frame.seconds = stats.seconds;
-      if (!stats.complete) frame.output = output.partial().exr.string();
-      writeManifest(manifestPath, manifest);
-    }
+    if (plan.keepManifest) recordFrame(manifest, plan, f, result);
     if (!stats.complete) return 128 + interruption.signalNumber();
     interruption.stopAtOnce();
     // A signal while the finished frame was written: the next frame is not begun.
     if (interruption.requested()) return 128 + interruption.signalNumber();
-    if (sweeping && selected.size() > 1) {
+    if (several) {
       overall.done = int(i) + 1;
       fmt::print(stderr, "Frame {} done in {}; {} of {} frames, {}\n", f, formatDuration(stats.seconds), i + 1,
-                 selected.size(), overall.eta(0.0));
+                 plan.selected.size(), overall.eta(0.0));
     }
   }
-  if (sweeping && selected.size() > 1)
-    fmt::print("Rendered {} frames: {:.2f} s rendering, {:.2f} s in all{}\n", selected.size(), renderSeconds,
+  if (several)
+    fmt::print("Rendered {} frames: {:.2f} s rendering, {:.2f} s in all{}\n", plan.selected.size(), renderSeconds,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - overall.start).count(),
-               keepManifest ? " (manifest: " + manifestPath + ")" : "");
+               plan.keepManifest ? " (manifest: " + plan.manifestPath + ")" : "");
   return 0;
 }
 }  // namespace
-
-ParsedScene loadFrameScene(const SceneOptions& options, const Defines& defines) {
-  return options.scenePath.empty() ? loadDefaultScene(defines)
-                                   : loadSceneFile(options.scenePath, defines, builtinPlugins());
-}
-
-SourceLocation frameSceneSource(const SceneOptions& options) {
-  return {options.scenePath.empty() ? "<default scene>" : options.scenePath, 0};
-}
-
-std::map<std::string, std::string> FramePlan::frameDefines(int f) const {
-  std::map<std::string, std::string> all = defines;
-  for (const auto& [name, value] : frames[size_t(f)].values) all[name] = value;
-  return all;
-}
-
-std::string describeDefines(const std::map<std::string, std::string>& defines) {
-  std::string text;
-  for (const auto& [name, value] : defines) text += (text.empty() ? "" : "\n") + name + "=" + value;
-  return text;
-}
-
-int parseCount(const char* option, const std::string& text, int lowest, int highest) {
-  if (text.empty()) return 0;
-  long long value = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec == std::errc::invalid_argument || end != text.data() + text.size())
-    throw std::runtime_error(fmt::format("{} expects a whole number, not '{}'", option, text));
-  if (ec != std::errc() || value < lowest || value > highest)
-    throw std::runtime_error(fmt::format("{} must be between {} and {}, not {}", option, lowest, highest, text));
-  return int(value);
-}
-
-FramePlan planFrames(const SceneOptions& options, const std::string& output) {
-  if (!options.scenePath.empty() && !std::filesystem::is_regular_file(options.scenePath))
-    throw std::runtime_error("scene file '" + options.scenePath + "' does not exist or is not a regular file");
-  FramePlan plan;
-  plan.defines = parseDefines(options.defines);
-  for (const std::string& spec : options.sweeps) {
-    plan.axes.push_back(parseSweep(spec));
-    if (plan.defines.count(plan.axes.back().name))
-      throw std::runtime_error(
-          fmt::format("-D {0}=... and --sweep {0}=... both set ${0}; give one of them", plan.axes.back().name));
-  }
-  plan.frames = expandSweeps(plan.axes);
-  plan.files =
-      frameFiles(output.empty() ? defaultOutput(options.scenePath) : output, options.framesPattern, plan.frames);
-  plan.sceneHash = textHash(readSceneText(options.scenePath));
-  return plan;
-}
-
-void addSceneOptions(CLI::App* cmd, SceneOptions& options) {
-  cmd->add_option("scene", options.scenePath, "Scene file (XML); none: the built-in default scene");
-  cmd->add_option("-D,--define", options.defines, "Set a scene parameter: -D name=value (repeatable)")
-      ->allow_extra_args(false);  // one name=value per -D, so that a scene file may follow
-  cmd->add_option("--spp", options.spp,
-                  fmt::format("Samples per pixel, 1 to {} (default: the scene's sampler)", kMaxSamplesPerPixel));
-  cmd->add_option("--seed", options.seed, "Random seed; the same seed gives the same image");
-  cmd->add_flag("--spectral", options.spectral,
-                "Also write radiance per wavelength bin over 400-700 nm into the EXR (channels S0.<centre>nm)");
-  cmd->add_option("--bins", options.bins, "Wavelength bins for --spectral, 1 to 470 (default 16)");
-  cmd->add_option("--sweep", options.sweeps,
-                  "Render one frame per value of a scene variable: NAME=START:STOP:STEP (STOP included) or "
-                  "NAME=v1,v2,...; several --sweep form a grid (the first varies slowest)")
-      ->allow_extra_args(false);
-  cmd->add_option("--frames", options.framesPattern,
-                  "The frames' file names: %d or %03d is the frame index, {NAME} a swept value, {NAME:03} the "
-                  "value formatted (default: OUT_NAME=VALUE.exr from -o)");
-}
 
 void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();

@@ -9,11 +9,13 @@
 #include <fstream>
 #include <optional>
 
-#include "app/render_command.h"
+#include "app/cli_checks.h"
+#include "app/scene_options.h"
 #include "core/quiet_warnings.h"
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/slurm.h"
+#include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
 
@@ -153,7 +155,7 @@ int runSlurm(const SlurmOptions& options) {
   const int passes = parseCount("--passes", options.passes, 1, kMaxSamplesPerPixel);
   const int cpus = parseCount("--cpus-per-task", options.cpusPerTask, 1, 4096);
   const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
-  parseCount("--bins", options.scene.bins, 1, 470);
+  parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
   const std::string stem =
       options.scene.scenePath.empty() ? std::string("default") : fs::path(options.scene.scenePath).stem().string();
   const fs::path outDir = fs::absolute(options.outDir.empty() ? "slurm-" + stem : options.outDir).lexically_normal();

@@ -231,6 +231,20 @@ std::vector<PilotPixel> renderPilot(const PixelSampler& pixels, const RenderSett
 
 }  // namespace
 
+void RenderSettings::validate(const RenderSettingNames& names) const {
+  auto checkCount = [](const char* name, int value, int highest) {
+    if (value < 0 || value > highest)
+      throw std::invalid_argument(fmt::format("{} must be between 1 and {}, not {}", name, highest, value));
+  };
+  checkCount(names.samplesPerPixel, samplesPerPixel, kMaxSamplesPerPixel);
+  checkCount(names.threads, threads, kMaxRenderThreads);
+  checkCount(names.spectralBins, spectralBins, kMaxSpectralBins);
+  if (targetError != 0.0 && !(targetError > 0.0 && targetError < 1.0))
+    throw std::invalid_argument(
+        fmt::format("{} {}: give the relative RMSE to reach, a number between 0 and 1 (e.g. 0.02)", names.targetError,
+                    targetError));
+}
+
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
   if (const ParticleTracerIntegrator* tracer = scene.particleTracer())
     return renderLightPaths(scene, *tracer, settings, stats);

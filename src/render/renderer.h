@@ -12,6 +12,18 @@
 
 namespace columba {
 
+inline constexpr int kMaxRenderThreads = 65536;
+inline constexpr int kMaxSpectralBins = 470;  // 1 nm bins over 360-830 nm
+
+// What the settings are called where they were given (the command line's options, Python's
+// keyword arguments), for RenderSettings::validate's messages.
+struct RenderSettingNames {
+  const char* samplesPerPixel;
+  const char* threads;
+  const char* targetError;
+  const char* spectralBins;
+};
+
 struct RenderSettings {
   int samplesPerPixel = 0;  // 0: the scene sampler's sample_count
   uint64_t seed = 0;
@@ -39,6 +51,11 @@ struct RenderSettings {
   // predicts for that relative RMSE is spent, at most the budget.
   bool adaptive = false;
   double targetError = 0.0;
+
+  // Throws std::invalid_argument, naming the setting as `names` do, for a sample count, thread
+  // count or spectral bin count out of range (0 is allowed for each: the scene's, all cores, RGB
+  // only) or a target error outside (0, 1) other than 0 (none).
+  void validate(const RenderSettingNames& names) const;
 };
 
 struct RenderStats {
