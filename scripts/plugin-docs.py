@@ -137,7 +137,7 @@ class SourceFile:
         self.code = strip_comments(self.text)
         self.flat = blank_strings(self.code)
         self.functions = []  # (name, body start, body end)
-        for m in re.finditer(r"const\s+Properties\s*&\s*props\b", self.flat):
+        for m in re.finditer(r"const\s+Properties\s*&\s*(?:props\b)?(?=\s*[,)])", self.flat):
             # Back to the parameter list's opening paren, then the function's name before it.
             depth, k = 0, m.start()
             while k > 0:
