@@ -11,11 +11,11 @@ Mitsuba 3: not in Mitsuba 3.
 | mu | float or texture | −0.35 | the tilt of the cross-section about the barbule axis, in radians | not in Mitsuba 3 |
 | H | float or texture | 1.25 | the barbule spacing, in units of the across semi-axis; positive | not in Mitsuba 3 |
 | height | float or texture | 0.6 | the keratin film's thickness in micrometres; not negative (a value that looks like nanometres warns) | not in Mitsuba 3 |
-| film_ior | float, string or spectrum | `keratin` | the film's index: a number, a named index, `keratin` (dispersive) or a spectrum against wavelength; it must exceed `ext_ior` | not in Mitsuba 3 |
+| film_ior | float, string or spectrum | `keratin` | the film's index: a number, a named index, `keratin`, or a spectrum of the index against wavelength; it must exceed `ext_ior` | not in Mitsuba 3 |
 | film_cauchy_a | float | — | the film's index as a Cauchy law a + b/λ², instead of `film_ior` | not in Mitsuba 3 |
-| film_cauchy_b | float | 0 | the Cauchy law's b (λ in micrometres) | not in Mitsuba 3 |
+| film_cauchy_b | float | 0 | the Cauchy law's b (λ in nanometres) | not in Mitsuba 3 |
 | ext_ior | float or string | `air` (1.000277) | the surrounding medium's constant index | not in Mitsuba 3 |
-| melanin | spectrum | measured table | the melanin layer's intensity reflectance, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
+| melanin | spectrum or float | measured table | the melanin layer's intensity reflectance against wavelength, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
 */
 #include "bsdfs/barbulebsdf.h"
 
