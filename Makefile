@@ -10,7 +10,7 @@ SANITIZE_BUILD ?= build-asan
 FUZZ_SECONDS ?= 300
 FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv
 
-.PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize format
+.PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize format docs
 
 deps:
 	@./scripts/install-deps.sh
@@ -52,6 +52,14 @@ install: build
 # `make format`: lays out every C++ file as .clang-format says (the `formatting` test checks it).
 format:
 	@./scripts/check-format.sh . --fix
+
+# `make docs`: the HTML site of docs/ (mkdocs.yml) in $(BUILD)/site, after checking that the plug-in
+# reference in docs/reference/ is what the sources' documentation blocks give; --strict fails on
+# broken links.
+docs: deps
+	@/usr/bin/python3 scripts/plugin-docs.py --check src docs/reference
+	@mkdocs build --strict --quiet --site-dir $(BUILD)/site
+	@echo "Documentation: $(BUILD)/site/index.html"
 
 bench: build
 	@./scripts/bench.sh $(BUILD)

@@ -1,3 +1,22 @@
+/*! plugin bsdf barbulebsdf barbulebsdfev
+The barbule BSDF of rock dove neck feathers (Huang et al. 2022): a vane of parallel barbules with elliptical cross-sections, coated by a thin keratin film over melanin. Its lobes are R, the specular reflection off the film with thin-film interference (a microfacet lobe whose normals come from the cross-section's curvature), TRT, light through the film reflected by the melanin layer and back out, and T, light straight through the gaps between barbules (a pass-through). The frame has z along the vane normal and y along the barbule axis. `barbulebsdf` takes the camera side as the model's incident direction, as a BSDF-sampled path tracer needs; `barbulebsdfev` takes the light's, as the paper's emitter-sampled visualisations do, and returns what an imaging scatterometer records, f · |cos θ_camera|. The [model](../model.md) page derives the lobes.
+
+On a feather whose file gives per-vertex values of `H`, `mu` or `height`, those win over a constant given here (with a warning naming the line); a texture given here wins over them.
+Mitsuba 3: not in Mitsuba 3.
+| parameter | type | default | meaning | Mitsuba 3 |
+| preset | string | — | a named set of shape parameters and film thickness (`dove-green`, `dove-purple`); parameters given beside it override its values | not in Mitsuba 3 |
+| b | float or texture | 0.25 | the cross-section's semi-axis along the vane normal (the one across is 1); positive | not in Mitsuba 3 |
+| phi_0 | float | −0.37 | the start of the reflective arc: a normal angle, in radians, in the cross-section's frame | not in Mitsuba 3 |
+| phi_1 | float | 2.64 | the end of the reflective arc; φ₁ − φ₀ lies in (0, π] or is at least 2π | not in Mitsuba 3 |
+| mu | float or texture | −0.35 | the tilt of the cross-section about the barbule axis, in radians | not in Mitsuba 3 |
+| H | float or texture | 1.25 | the barbule spacing, in units of the across semi-axis; positive | not in Mitsuba 3 |
+| height | float or texture | 0.6 | the keratin film's thickness in micrometres; not negative (a value that looks like nanometres warns) | not in Mitsuba 3 |
+| film_ior | float, string or spectrum | `keratin` | the film's index: a number, a named index, `keratin`, or a spectrum of the index against wavelength; it must exceed `ext_ior` | not in Mitsuba 3 |
+| film_cauchy_a | float | — | the film's index as a Cauchy law a + b/λ², instead of `film_ior` | not in Mitsuba 3 |
+| film_cauchy_b | float | 0 | the Cauchy law's b (λ in nanometres) | not in Mitsuba 3 |
+| ext_ior | float or string | `air` (1.000277) | the surrounding medium's constant index | not in Mitsuba 3 |
+| melanin | spectrum or float | measured table | the melanin layer's intensity reflectance against wavelength, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
+*/
 #include "bsdfs/barbulebsdf.h"
 
 #include <algorithm>

@@ -171,13 +171,7 @@ class BarbuleBSDF : public BSDF {
   std::shared_ptr<const PerPointParameterSources> sceneSources_;
 };
 
-// Plug-ins `barbulebsdf` and `barbulebsdfev`: preset (a <string>, see barbule/parameters.h; the
-// parameters given beside it override it), b, phi_0, phi_1, mu, H, height (<float>; b, mu, H
-// and height also as textures, which win over a shape's per-point values), film_ior
-// ("keratin" by default, or a number, a named index, or a <spectrum> of n against wavelength),
-// or film_cauchy_a and film_cauchy_b (n = a + b / lambda^2, lambda in nm), ext_ior ("air" by
-// default), melanin (a <spectrum> or <float> of reflectance; the embedded measured table by
-// default).
+// <bsdf type="barbulebsdf"> and <bsdf type="barbulebsdfev">: their parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeBarbuleBSDF(const Properties& props);
 std::shared_ptr<Object> makeBarbuleBSDFEv(const Properties& props);
 

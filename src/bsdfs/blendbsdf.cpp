@@ -1,3 +1,9 @@
+/*! plugin bsdf blendbsdf
+A blend of two nested BSDFs: (1 − weight) times the first plus weight times the second.
+Mitsuba 3: the same parameter and default.
+| parameter | type | default | meaning | Mitsuba 3 |
+| weight | float or texture | 0.5 | the second BSDF's share, 0 to 1 | same |
+*/
 #include "bsdfs/blendbsdf.h"
 
 #include <algorithm>

@@ -36,7 +36,7 @@ class BlendBSDF : public BSDF {
   FloatParameter weight_;  // of the second
 };
 
-// Parameters: weight (a <float> in [0, 1] or a texture, default 0.5) and two nested BSDFs.
+// <bsdf type="blendbsdf">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeBlendBSDF(const Properties& props);
 
 }  // namespace columba

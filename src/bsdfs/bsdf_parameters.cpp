@@ -1,3 +1,17 @@
+/*! parameters microfacet
+| parameter | type | default | meaning | Mitsuba 3 |
+| distribution | string | `beckmann` | the microfacet distribution, `beckmann` or `ggx` (in any case) | same |
+| alpha | float or texture | 0.1 | the isotropic roughness (RMS slope); not negative. `roughplastic`'s is a float only | same |
+| alpha_u | float or texture | 0.1 | the roughness along the tangent, with `alpha_v` and instead of `alpha`; refused by `roughplastic` | same |
+| alpha_v | float or texture | 0.1 | the roughness along the bitangent, with `alpha_u` | same |
+| sample_visible | boolean | true | accepted; no effect | chooses visible-normal sampling |
+*/
+/*! parameters conductor
+| parameter | type | default | meaning | Mitsuba 3 |
+| material | string | `none` | measured optical constants, tabulated over 300–1000 nm: `Au`, `Ag`, `Cu` (Johnson & Christy 1972), `Cr` (Johnson & Christy 1974) or `Al` (Rakić 1995); `none` is a perfect mirror. Not together with `eta` and `k` | a longer list of materials; also `none` by default |
+| eta | spectrum or texture | 0 | the real part of the metal's index of refraction; not negative | same |
+| k | spectrum or texture | 1 | the imaginary part (extinction coefficient); not negative | same |
+*/
 #include "bsdfs/bsdf_parameters.h"
 
 #include <algorithm>

@@ -1,3 +1,9 @@
+/*! plugin bsdf bumpmap
+One nested BSDF on the surface displaced along its normal by scale × height (the nested texture), without moving the geometry: the shading normal is the cross product of the displaced surface's derivatives, from dp/du and dp/dv, which meshes and the analytic shapes give (on a feather the frame is left unperturbed).
+Mitsuba 3: the same parameter and default; the normal is turned to the shading normal's side, where Mitsuba 3 uses the geometric normal's.
+| parameter | type | default | meaning | Mitsuba 3 |
+| scale | float | 1 | a factor on the height texture | same |
+*/
 #include "bsdfs/bumpmap.h"
 
 namespace columba {

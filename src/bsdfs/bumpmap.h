@@ -25,8 +25,7 @@ class BumpMapBSDF : public PerturbedFrameBSDF {
   float scale_;
 };
 
-// Parameters: one nested texture (any name; a bitmap read with raw=true, usually), scale (1) and
-// one nested BSDF.
+// <bsdf type="bumpmap">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeBumpMapBSDF(const Properties& props);
 
 }  // namespace columba

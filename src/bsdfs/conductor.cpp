@@ -1,3 +1,10 @@
+/*! plugin bsdf conductor
+Smooth metal: a perfect mirror weighted by the metal's Fresnel reflectance at each wavelength. One-sided.
+Mitsuba 3: the same parameters; fewer named materials.
+uses: conductor
+| parameter | type | default | meaning | Mitsuba 3 |
+| specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |
+*/
 #include "bsdfs/conductor.h"
 
 #include "bsdfs/bsdf_parameters.h"

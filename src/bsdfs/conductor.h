@@ -23,8 +23,7 @@ class ConductorBSDF : public DeltaBSDF {
   SpectrumParameter specularReflectance_;
 };
 
-// Parameters: material ("none" = perfect mirror, the default, or a measured metal) or eta and k
-// spectra; specular_reflectance (1).
+// <bsdf type="conductor">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeConductorBSDF(const Properties& props);
 
 }  // namespace columba

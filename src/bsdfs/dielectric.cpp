@@ -1,3 +1,12 @@
+/*! plugin bsdf dielectric
+A smooth interface between two dielectrics: specular reflection and refraction, chosen by the Fresnel reflectance. Refraction scales radiance by (η_i/η_t)².
+Mitsuba 3: the same parameters and defaults.
+| parameter | type | default | meaning | Mitsuba 3 |
+| int_ior | float or string | `bk7` (1.5046) | the index inside: a positive number or a named material | same |
+| ext_ior | float or string | `air` (1.000277) | the index outside | same |
+| specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |
+| specular_transmittance | spectrum or texture | 1 | a factor on the transmission | same |
+*/
 #include "bsdfs/dielectric.h"
 
 #include "bsdfs/bsdf_parameters.h"

@@ -26,8 +26,7 @@ class DielectricBSDF : public DeltaBSDF {
   SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
-// Parameters: int_ior ("bk7"), ext_ior ("air") as numbers or names; specular_reflectance and
-// specular_transmittance (1).
+// <bsdf type="dielectric">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeDielectricBSDF(const Properties& props);
 
 }  // namespace columba

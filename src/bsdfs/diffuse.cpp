@@ -1,3 +1,9 @@
+/*! plugin bsdf diffuse
+An ideal diffuse (Lambertian) reflector; the BSDF of a shape that has none.
+Mitsuba 3: as Mitsuba 3's `diffuse`.
+| parameter | type | default | meaning | Mitsuba 3 |
+| reflectance | spectrum or texture | 0.5 | the albedo; an RGB colour is clamped to [0, 1] | same |
+*/
 #include "bsdfs/diffuse.h"
 
 #include "core/sampling.h"

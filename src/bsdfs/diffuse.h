@@ -19,7 +19,7 @@ class DiffuseBSDF : public BSDF {
   SpectrumParameter reflectance_;
 };
 
-// Parameters: reflectance (default 0.5).
+// <bsdf type="diffuse">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeDiffuseBSDF(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,9 @@
+/*! plugin bsdf mask
+One nested BSDF on a fraction `opacity` of the surface (leaves, fences); the rest lets light through untouched, as a pass-through with weight 1 − opacity, for shadow rays too.
+Mitsuba 3: the same parameter and default.
+| parameter | type | default | meaning | Mitsuba 3 |
+| opacity | float or texture | 0.5 | the fraction of the surface the nested BSDF covers, 0 to 1 | same |
+*/
 #include "bsdfs/mask.h"
 
 #include <algorithm>

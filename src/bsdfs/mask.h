@@ -33,7 +33,7 @@ class MaskBSDF : public BSDF {
   FloatParameter opacity_;
 };
 
-// Parameters: opacity (a <float> in [0, 1] or a texture, default 0.5) and one nested BSDF.
+// <bsdf type="mask">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeMaskBSDF(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,9 @@
+/*! plugin bsdf normalmap
+One nested BSDF seen through shading normals read from a texture of raw triples: the triple c at a point gives the normal 2c − 1 in the frame of dp/du and the shading normal; the nested BSDF is evaluated in the frame around it whose x axis is the closest to dp/du. As in Mitsuba, directions on different sides of the two surfaces get no value.
+Mitsuba 3: the same parameter; the texture must give raw triples.
+| parameter | type | default | meaning | Mitsuba 3 |
+| normalmap | texture | required | a `bitmap` read with `raw`, a 3-component `rawconstant` or a `mesh_attribute` | same |
+*/
 #include "bsdfs/normalmap.h"
 
 namespace columba {

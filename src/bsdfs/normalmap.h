@@ -21,8 +21,7 @@ class NormalMapBSDF : public PerturbedFrameBSDF {
   std::shared_ptr<const Texture> normals_;
 };
 
-// Parameters: a texture `normalmap` (a bitmap read with raw=true, or any texture of raw triples)
-// and one nested BSDF.
+// <bsdf type="normalmap">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeNormalMapBSDF(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,7 @@
+/*! plugin bsdf null
+The surface is not there for light: rays and shadow rays pass straight through and nothing is scattered (a shape that only carries an emitter).
+Mitsuba 3: as Mitsuba 3's `null`.
+*/
 #include "bsdfs/null.h"
 
 namespace columba {

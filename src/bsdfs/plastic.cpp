@@ -1,3 +1,13 @@
+/*! plugin bsdf plastic
+Smooth plastic: a smooth dielectric coat that reflects specularly over an ideal diffuse base. Light refracts into the coat, scatters off the base and leaves after any number of internal reflections at the coat's underside, each with the diffuse Fresnel reflectance. One-sided.
+Mitsuba 3: the same parameters and defaults.
+| parameter | type | default | meaning | Mitsuba 3 |
+| int_ior | float or string | `polypropylene` (1.49) | the coat's index of refraction: a positive number or a named material | same |
+| ext_ior | float or string | `air` (1.000277) | the index of the medium outside | same |
+| diffuse_reflectance | spectrum or texture | 0.5 | the base's albedo | same |
+| specular_reflectance | spectrum or texture | 1 | a factor on the specular reflection | same |
+| nonlinear | boolean | false | the base's colour shifts with internal scattering (a darker, more saturated result) | same |
+*/
 #include "bsdfs/plastic.h"
 
 #include "bsdfs/bsdf_parameters.h"

@@ -33,8 +33,7 @@ class PlasticBSDF : public BSDF {
   float specularSamplingWeight_;  // mean specular / (mean specular + mean diffuse reflectance)
 };
 
-// Parameters: int_ior ("polypropylene"), ext_ior ("air"), diffuse_reflectance (0.5),
-// specular_reflectance (1), nonlinear (false).
+// <bsdf type="plastic">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makePlasticBSDF(const Properties& props);
 
 }  // namespace columba

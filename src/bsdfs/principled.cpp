@@ -1,3 +1,24 @@
+/*! plugin bsdf principled
+The principled BSDF after Burley's Disney model (the 2012 BRDF and the 2015 BSDF without its subsurface and volume parts): an anisotropic GGX main specular lobe, a specular transmission lobe (rough refraction tinted by √base_color), Disney's diffuse with retro-reflection blended toward its subsurface approximation by `flatness`, a sheen and a GTR1 clearcoat. The lobes add up, so with a white base they can reflect more than the light they receive, as in Mitsuba 3.
+Mitsuba 3: Mitsuba 3's parameters and defaults; no subsurface scattering, as in Mitsuba 3. All but `eta`, `specular` and the sampling rates may be textures.
+| parameter | type | default | meaning | Mitsuba 3 |
+| base_color | spectrum or texture | 0.5 | the base colour | same |
+| roughness | float or texture | 0.5 | the specular lobes' roughness, 0 to 1 | same |
+| anisotropic | float or texture | 0 | the anisotropy of the specular lobe, 0 to 1 | same |
+| metallic | float or texture | 0 | the blend toward a metal, 0 to 1 | same |
+| spec_trans | float or texture | 0 | the blend toward specular transmission, 0 to 1 | same |
+| eta | float | from `specular` | the relative index of refraction; positive; not together with `specular` (1 becomes 1.001 when the surface transmits) | same |
+| specular | float | 0.5 | the normal-incidence reflectance R₀ / 0.08, in [0, 12.5), used when `eta` is not given: η = 2 / (1 − √(0.08 specular)) − 1 | same |
+| spec_tint | float or texture | 0 | tints the dielectric specular reflection toward the base colour, 0 to 1 | same |
+| sheen | float or texture | 0 | the sheen's weight, 0 to 1 | same |
+| sheen_tint | float or texture | 0 | tints the sheen toward the base colour, 0 to 1 | same |
+| flatness | float or texture | 0 | the blend of the diffuse lobe toward the subsurface approximation, 0 to 1 | same |
+| clearcoat | float or texture | 0 | the clearcoat's weight (the lobe weighs clearcoat / 4), 0 to 1 | same |
+| clearcoat_gloss | float or texture | 0 | the clearcoat's glossiness, 0 to 1 | same |
+| diffuse_reflectance_sampling_rate | float | 1 | the relative rate at which the diffuse lobe is sampled; not negative | same |
+| main_specular_sampling_rate | float | 1 | the same for the main specular lobe | same |
+| clearcoat_sampling_rate | float | 1 | the same for the clearcoat | same |
+*/
 #include "bsdfs/principled.h"
 
 #include <cmath>

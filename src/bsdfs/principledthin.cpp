@@ -1,3 +1,22 @@
+/*! plugin bsdf principledthin
+The principled model for a sheet with no thickness (leaves, paper, cloth), after Burley 2015, section 5.3: both sides look the same and light crossing the sheet is not bent. Its lobes are a GGX specular reflection, the same lobe mirrored through the sheet as specular transmission (tinted by `base_color`, its roughness scaled by 0.65 η − 0.35), Disney's diffuse with flatness and sheen as in `principled`, and a Lambertian diffuse transmission tinted by `base_color`.
+Mitsuba 3: Mitsuba 3's parameters and defaults. All but the sampling rates may be textures.
+| parameter | type | default | meaning | Mitsuba 3 |
+| base_color | spectrum or texture | 0.5 | the base colour | same |
+| roughness | float or texture | 0.5 | the specular lobes' roughness, 0 to 1 | same |
+| anisotropic | float or texture | 0 | the specular lobes' anisotropy, 0 to 1 | same |
+| spec_trans | float or texture | 0 | the weight of the specular lobes against the diffuse ones, 0 to 1 | same |
+| diff_trans | float or texture | 0 | the share of diffuse transmission, 0 to 2 (diffuse transmission weighs diff_trans / 2) | same |
+| eta | float or texture | 1.5 | the sheet's relative index of refraction; positive | same |
+| spec_tint | float or texture | 0 | tints the specular reflection toward the base colour, 0 to 1 | same |
+| sheen | float or texture | 0 | the sheen's weight, 0 to 1 | same |
+| sheen_tint | float or texture | 0 | tints the sheen toward the base colour, 0 to 1 | same |
+| flatness | float or texture | 0 | the blend of the diffuse lobe toward the subsurface approximation, 0 to 1 | same |
+| specular_reflectance_sampling_rate | float | 1 | the relative rate at which the specular reflection is sampled; not negative | same |
+| specular_transmittance_sampling_rate | float | 1 | the same for the specular transmission | same |
+| diffuse_reflectance_sampling_rate | float | 1 | the same for the diffuse reflection | same |
+| diffuse_transmittance_sampling_rate | float | 1 | the same for the diffuse transmission | same |
+*/
 #include "bsdfs/principledthin.h"
 
 #include "bsdfs/microfacet_interface.h"

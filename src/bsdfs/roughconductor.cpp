@@ -1,3 +1,10 @@
+/*! plugin bsdf roughconductor
+Rough metal: microfacet reflection with the conductor's Fresnel term. One-sided.
+Mitsuba 3: the same parameters and defaults; fewer named materials.
+uses: microfacet, conductor
+| parameter | type | default | meaning | Mitsuba 3 |
+| specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |
+*/
 #include "bsdfs/roughconductor.h"
 
 #include "bsdfs/bsdf_parameters.h"

@@ -31,10 +31,7 @@ class RoughConductorBSDF : public BSDF {
   SpectrumParameter specularReflectance_;
 };
 
-// Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1) or alpha_u and alpha_v
-// (values or textures),
-// sample_visible; material ("none" = perfect mirror, the default, or a measured metal:
-// optics/conductor_materials.h) or eta (default 0) and k (default 1) spectra; specular_reflectance (1).
+// <bsdf type="roughconductor">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeRoughConductorBSDF(const Properties& props);
 
 }  // namespace columba

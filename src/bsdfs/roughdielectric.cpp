@@ -1,3 +1,13 @@
+/*! plugin bsdf roughdielectric
+A rough interface between two dielectrics: microfacet reflection and refraction (Walter et al. 2007), sampled through the normals visible from the incident direction, then reflection with the Fresnel reflectance at that normal as its probability. Refraction scales radiance by (η_i/η_t)², as `dielectric` does.
+Mitsuba 3: the same parameters and defaults; the roughness may be a texture.
+uses: microfacet
+| parameter | type | default | meaning | Mitsuba 3 |
+| int_ior | float or string | `bk7` (1.5046) | the index inside: a positive number or a named material | same |
+| ext_ior | float or string | `air` (1.000277) | the index outside | same |
+| specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |
+| specular_transmittance | spectrum or texture | 1 | a factor on the transmission | same |
+*/
 #include "bsdfs/roughdielectric.h"
 
 #include "bsdfs/bsdf_parameters.h"

@@ -28,9 +28,7 @@ class RoughDielectricBSDF : public BSDF {
   SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
-// Parameters: distribution ("beckmann", "ggx"), alpha or alpha_u and alpha_v (values or
-// textures), sample_visible,
-// int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).
+// <bsdf type="roughdielectric">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeRoughDielectricBSDF(const Properties& props);
 
 }  // namespace columba

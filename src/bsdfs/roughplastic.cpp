@@ -1,3 +1,14 @@
+/*! plugin bsdf roughplastic
+Rough plastic: a rough dielectric coat (microfacet reflection with the dielectric Fresnel term) over an ideal diffuse base, the base handled as in `plastic` with the coat's transmittance tabulated from its directional albedo. One-sided.
+Mitsuba 3: the same parameters and defaults; the roughness is isotropic and not a texture, as in Mitsuba 3.
+uses: microfacet
+| parameter | type | default | meaning | Mitsuba 3 |
+| int_ior | float or string | `polypropylene` (1.49) | the coat's index of refraction: a positive number or a named material | same |
+| ext_ior | float or string | `air` (1.000277) | the index of the medium outside | same |
+| diffuse_reflectance | spectrum or texture | 0.5 | the base's albedo | same |
+| specular_reflectance | spectrum or texture | 1 | a factor on the specular reflection | same |
+| nonlinear | boolean | false | the base's colour shifts with internal scattering | same |
+*/
 #include "bsdfs/roughplastic.h"
 
 #include "bsdfs/bsdf_parameters.h"

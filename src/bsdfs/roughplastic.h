@@ -51,9 +51,7 @@ class RoughPlasticBSDF : public BSDF {
   float internalReflectance_;                            // cosine-weighted rough reflectance at the coat's underside
 };
 
-// Parameters: distribution ("beckmann" default, "ggx"), alpha (0.1; isotropic only),
-// sample_visible, int_ior ("polypropylene"), ext_ior ("air"), diffuse_reflectance (0.5),
-// specular_reflectance (1), nonlinear (false).
+// <bsdf type="roughplastic">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeRoughPlasticBSDF(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,12 @@
+/*! plugin bsdf thindielectric
+A thin sheet of dielectric (a window pane): light is mirrored with the sheet's reflectance or passes straight through, on either side. With the Fresnel reflectance r, the light bouncing between the faces sums to R = 2r / (1 + r) and T = 1 − R. The transmission is a pass-through, so shadow rays cross the sheet with weight T.
+Mitsuba 3: the same parameters and defaults; shadow rays pass through the sheet.
+| parameter | type | default | meaning | Mitsuba 3 |
+| int_ior | float or string | `bk7` (1.5046) | the sheet's index: a positive number or a named material | same |
+| ext_ior | float or string | `air` (1.000277) | the index around it | same |
+| specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |
+| specular_transmittance | spectrum or texture | 1 | a factor on the transmission | same |
+*/
 #include "bsdfs/thindielectric.h"
 
 #include "bsdfs/bsdf_parameters.h"

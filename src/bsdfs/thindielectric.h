@@ -30,7 +30,7 @@ class ThinDielectricBSDF : public DeltaBSDF {
   SpectrumParameter specularReflectance_, specularTransmittance_;
 };
 
-// Parameters: int_ior ("bk7"), ext_ior ("air"), specular_reflectance and specular_transmittance (1).
+// <bsdf type="thindielectric">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeThinDielectricBSDF(const Properties& props);
 
 }  // namespace columba

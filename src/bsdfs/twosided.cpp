@@ -1,3 +1,7 @@
+/*! plugin bsdf twosided
+A two-sided adapter around one or two nested BSDFs: the first for light arriving above the surface, the second (or the first again), mirrored through the surface, for light below it. Meant for reflective BSDFs: nested BSDFs that transmit would scatter into the wrong side.
+Mitsuba 3: as Mitsuba 3's `twosided`.
+*/
 #include "bsdfs/twosided.h"
 
 namespace columba {

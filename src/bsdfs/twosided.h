@@ -29,7 +29,7 @@ class TwoSidedBSDF : public BSDF {
   std::shared_ptr<const BSDF> front_, back_;
 };
 
-// One nested BSDF (used on both sides) or two (front, then back).
+// <bsdf type="twosided">: its parameters are in docs/reference/bsdfs.md.
 std::shared_ptr<Object> makeTwoSidedBSDF(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,9 @@
+/*! parameters fov
+| parameter | type | default | meaning | Mitsuba 3 |
+| fov | float | — | the field of view in degrees, in (0, 180), along `fov_axis`; not together with `focal_length` | same |
+| fov_axis | string | `x` | the axis `fov` spans: `x`, `y`, `diagonal`, `smaller` or `larger` | same |
+| focal_length | float or string | `50mm` | the focal length of a lens over a 36 × 24 mm film, a number or a string `<x>mm` or `<x>`, when `fov` is not given: the diagonal field of view | same |
+*/
 #include "core/field_of_view.h"
 
 #include <cmath>

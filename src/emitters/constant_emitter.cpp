@@ -1,3 +1,9 @@
+/*! plugin emitter constant
+The same radiance from every direction at infinity. Path tracing leaves it to the BSDF samples wherever the BSDF can draw every direction it scatters into.
+Mitsuba 3: as Mitsuba 3's `constant`.
+| parameter | type | default | meaning | Mitsuba 3 |
+| radiance | spectrum | 1 | the radiance, as for `area` (a value or a colour is D65 of that luminance) | same |
+*/
 #include "emitters/constant_emitter.h"
 
 #include "core/sampling.h"

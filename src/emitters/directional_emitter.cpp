@@ -1,3 +1,11 @@
+/*! plugin emitter directional
+Light from infinitely far away, travelling along `direction`.
+Mitsuba 3: as Mitsuba 3's `directional`.
+| parameter | type | default | meaning | Mitsuba 3 |
+| direction | vector | (0, 0, 1) | the direction the light travels (before `to_world`); not zero | same |
+| to_world | transform | identity | turns `direction` | same |
+| irradiance | spectrum | 1 | the irradiance (W/m²/nm) on a surface facing the light; a value or a colour is D65 of that luminance | same |
+*/
 #include "emitters/directional_emitter.h"
 
 namespace columba {

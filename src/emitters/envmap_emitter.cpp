@@ -1,3 +1,11 @@
+/*! plugin emitter envmap
+Radiance at infinity from a latitude-longitude image (+y up, as Mitsuba lays it out), importance-sampled by pixel luminance: OpenEXR, Radiance HDR, PNG, JPEG, TGA, BMP and the other formats `bitmap` reads. Pixel colours become spectra as combinations of three smooth basis spectra, one per primary.
+Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled with their density in the map's own frame).
+| parameter | type | default | meaning | Mitsuba 3 |
+| filename | string | required | the image file | same |
+| to_world | transform | identity | turns the map; rotation (or a mirror) only | — |
+| scale | float | 1 | a factor on the radiance | same |
+*/
 #include "emitters/envmap_emitter.h"
 
 #include <cmath>

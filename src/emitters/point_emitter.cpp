@@ -1,3 +1,11 @@
+/*! plugin emitter point
+An isotropic point light.
+Mitsuba 3: as Mitsuba 3's `point`; the projected texture of Mitsuba 3's point light is not read.
+| parameter | type | default | meaning | Mitsuba 3 |
+| position | point | (0, 0, 0) | where the light is (before `to_world`) | same |
+| to_world | transform | identity | moves `position` | same |
+| intensity | spectrum | 1 | the radiant intensity (W/sr/nm); a value or a colour is D65 of that luminance | same |
+*/
 #include "emitters/point_emitter.h"
 
 #include "core/sampling.h"

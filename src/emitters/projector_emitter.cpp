@@ -1,3 +1,12 @@
+/*! plugin emitter projector
+A projection light: the perspective camera run backwards. From the origin of `to_world`, looking along its +z, it projects `irradiance` through the same field of view and pixel-to-direction mapping as the `perspective` sensor; the image's aspect is the texture's (a bitmap's width over height; 1 for other textures). A point at (x, y, z) of its frame receives π · scale · irradiance / (z² cos θ), so a plane facing it at z = 1 is lit evenly.
+Mitsuba 3: the same parameters; `to_world` must be rigid (the density of directions is the camera's).
+uses: fov
+| parameter | type | default | meaning | Mitsuba 3 |
+| irradiance | spectrum or texture | required | the irradiance on the image plane z = 1 | same |
+| scale | spectrum | 1 | a factor on `irradiance`: a single value is D65 of that luminance, as for every emitter | same |
+| to_world | transform | identity | the projector's frame; rotation and translation only | — |
+*/
 #include "emitters/projector_emitter.h"
 
 #include "core/field_of_view.h"

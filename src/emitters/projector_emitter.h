@@ -37,8 +37,7 @@ class ProjectorEmitter : public Emitter {
   Vec2 tanHalf_;
 };
 
-// Parameters: irradiance (required), scale (1), fov/fov_axis or focal_length, to_world (which must
-// not scale: the density of directions is the camera's).
+// <emitter type="projector">: its parameters are in docs/reference/emitters.md.
 std::shared_ptr<Object> makeProjectorEmitter(const Properties& props);
 
 }  // namespace columba

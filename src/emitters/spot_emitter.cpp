@@ -1,3 +1,13 @@
+/*! plugin emitter spot
+A spot light at the origin of `to_world`, shining along its +z: full intensity within `beam_width` of the axis, falling linearly in angle to zero at `cutoff_angle`. An optional nested `texture` is projected as Mitsuba projects it: the direction (x, y, z) of the light's frame looks it up at uv = (1/2 + x / (2 z tan(cutoff)), 1/2 + y / (2 z tan(cutoff))) and scales the intensity by its value there.
+Mitsuba 3: the same parameters and defaults.
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | the light's position and direction | same |
+| intensity | spectrum | 1 | the radiant intensity on the axis (W/sr/nm); a value or a colour is D65 of that luminance | same |
+| cutoff_angle | float | 20 | the angle in degrees, in (0, 180], beyond which no light leaves | same |
+| beam_width | float | 3/4 of `cutoff_angle` | the angle in degrees, 0 to `cutoff_angle`, within which the intensity is full | same |
+| texture | texture | — | a nested texture projected by the light; a value is an error | same |
+*/
 #include "emitters/spot_emitter.h"
 
 #include "core/sampling.h"

@@ -14,7 +14,7 @@ class BoxFilter : public ReconstructionFilter {
   float eval(float offset) const override { return offset >= -0.5f && offset < 0.5f ? 1.0f : 0.0f; }
 };
 
-// <rfilter type="box"/>: no parameters.
+// <rfilter type="box">: its parameters are in docs/reference/rfilters.md.
 std::shared_ptr<Object> makeBoxFilter(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,17 @@
+/*! plugin film hdrfilm
+The film: the image as an OpenEXR file of float32 values (and a PNG preview). Samples are splatted, weighted by the reconstruction filter, over every pixel the filter reaches. It holds one nested `rfilter` (default: `gaussian`). The film records XYZ, converted to linear Rec. 709 (sRGB primaries) with the plain matrix, without white balance.
+Mitsuba 3: the same size and crop parameters and defaults; only OpenEXR is written, always as float32; the alpha pixel formats are written without alpha.
+| parameter | type | default | meaning | Mitsuba 3 |
+| width | integer | 768 | the image width in pixels, 1 to 65536 | same |
+| height | integer | 576 | the image height in pixels, 1 to 65536 | same |
+| crop_offset_x | integer | 0 | the crop window's left column, inside the film; only the window is rendered, each pixel as in the full render, and a split render's parts divide the window | same |
+| crop_offset_y | integer | 0 | the crop window's top row, inside the film | same |
+| crop_width | integer | `width` | the crop window's width; it must fit inside the film | same |
+| crop_height | integer | `height` | the crop window's height; it must fit inside the film | same |
+| file_format | string | `openexr` | `openexr` or `exr`; anything else is an error | also `rgbe`, `pfm` and others |
+| pixel_format | string | `rgb` | the EXR's channels: `rgb`, `luminance` (Y) or `xyz` (CIE XYZ); `rgba`, `luminance_alpha` and `xyza` are written without alpha, with a warning naming the line, as no coverage is computed. The pieces of a split render and their merge stay RGB | alpha formats write coverage |
+| component_format | string | `float16` | `float16` or `float32`, accepted; the values are always written as float32 | chooses the stored precision |
+*/
 #include "film/film.h"
 
 #include <fmt/format.h>

@@ -1,3 +1,9 @@
+/*! plugin rfilter gaussian
+A Gaussian windowed at 4 standard deviations (the Gaussian minus its value there, clamped at 0), normalised; the default filter of `hdrfilm`.
+Mitsuba 3: as Mitsuba 3's `gaussian`; `stddev` is bounded so that the filter's radius reaches the centre of every sample's own pixel and stays within the film's splat reach.
+| parameter | type | default | meaning | Mitsuba 3 |
+| stddev | float | 0.5 | the standard deviation in pixels, 0.125 to 4.125 | same default, not bounded |
+*/
 #include "film/gaussian_filter.h"
 
 #include <fmt/format.h>

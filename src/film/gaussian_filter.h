@@ -21,7 +21,7 @@ class GaussianFilter : public ReconstructionFilter {
   float normalization_;  // 1 / the integral of the windowed Gaussian
 };
 
-// <rfilter type="gaussian">: stddev (0.5).
+// <rfilter type="gaussian">: its parameters are in docs/reference/rfilters.md.
 std::shared_ptr<Object> makeGaussianFilter(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,9 @@
+/*! plugin rfilter tent
+The tent filter: max(0, 1 − |x| / radius) / radius.
+Mitsuba 3: as Mitsuba 3's `tent`; `radius` is bounded so that it reaches the centre of every sample's own pixel and stays within the film's splat reach.
+| parameter | type | default | meaning | Mitsuba 3 |
+| radius | float | 1 | the half-width in pixels, 0.5 to 16.5 | same default, not bounded |
+*/
 #include "film/tent_filter.h"
 
 #include <fmt/format.h>

@@ -19,7 +19,7 @@ class TentFilter : public ReconstructionFilter {
   float radius_;
 };
 
-// <rfilter type="tent">: radius (1).
+// <rfilter type="tent">: its parameters are in docs/reference/rfilters.md.
 std::shared_ptr<Object> makeTentFilter(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,13 @@
+/*! plugin integrator direct
+Direct illumination only: at the first surface a camera ray reaches, `emitter_samples` emitter samples and `bsdf_samples` BSDF samples, combined by multiple importance sampling when both are used. Camera rays continue through pass-through surfaces with their transmitted weight. With both kinds of samples a `constant` environment is left to the BSDF samples, as in `path`.
+Mitsuba 3: the same parameters and defaults; `timeout` does not stop the render.
+uses: passes
+| parameter | type | default | meaning | Mitsuba 3 |
+| shading_samples | integer | 1 | the default of both `emitter_samples` and `bsdf_samples` | same |
+| emitter_samples | integer | `shading_samples` | emitter samples per hit; not negative | same |
+| bsdf_samples | integer | `shading_samples` | BSDF samples per hit; not negative | same |
+| hide_emitters | boolean | false | emitters seen directly by the camera are black | same |
+*/
 #include "integrators/direct_integrator.h"
 
 #include "core/sampling.h"

@@ -1,3 +1,14 @@
+/*! plugin integrator ptracer
+A particle tracer (light tracing). Each sample starts a path on an emitter (an emitter chosen uniformly; a cosine-weighted ray from a point of an area light; within a spot's cone, with its texture; through a point of a projector's image chosen uniformly; from the disk of the scene's bounding sphere facing a directional, constant or environment light), follows it through the BSDFs and connects every surface vertex to the camera, splatting what the camera sees of it through the film's filter. Unless `hide_emitters`, it also connects a point of an area light, or a direction of a light at infinity, to the camera, for the emitters seen directly. The camera's importance is 1 / (A cos³θ) per solid angle (A: the image plane's area at unit distance), so the image equals `path`'s in expectation, for every filter.
+
+The film's width × height × sample count light samples are rendered (the crop window's pixels). It renders through the `perspective`, `thinlens` and `orthographic` sensors (an orthographic camera sees lights at infinity along one direction only, which no light sample finds, so such scenes must hide emitters); other sensors are an error naming the integrator's line. Splats cross pixels, so the samples are cut into blocks fixed by the film and the sample count, each splatting into a buffer of its own, summed in block order: images are bit-identical for any thread count. Renders split into `--part` or `--pass` pieces, adaptive sampling and spectral output are refused. Light is scattered at each vertex with the BSDF's arguments as camera paths pass them (toward the camera's side first), so BSDFs that are not reciprocal, the barbule BSDF among them, give the path tracer's image (with Veach's correction for shading normals); a delta sample keeps its own weight, so a dielectric's (η_i/η_t)² scaling of refracted radiance is left out, which cancels along paths between a light and a camera in the same medium.
+Mitsuba 3: as Mitsuba 3's `ptracer`, with the same depth parameters and defaults; `timeout` does not stop the render.
+uses: passes
+| parameter | type | default | meaning | Mitsuba 3 |
+| max_depth | integer | -1 | the longest path, counted as in `path` (-1: unlimited; 1: the emitters seen directly only) | same |
+| rr_depth | integer | 5 | the depth from which Russian roulette ends paths; at least 1 | same |
+| hide_emitters | boolean | false | no emitter is seen directly by the camera | same |
+*/
 #include "integrators/particle_tracer_integrator.h"
 
 #include "integrators/integrator.h"

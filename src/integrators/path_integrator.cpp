@@ -1,3 +1,14 @@
+/*! plugin integrator path
+The unidirectional path tracer with next-event estimation, emitter and BSDF samples combined by multiple importance sampling. With `mis`, a `constant` environment is left to the BSDF samples wherever the BSDF can draw every direction it scatters into (as pbrt-v4 does for uniform infinite lights), so the other emitters get all of the emitter samples. At a path's first scattering vertex `emitter_candidates` emitter samples are drawn, all from one stratified light point shifted along a lattice, and the one traced is chosen in proportion to the BSDF's resampling target toward it times the emitter's radiance over its density (resampled importance sampling, unbiased); the barbule BSDF's target is R's value plus a bound of TRT, other BSDFs' their value.
+Mitsuba 3: the same depth parameters and defaults; `strategy` and `emitter_candidates` are added; `timeout` does not stop the render.
+uses: passes
+| parameter | type | default | meaning | Mitsuba 3 |
+| max_depth | integer | -1 | the longest path, in segments; -1 is unlimited, 1 shows the emitters seen directly only; below -1 is an error | same |
+| rr_depth | integer | 5 | the depth from which Russian roulette ends paths (with probability 1 − min(throughput, 0.95)); at least 1 | same |
+| hide_emitters | boolean | false | emitters seen directly by the camera are black | same |
+| strategy | string | `mis` | `mis`; `emitter` or `bsdf` keeps that estimator alone, for checks | not in Mitsuba 3 |
+| emitter_candidates | integer | 0 | 0 (automatic): 3 where the BSDF has a cheap resampling target (the barbule) and an emitter with extent is drawn from, 1 elsewhere; 1 to 8: that many candidates; 1 is plain next-event estimation. On the neck bench patch under a rectangle light, 3 give 0.55× the variance per sample for 1.15× the instructions; under delta lights every candidate is the same | not in Mitsuba 3 |
+*/
 #include "integrators/path_integrator.h"
 
 #include <array>

@@ -1,3 +1,8 @@
+/*! plugin sampler independent
+Uniform random samples, independent across dimensions, samples and pixels; the default sampler of every sensor.
+Mitsuba 3: as Mitsuba 3's `independent`.
+uses: sampler
+*/
 #include "samplers/independent_sampler.h"
 
 #include "samplers/sampler_parameters.h"

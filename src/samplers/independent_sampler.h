@@ -24,7 +24,7 @@ class IndependentSampler : public Sampler {
   PixelSampleState state_;
 };
 
-// <sampler type="independent">: sample_count (4), seed (0).
+// <sampler type="independent">: its parameters are in docs/reference/samplers.md.
 std::shared_ptr<Object> makeIndependentSampler(const Properties& props);
 
 }  // namespace columba

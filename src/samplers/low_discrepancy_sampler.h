@@ -110,8 +110,7 @@ class LowDiscrepancySampler : public Sampler {
   std::vector<uint32_t> scratch_;
 };
 
-// <sampler type="ldsampler">: sample_count (4, rounded up to a power of two as Mitsuba does),
-// seed (0).
+// <sampler type="ldsampler">: its parameters are in docs/reference/samplers.md.
 std::shared_ptr<Object> makeLowDiscrepancySampler(const Properties& props);
 
 }  // namespace columba

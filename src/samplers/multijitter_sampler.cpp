@@ -1,3 +1,10 @@
+/*! plugin sampler multijitter
+Correlated multi-jittered samples (Kensler 2013): in 2D a pixel's samples lie one per cell of a columns × rows grid (`sample_count` rounded up to a near-square grid) and at the same time one per each of the thin strata along either axis. Every dimension has its own pattern seed, so dimensions are not correlated; 1D dimensions are jittered strata in a random order.
+Mitsuba 3: the same parameters and defaults.
+uses: sampler
+| parameter | type | default | meaning | Mitsuba 3 |
+| jitter | boolean | true | random points within the cells; false: their centres | same |
+*/
 #include "samplers/multijitter_sampler.h"
 
 #include <cmath>

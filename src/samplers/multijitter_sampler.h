@@ -31,8 +31,7 @@ class MultijitterSampler : public Sampler {
   PixelSampleState state_;
 };
 
-// <sampler type="multijitter">: sample_count (4, rounded up to a near-square grid as Mitsuba
-// does), seed (0), jitter (true).
+// <sampler type="multijitter">: its parameters are in docs/reference/samplers.md.
 std::shared_ptr<Object> makeMultijitterSampler(const Properties& props);
 
 }  // namespace columba

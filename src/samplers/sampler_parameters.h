@@ -1,4 +1,9 @@
 #pragma once
+/*! parameters sampler
+| parameter | type | default | meaning | Mitsuba 3 |
+| sample_count | integer | 4 | samples per pixel, 1 to 2^24 (the command line's `--spp` overrides it) | same |
+| seed | integer | 0 | mixed into the seed of every pixel sample: renders with different seeds are independent | same |
+*/
 // The parameters every sampler plug-in shares (Mitsuba 3 names and defaults).
 #include <cstdint>
 #include "core/properties.h"

@@ -1,3 +1,10 @@
+/*! plugin sampler stratified
+Jittered stratified samples (as pbrt-v4's stratified sampler): in every dimension a pixel's samples fall one per stratum (1D: `sample_count` strata; 2D: a grid of resolution × resolution, `sample_count` rounded up to a square), and each dimension assigns strata to samples by its own random permutation, so dimensions are not correlated.
+Mitsuba 3: the same parameters and defaults; `sample_count` is rounded up to a square as Mitsuba 3 does.
+uses: sampler
+| parameter | type | default | meaning | Mitsuba 3 |
+| jitter | boolean | true | a random point in each stratum; false: its centre | same |
+*/
 #include "samplers/stratified_sampler.h"
 
 #include "samplers/hashed_permutation.h"

@@ -36,8 +36,7 @@ class StratifiedSampler : public Sampler {
   PixelSampleState state_;
 };
 
-// <sampler type="stratified">: sample_count (4, rounded up to a square as Mitsuba does),
-// seed (0), jitter (true).
+// <sampler type="stratified">: its parameters are in docs/reference/samplers.md.
 std::shared_ptr<Object> makeStratifiedSampler(const Properties& props);
 
 }  // namespace columba

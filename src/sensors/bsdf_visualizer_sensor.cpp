@@ -1,3 +1,9 @@
+/*! plugin sensor bsdfvisualizer
+An imaging scatterometer: the image disk maps to the hemisphere above the origin. For film position (p_x, p_y) of a W × H film, u = 2 p_x / W − 1 and v = 2 p_y / H − 1 (v grows downward with the image row: what a camera at the sample looking up at the instrument's dome sees), θ = r π/2 with r = |(u, v)| and φ = atan2(v, u). Every pixel looks at the origin from its direction; outside the disk the image is black. Its nested `film` and `sampler` are as `perspective`'s.
+Mitsuba 3: not in Mitsuba 3.
+| parameter | type | default | meaning | Mitsuba 3 |
+| distance | float | 0.1 | how far from the origin the rays start; positive | not in Mitsuba 3 |
+*/
 #include "sensors/bsdf_visualizer_sensor.h"
 
 #include "core/fast_math.h"

@@ -1,3 +1,11 @@
+/*! plugin sensor orthographic
+Parallel rays along the camera's local +z from the plane z = `near_clip`, over [-1, 1] in x and [-1/aspect, 1/aspect] in y (x to the left, y up); `to_world` places and sizes that rectangle. Rays reach `far_clip` − `near_clip`. Its nested `film` and `sampler` are as `perspective`'s.
+Mitsuba 3: as Mitsuba 3's `orthographic`; `focus_distance` is read and has no effect.
+uses: clip
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | places and sizes the camera's rectangle | same |
+| focus_distance | float | — | accepted; no effect | same |
+*/
 #include "sensors/orthographic_sensor.h"
 
 #include <cmath>

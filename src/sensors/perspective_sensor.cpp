@@ -1,3 +1,11 @@
+/*! plugin sensor perspective
+A pinhole camera looking along its local +z, x to the left and y up. It holds a nested `film` (default: `hdrfilm`) and `sampler` (default: `independent`).
+Mitsuba 3: the same parameters and defaults; `focus_distance` is read, as Mitsuba reads it for every projective camera, and has no effect.
+uses: fov, clip
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | the camera's frame (a `lookat`, for example) | same |
+| focus_distance | float | — | accepted; a pinhole has no focal plane | same |
+*/
 #include "sensors/perspective_sensor.h"
 
 #include <cmath>

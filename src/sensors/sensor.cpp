@@ -1,3 +1,8 @@
+/*! parameters clip
+| parameter | type | default | meaning | Mitsuba 3 |
+| near_clip | float | 0.01 | the nearest distance seen; at least 0 | same |
+| far_clip | float | 10000 | the farthest distance seen; more than `near_clip` | same |
+*/
 #include "sensors/sensor.h"
 
 #include <fmt/format.h>

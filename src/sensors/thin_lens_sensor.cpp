@@ -1,3 +1,12 @@
+/*! plugin sensor thinlens
+A perspective camera with a thin lens: rays leave a disk of radius `aperture_radius` and meet on the plane z = `focus_distance` of its frame, which is sharp. Its nested `film` and `sampler` are as `perspective`'s.
+Mitsuba 3: the same parameters; `focus_distance` defaults to `far_clip`; a `to_world` that scales is an error (distances on the lens and to the focal plane are the camera's).
+uses: fov, clip
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | the camera's frame; must not scale | — |
+| aperture_radius | float | required | the lens radius; at least 0 | same |
+| focus_distance | float | `far_clip` | the distance of the sharp plane; positive | — |
+*/
 #include "sensors/thin_lens_sensor.h"
 
 #include <fmt/format.h>

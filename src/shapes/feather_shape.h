@@ -110,8 +110,7 @@ class FeatherShape : public Shape {
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };
 
-// Factory for <shape type="feather">: filename, barbwidth, ramuswidth, cover, span, to_world
-// and one nested BSDF.
+// <shape type="feather">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeFeatherShape(const Properties& props);
 
 }  // namespace columba

@@ -1,3 +1,14 @@
+/*! plugin shape feather
+Feathers: barbs read from a feather PLY file (the [feather PLY format](../feather-ply.md); `columba feather` writes them), each segment a cylindrical strip intersected exactly. `to_world` is applied to the vertices and normals when the file is loaded; the widths are in the file's units and scale with the cube root of to_world's determinant. The strip radius is (barbwidth / 2) / sin(cover), and barbs taper toward their tips. Per-vertex barbule values in the file (H, mu, height) are given to the nested BSDF (default: `diffuse`). A feather takes no emitter.
+Mitsuba 3: not in Mitsuba 3.
+| parameter | type | default | meaning | Mitsuba 3 |
+| filename | string | required | the feather PLY file | not in Mitsuba 3 |
+| barbwidth | float | the file's, or 0.015 | a barb's width at its base; positive | not in Mitsuba 3 |
+| ramuswidth | float | 0.00063 | the width of the ramus along the middle of each barb, 0 to `barbwidth` | not in Mitsuba 3 |
+| cover | float | 0.78 | the half-angle in radians, in (0, π/2), that the strip spans around its normal at the barb's base | not in Mitsuba 3 |
+| span | float | 0.45 | the angle in radians, in (−π/2, π/2), of the barbules from the barb axis toward the tip | not in Mitsuba 3 |
+| to_world | transform | identity | places the feathers | not in Mitsuba 3 |
+*/
 // The scene-file entry point of the feather shape, apart from the shape itself so that code
 // using FeatherShape directly does not depend on the plug-in registry.
 #include "bsdfs/diffuse.h"

@@ -1,3 +1,9 @@
+/*! plugin shape instance
+A placed copy of one `shapegroup` (a `<ref>` to it, or nested), its `to_world` applied on top of the group's shapes' own. Instances use Embree's instancing, so a group instanced many times is stored once.
+Mitsuba 3: as Mitsuba 3's `instance`; a transform that Embree's single-precision instancing cannot trace is refused.
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | an affine transform (last row 0, 0, 0, 1); refused when degenerate: a 3×3 determinant beyond float range, or a shrink that takes world points within 10⁶ of the origin beyond 1.8 × 10¹⁸ in the group's space (as a uniform scale below about 5 × 10⁻¹³ does) | same |
+*/
 #include "shapes/instance_shape.h"
 
 #include <fmt/format.h>

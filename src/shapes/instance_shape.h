@@ -26,7 +26,7 @@ class InstanceShape : public Shape {
   Transform toWorld_, toGroup_;
 };
 
-// Factory for <shape type="instance">: a <ref> to (or a nested) shapegroup, and to_world.
+// <shape type="instance">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeInstanceShape(const Properties& props);
 
 }  // namespace columba

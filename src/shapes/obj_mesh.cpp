@@ -1,3 +1,12 @@
+/*! plugin shape obj
+A triangle mesh read from a Wavefront OBJ file (polygons are split into triangles), with a nested BSDF (default: `diffuse`) and optionally an `area` emitter.
+Mitsuba 3: the same parameters and defaults.
+uses: mesh
+| parameter | type | default | meaning | Mitsuba 3 |
+| filename | string | required | the OBJ file | same |
+| to_world | transform | identity | places the mesh | same |
+| flip_tex_coords | boolean | true | v becomes 1 − v (OBJ puts v = 0 at an image's bottom, textures at its top) | same |
+*/
 #include "shapes/obj_mesh.h"
 
 #include <tiny_obj_loader.h>

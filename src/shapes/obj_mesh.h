@@ -17,8 +17,7 @@ namespace columba {
 
 MeshData readObjMesh(const std::string& path);
 
-// Parameters: `filename`, `to_world`, `face_normals`, `flip_normals`, `flip_tex_coords` (true: v
-// becomes 1 - v, as Mitsuba reads OBJ files); nested BSDF and emitter.
+// <shape type="obj">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeObjShape(const Properties& props);
 
 }  // namespace columba

@@ -17,7 +17,7 @@ namespace columba {
 
 MeshData readPlyMesh(const std::string& path);
 
-// Parameters: `filename`, `to_world`, `face_normals`, `flip_normals`; nested BSDF and emitter.
+// <shape type="ply">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makePlyShape(const Properties& props);
 
 }  // namespace columba

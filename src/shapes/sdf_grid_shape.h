@@ -61,8 +61,7 @@ class SDFGridShape : public Shape {
   bool flip_;
 };
 
-// Parameters: `filename`, `normals` ("smooth"), `to_world`, `flip_normals`; a nested BSDF. A
-// nested area emitter is refused, as Mitsuba does.
+// <shape type="sdfgrid">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeSDFGridShape(const Properties& props);
 
 }  // namespace columba

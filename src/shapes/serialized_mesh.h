@@ -25,8 +25,7 @@ struct SerializedMesh {
 SerializedMesh parseSerializedMesh(const std::string& bytes, int shapeIndex, const std::string& name);
 SerializedMesh readSerializedMesh(const std::string& path, int shapeIndex);
 
-// Parameters: `filename`, `shape_index` (0), `to_world`, `face_normals`, `flip_normals`; nested
-// BSDF and emitter.
+// <shape type="serialized">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeSerializedShape(const Properties& props);
 
 }  // namespace columba

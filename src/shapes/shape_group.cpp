@@ -1,3 +1,7 @@
+/*! plugin shape shapegroup
+Shapes declared once (feathers included, with their own `to_world` and BSDFs) for `instance`s to place; a group is not rendered by itself. As in Mitsuba, a group holds no emitters (nor shapes with area emitters), no groups and no instances.
+Mitsuba 3: as Mitsuba 3's `shapegroup`.
+*/
 #include "shapes/shape_group.h"
 
 #include <stdexcept>

@@ -35,7 +35,7 @@ class ShapeGroup : public Object {
   mutable RTCScene embreeScene_ = nullptr;
 };
 
-// Factory for <shape type="shapegroup">: one or more nested shapes.
+// <shape type="shapegroup">: its parameters are in docs/reference/shapes.md.
 std::shared_ptr<Object> makeShapeGroup(const Properties& props);
 
 }  // namespace columba

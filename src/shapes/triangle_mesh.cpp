@@ -1,3 +1,15 @@
+/*! parameters mesh
+| parameter | type | default | meaning | Mitsuba 3 |
+| face_normals | boolean | false | flat shading with each triangle's own normal, ignoring the file's normals; a mesh without normals is otherwise shaded with smooth vertex normals, each face weighted by its angle at the vertex | same |
+| flip_normals | boolean | false | turns the normals (and the side an area emitter lights) around | same |
+*/
+/*! plugin shape cube
+The cube [−1, 1]³ as a mesh of twelve triangles with face normals and per-face uv, placed by `to_world`. Like every shape, it takes a nested BSDF (default: `diffuse`) and may take a nested `area` emitter.
+Mitsuba 3: as Mitsuba 3's `cube`.
+uses: mesh
+| parameter | type | default | meaning | Mitsuba 3 |
+| to_world | transform | identity | places the cube | same |
+*/
 #include "shapes/triangle_mesh.h"
 
 #include <tuple>

@@ -1,3 +1,13 @@
+/*! plugin texture bitmap
+An image texture: OpenEXR (read with OpenEXR) or PNG, JPEG, Radiance HDR, TGA, BMP, PNM, PSD and GIF (read with stb_image). v = 0 is the image's top row. 8- and 16-bit files are decoded from sRGB unless `raw`. Each colour texel becomes a smooth spectrum when the image is loaded, and a bilinear lookup blends the four texels' spectra.
+Mitsuba 3: the same parameters and defaults; PFM files are not read.
+| parameter | type | default | meaning | Mitsuba 3 |
+| filename | string | required | the image file | same |
+| raw | boolean | false | the values as stored, without sRGB decoding or spectral upsampling (for normal maps and other data) | same |
+| filter_type | string | `bilinear` | `bilinear` or `nearest` | same |
+| wrap_mode | string | `repeat` | outside [0, 1]: `repeat`, `mirror` or `clamp` | same |
+| to_uv | transform | identity | applied to the uv coordinates before the lookup | same |
+*/
 #include "textures/bitmap_texture.h"
 
 #include <cmath>

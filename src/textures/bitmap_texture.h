@@ -59,8 +59,7 @@ class BitmapTexture : public Texture {
   float mean_ = 0.0f;
 };
 
-// Parameters: filename, filter_type ("bilinear" or "nearest"), wrap_mode ("repeat", "mirror",
-// "clamp"), raw (false), to_uv.
+// <texture type="bitmap">: its parameters are in docs/reference/textures.md.
 std::shared_ptr<Object> makeBitmapTexture(const Properties& props);
 
 }  // namespace columba

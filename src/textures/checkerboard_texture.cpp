@@ -1,3 +1,11 @@
+/*! plugin texture checkerboard
+A checkerboard of two colours, two squares by two over the unit uv square.
+Mitsuba 3: the same parameters and defaults.
+| parameter | type | default | meaning | Mitsuba 3 |
+| color0 | spectrum or texture | 0.4 | the first colour | same |
+| color1 | spectrum or texture | 0.2 | the second colour | same |
+| to_uv | transform | identity | applied to the uv coordinates before the lookup | same |
+*/
 #include "textures/checkerboard_texture.h"
 
 #include <cmath>

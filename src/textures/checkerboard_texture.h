@@ -23,7 +23,7 @@ class CheckerboardTexture : public Texture {
   Transform toUV_;
 };
 
-// Parameters: color0 (default 0.4), color1 (0.2), each a colour or a texture; to_uv.
+// <texture type="checkerboard">: its parameters are in docs/reference/textures.md.
 std::shared_ptr<Object> makeCheckerboardTexture(const Properties& props);
 
 }  // namespace columba

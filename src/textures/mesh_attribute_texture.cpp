@@ -1,3 +1,10 @@
+/*! plugin texture mesh_attribute
+A PLY mesh's own values: per-vertex values interpolated across each triangle, or per-face values. Colours become spectra when the mesh is loaded and are blended as bitmaps blend texels. Looked up on a shape without the attribute, the render stops with an error naming the texture's line and the attributes the mesh has.
+Mitsuba 3: the same parameters and defaults.
+| parameter | type | default | meaning | Mitsuba 3 |
+| name | string | required | the attribute, `vertex_...` or `face_...` (see `ply`) | same |
+| scale | float | 1 | a factor on the values | same |
+*/
 #include "textures/mesh_attribute_texture.h"
 
 #include "core/error.h"

@@ -40,7 +40,7 @@ class MeshAttributeTexture : public Texture {
   SourceLocation where_;
 };
 
-// Parameters: name ("vertex_..." or "face_..."), scale (1).
+// <texture type="mesh_attribute">: its parameters are in docs/reference/textures.md.
 std::shared_ptr<Object> makeMeshAttributeTexture(const Properties& props);
 
 }  // namespace columba

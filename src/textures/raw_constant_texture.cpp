@@ -1,3 +1,9 @@
+/*! plugin texture rawconstant
+A constant value: one number, the same at every wavelength, or three, which serve only where raw triples are read (a normal map).
+Mitsuba 3: —
+| parameter | type | default | meaning | Mitsuba 3 |
+| value | float or vector | required | the value: a `<float>`, or a `<vector>` or `<point>` of three | — |
+*/
 #include "textures/raw_constant_texture.h"
 
 namespace columba {

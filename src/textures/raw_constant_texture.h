@@ -26,7 +26,7 @@ class RawConstantTexture : public Texture {
   int channels_;
 };
 
-// Parameter: value, a <float> or a 3-component <vector> / <point> (required).
+// <texture type="rawconstant">: its parameters are in docs/reference/textures.md.
 std::shared_ptr<Object> makeRawConstantTexture(const Properties& props);
 
 }  // namespace columba
