@@ -5,19 +5,21 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "barbule/parameter_reader.h"
 #include "bsdfs/barbule_measurement.h"
 #include "bsdfs/barbulebsdf.h"
 #include "core/error.h"
 #include "feather/feather_generator.h"
-#include "feather/feather_ply_writer.h"
+#include "io/feather_ply.h"
+#include "io/feather_ply_writer.h"
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
 #include "optics/melanin.h"
 #include "optics/thin_film.h"
-#include "shapes/feather_ply.h"
 
 namespace py = pybind11;
 
@@ -67,51 +69,64 @@ class PyBarbule {
     throw py::value_error("role must be 'camera' (barbulebsdf) or 'light' (barbulebsdfev), not '" + role + "'");
   }
 
+  // The keyword arguments as Properties, read as a scene's <bsdf type="barbulebsdf"> is (errors
+  // are columba.InputError, a ValueError, worded as the plug-in's without a file position).
   static BarbuleParameters resolve(const py::object& b, const py::object& H, const py::object& mu,
                                    const py::object& height, const py::object& phi0, const py::object& phi1,
                                    const py::object& filmIOR, const py::object& extIOR, const py::object& preset,
                                    const py::object& melanin) {
-    BarbuleParameters p;
-    if (!preset.is_none()) {
-      std::string name = preset.cast<std::string>();
-      std::optional<BarbuleParameters> found = barbulePreset(name);
-      if (!found) parameterError("preset", "unknown preset '" + name + "' (known: " + barbulePresetNames() + ")");
-      p = *found;
-    }
-    auto take = [](float& target, const py::object& value) {
-      if (!value.is_none()) target = value.cast<float>();
+    Properties props;
+    props.tag = "bsdf";
+    props.type = "barbulebsdf";
+    if (!preset.is_none()) props.setString("preset", preset.cast<std::string>());
+    auto take = [&](const char* name, const py::object& value) {
+      if (!value.is_none()) props.setFloat(name, value.cast<float>());
     };
-    take(p.b, b);
-    take(p.H, H);
-    take(p.mu, mu);
-    take(p.height, height);
-    take(p.phi0, phi0);
-    take(p.phi1, phi1);
-    if (!filmIOR.is_none()) p.filmIOR = indexFrom(filmIOR, "film_ior");
-    if (!extIOR.is_none()) {
-      RefractiveIndex ext = indexFrom(extIOR, "ext_ior");
-      if (!ext.isConstant()) parameterError("ext_ior", "the surrounding medium needs a constant index");
-      p.extIOR = ext.a;
-    }
+    take("b", b);
+    take("H", H);
+    take("mu", mu);
+    take("height", height);
+    take("phi_0", phi0);
+    take("phi_1", phi1);
+    setIndex(props, "film_ior", filmIOR);
+    setIndex(props, "ext_ior", extIOR);
     if (!melanin.is_none()) {
       if (py::isinstance<py::float_>(melanin) || py::isinstance<py::int_>(melanin)) {
-        p.melanin = SpectralDistribution::constant(melanin.cast<float>());
+        props.setFloat("melanin", melanin.cast<float>());
       } else {
         auto pair = melanin.cast<std::pair<std::vector<float>, std::vector<float>>>();
         if (pair.first.size() != pair.second.size() || pair.first.empty())
-          parameterError("melanin", "give (wavelengths, reflectances) of the same, non-zero length");
+          throw props.error("melanin", "give (wavelengths, reflectances) of the same, non-zero length");
         if (!std::is_sorted(pair.first.begin(), pair.first.end()))
-          parameterError("melanin", "the wavelengths must increase");
-        p.melanin = SpectralDistribution::piecewiseLinear(pair.first, pair.second);
+          throw props.error("melanin", "the wavelengths must increase");
+        const float lowest = *std::min_element(pair.second.begin(), pair.second.end());
+        props.setSpectrum("melanin", SpectralDistribution::piecewiseLinear(pair.first, pair.second), lowest);
       }
     }
-    if (std::optional<BarbuleParameterProblem> problem = findProblem(p))
-      parameterError(problem->parameter, problem->message);
-    if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p)) {
+    std::optional<BarbuleParameterProblem> odd;
+    BarbuleParameters p = readBarbuleParameters(props, odd);
+    if (odd) {
       std::string text = "<bsdf> 'barbulebsdf', parameter '" + odd->parameter + "': " + odd->message;
       PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
     }
     return p;
+  }
+
+  // An index given as a name or number (`name`), or for the film as (a, b) of Cauchy's law
+  // (film_cauchy_a, film_cauchy_b).
+  static void setIndex(Properties& props, const std::string& name, const py::object& value) {
+    if (value.is_none()) return;
+    if (py::isinstance<py::str>(value)) {
+      props.setString(name, value.cast<std::string>());
+    } else if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+      auto ab = value.cast<std::vector<float>>();
+      if (ab.size() != 2) throw props.error(name, "a Cauchy index is given as (a, b), n = a + b / lambda^2 (nm)");
+      if (name != "film_ior") throw props.error(name, "the surrounding medium needs a constant index");
+      props.setFloat("film_cauchy_a", ab[0]);
+      props.setFloat("film_cauchy_b", ab[1]);
+    } else {
+      props.setFloat(name, value.cast<float>());
+    }
   }
 
   BarbuleBSDF bsdf_;

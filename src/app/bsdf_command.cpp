@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iterator>
 #include <limits>
 
+#include "barbule/parameter_reader.h"
 #include "bsdfs/barbule_measurement.h"
 #include "core/version.h"
 #include "io/data_files.h"
@@ -24,8 +26,8 @@ namespace fs = std::filesystem;
 struct BSDFOptions {
   BarbuleParameters params;
   std::string preset, filmIOR, melaninFile;
-  float cauchyA = std::numeric_limits<float>::quiet_NaN(), cauchyB = 0.0f;
-  std::vector<float> angles{0.0f, 20.0f, 40.0f, 60.0f};  // light polar angles, degrees
+  float cauchyA = std::numeric_limits<float>::quiet_NaN(), cauchyB = 0.0f;  // NaN: not given
+  std::vector<float> angles{0.0f, 20.0f, 40.0f, 60.0f};                     // light polar angles, degrees
   float phiDegrees = 0.0f;
   std::vector<std::string> modes{"hemisphere", "spectra"};
   bool spectral = false;
@@ -314,41 +316,41 @@ void runBSDF(const BSDFOptions& o) {
   fmt::print("wrote {}\n", fmt::join(written, ", "));
 }
 
-// The parameters as given: a preset first, then the options set beside it.
+// The option that gives a barbule parameter: --film-ior for film_ior, but --phi_0 as the paper
+// writes phi_0.
+std::string optionFor(const std::string& parameter) {
+  std::string option = parameter;
+  if (option.rfind("phi_", 0) != 0) std::replace(option.begin(), option.end(), '_', '-');
+  return "--" + option;
+}
+
+// The parameters as the options give them, read as a scene's <bsdf type="barbulebsdf"> is.
 void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParameters& given) {
-  BarbuleParameters p;
-  if (!o.preset.empty()) {
-    std::optional<BarbuleParameters> preset = barbulePreset(o.preset);
-    if (!preset)
-      throw std::runtime_error("--preset: unknown preset '" + o.preset + "' (known: " + barbulePresetNames() + ")");
-    p = *preset;
-  }
-  auto take = [&](const char* option, float& target, float value) {
-    if (cmd.count(option) > 0) target = value;
+  Properties props;
+  props.tag = "bsdf";
+  props.type = "barbulebsdf";
+  props.nameParameter = optionFor;
+  if (!o.preset.empty()) props.setString("preset", o.preset);
+  auto take = [&](const char* parameter, float value) {
+    if (cmd.count(optionFor(parameter)) > 0) props.setFloat(parameter, value);
   };
-  take("--b", p.b, given.b);
-  take("--phi_0", p.phi0, given.phi0);
-  take("--phi_1", p.phi1, given.phi1);
-  take("--mu", p.mu, given.mu);
-  take("--H", p.H, given.H);
-  take("--height", p.height, given.height);
-  take("--ext-ior", p.extIOR, given.extIOR);
-  if (!o.filmIOR.empty() && !std::isnan(o.cauchyA))
-    throw std::runtime_error("give the film's index either as --film-ior or as --film-cauchy-a/--film-cauchy-b");
-  if (!o.filmIOR.empty()) {
-    std::optional<RefractiveIndex> ior = iorFromName(o.filmIOR);
-    if (!ior) throw std::runtime_error("--film-ior: unknown index of refraction '" + o.filmIOR + "'");
-    p.filmIOR = *ior;
-  } else if (!std::isnan(o.cauchyA)) {
-    p.filmIOR = RefractiveIndex::cauchy(o.cauchyA, o.cauchyB);
+  take("b", given.b);
+  take("phi_0", given.phi0);
+  take("phi_1", given.phi1);
+  take("mu", given.mu);
+  take("H", given.H);
+  take("height", given.height);
+  take("ext_ior", given.extIOR);
+  take("film_cauchy_a", o.cauchyA);
+  take("film_cauchy_b", o.cauchyB);
+  if (!o.filmIOR.empty()) props.setString("film_ior", o.filmIOR);
+  if (!o.melaninFile.empty()) {
+    GivenSpectrum melanin = readSpectrumFile(o.melaninFile, "--melanin", SourceLocation{o.melaninFile, 0});
+    props.setSpectrum("melanin", melanin.distribution, melanin.lowest);
   }
-  if (!o.melaninFile.empty())
-    p.melanin = readSpectrumFile(o.melaninFile, "--melanin", SourceLocation{o.melaninFile, 0}).distribution;
-  if (std::optional<BarbuleParameterProblem> problem = findProblem(p))
-    throw std::runtime_error("--" + problem->parameter + ": " + problem->message);
-  if (std::optional<BarbuleParameterProblem> odd = findImplausibility(p))
-    fmt::print(stderr, "warning: --{}: {}\n", odd->parameter, odd->message);
-  o.params = p;
+  std::optional<BarbuleParameterProblem> odd;
+  o.params = readBarbuleParameters(props, odd);
+  if (odd) fmt::print(stderr, "warning: {}: {}\n", optionFor(odd->parameter), odd->message);
 }
 }  // namespace
 

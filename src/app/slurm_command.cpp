@@ -150,103 +150,120 @@ void writeScript(const std::string& path, const std::string& text) {
   fs::rename(temporary, path);
 }
 
-int runSlurm(const SlurmOptions& options) {
-  const int parts = parseCount("--parts", options.parts, 1, 65536);
-  const int passes = parseCount("--passes", options.passes, 1, kMaxSamplesPerPixel);
-  const int cpus = parseCount("--cpus-per-task", options.cpusPerTask, 1, 4096);
-  const int sppOption = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
-  parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
-  const std::string stem =
-      options.scene.scenePath.empty() ? std::string("default") : fs::path(options.scene.scenePath).stem().string();
-  const fs::path outDir = fs::absolute(options.outDir.empty() ? "slurm-" + stem : options.outDir).lexically_normal();
-  const fs::path partsDir = outDir / "parts", logDir = outDir / "logs";
-  const fs::path manifestPath = outDir / "manifest.json";
-
+// What a Slurm run does, decided before anything is written: every count checked, every frame's
+// image and pieces named.
+struct SlurmPlan {
+  int parts = 1, passes = 1, cpus = 1, spp = 0;
+  std::string stem;
+  fs::path outDir, partsDir, logDir, manifestPath;
   // The frames go to the output directory; their pieces to parts/ in it, under the same names.
-  SceneOptions frameOptions = options.scene, pieceOptions = options.scene;
+  SceneOptions frameOptions, pieceOptions;
+  FramePlan frames, pieces;
+  int64_t taskCount = 0;
+};
+
+SlurmPlan planSlurm(const SlurmOptions& options) {
+  SlurmPlan sp;
+  sp.parts = parseCount("--parts", options.parts, 1, 65536);
+  sp.passes = parseCount("--passes", options.passes, 1, kMaxSamplesPerPixel);
+  sp.cpus = parseCount("--cpus-per-task", options.cpusPerTask, 1, 4096);
+  sp.spp = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
+  parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
+  sp.stem =
+      options.scene.scenePath.empty() ? std::string("default") : fs::path(options.scene.scenePath).stem().string();
+  sp.outDir = fs::absolute(options.outDir.empty() ? "slurm-" + sp.stem : options.outDir).lexically_normal();
+  sp.partsDir = sp.outDir / "parts";
+  sp.logDir = sp.outDir / "logs";
+  sp.manifestPath = sp.outDir / "manifest.json";
+  sp.frameOptions = sp.pieceOptions = options.scene;
   if (!options.scene.scenePath.empty())
-    frameOptions.scenePath = pieceOptions.scenePath = fs::absolute(options.scene.scenePath).lexically_normal().string();
+    sp.frameOptions.scenePath = sp.pieceOptions.scenePath =
+        fs::absolute(options.scene.scenePath).lexically_normal().string();
   if (!options.scene.framesPattern.empty()) {
-    frameOptions.framesPattern = (outDir / options.scene.framesPattern).string();
-    pieceOptions.framesPattern = (partsDir / options.scene.framesPattern).string();
+    sp.frameOptions.framesPattern = (sp.outDir / options.scene.framesPattern).string();
+    sp.pieceOptions.framesPattern = (sp.partsDir / options.scene.framesPattern).string();
   }
-  const FramePlan plan = planFrames(frameOptions, (outDir / (stem + ".exr")).string());
-  const FramePlan piecePlan = planFrames(pieceOptions, (partsDir / (stem + ".exr")).string());
-  checkInside(outDir, options.scene.framesPattern, plan.files);
-  checkInside(outDir, options.scene.framesPattern, piecePlan.files);
-  const int64_t taskCount = int64_t(plan.frames.size()) * parts * passes;
-  if (taskCount > kMostArrayTasks)
+  sp.frames = planFrames(sp.frameOptions, (sp.outDir / (sp.stem + ".exr")).string());
+  sp.pieces = planFrames(sp.pieceOptions, (sp.partsDir / (sp.stem + ".exr")).string());
+  checkInside(sp.outDir, options.scene.framesPattern, sp.frames.files);
+  checkInside(sp.outDir, options.scene.framesPattern, sp.pieces.files);
+  sp.taskCount = int64_t(sp.frames.frames.size()) * sp.parts * sp.passes;
+  if (sp.taskCount > kMostArrayTasks)
     throw std::runtime_error(fmt::format(
         "{} frame{} x --parts {} x --passes {} make {} array tasks, more than {} (Slurm's MaxArraySize allows 1,000 "
         "by default)",
-        plan.frames.size(), plan.frames.size() == 1 ? "" : "s", parts, passes, taskCount, kMostArrayTasks));
-  checkSplit(options.scene, plan, sppOption, parts, passes);
+        sp.frames.frames.size(), sp.frames.frames.size() == 1 ? "" : "s", sp.parts, sp.passes, sp.taskCount,
+        kMostArrayTasks));
+  checkSplit(options.scene, sp.frames, sp.spp, sp.parts, sp.passes);
+  return sp;
+}
 
+// The job's batch scripts' settings: every task runs `columba render` on its frame and piece.
+SlurmJob slurmJob(const SlurmOptions& options, const SlurmPlan& sp) {
   SlurmJob job;
   job.columba = fs::read_symlink("/proc/self/exe").string();
   job.workDir = fs::current_path().string();
-  job.manifestPath = manifestPath.string();
-  job.logDir = logDir.string();
-  job.jobName = options.jobName.empty() ? "columba-" + stem : options.jobName;
+  job.manifestPath = sp.manifestPath.string();
+  job.logDir = sp.logDir.string();
+  job.jobName = options.jobName.empty() ? "columba-" + sp.stem : options.jobName;
   job.partition = options.partition;
   job.time = options.time;
-  job.cpusPerTask = cpus;
-  job.frames = int(plan.frames.size());
-  job.parts = parts;
-  job.passes = passes;
-  if (!frameOptions.scenePath.empty()) job.renderArguments.push_back(frameOptions.scenePath);
-  for (const std::string& d : options.scene.defines) job.renderArguments.insert(job.renderArguments.end(), {"-D", d});
-  if (sppOption) job.renderArguments.insert(job.renderArguments.end(), {"--spp", std::to_string(sppOption)});
-  job.renderArguments.insert(job.renderArguments.end(), {"--seed", std::to_string(options.scene.seed)});
-  if (options.scene.spectral)
-    job.renderArguments.insert(job.renderArguments.end(), {"--spectral", "--bins", options.scene.bins});
-  for (const SweepAxis& axis : plan.axes) job.renderArguments.insert(job.renderArguments.end(), {"--sweep", axis.spec});
-  if (pieceOptions.framesPattern.empty())
-    job.renderArguments.insert(job.renderArguments.end(), {"-o", (partsDir / (stem + ".exr")).string()});
+  job.cpusPerTask = sp.cpus;
+  job.frames = int(sp.frames.frames.size());
+  job.parts = sp.parts;
+  job.passes = sp.passes;
+  std::vector<std::string>& args = job.renderArguments;
+  if (!sp.frameOptions.scenePath.empty()) args.push_back(sp.frameOptions.scenePath);
+  for (const std::string& d : options.scene.defines) args.insert(args.end(), {"-D", d});
+  if (sp.spp) args.insert(args.end(), {"--spp", std::to_string(sp.spp)});
+  args.insert(args.end(), {"--seed", std::to_string(options.scene.seed)});
+  if (options.scene.spectral) args.insert(args.end(), {"--spectral", "--bins", options.scene.bins});
+  for (const SweepAxis& axis : sp.frames.axes) args.insert(args.end(), {"--sweep", axis.spec});
+  if (sp.pieceOptions.framesPattern.empty())
+    args.insert(args.end(), {"-o", (sp.partsDir / (sp.stem + ".exr")).string()});
   else
-    job.renderArguments.insert(job.renderArguments.end(), {"--frames", pieceOptions.framesPattern});
-  // Written before anything is created, so that a value no script can hold is refused first.
-  const std::string renderText = renderBatchScript(job), mergeText = mergeBatchScript(job);
+    args.insert(args.end(), {"--frames", sp.pieceOptions.framesPattern});
+  return job;
+}
 
-  fs::create_directories(outDir);
-  for (const std::string& file : plan.files) fs::create_directories(fs::path(file).parent_path());
-  for (const std::string& file : piecePlan.files) fs::create_directories(fs::path(file).parent_path());
-  fs::create_directories(logDir);
-
+// The run's manifest: every frame and piece, with what an earlier run of the same render in the
+// output directory recorded (its submissions and times), and the status of each from what is on
+// disk.
+Manifest slurmManifest(const SlurmOptions& options, const SlurmPlan& sp) {
   Manifest manifest;
   manifest.columbaVersion = kColumbaVersion;
-  manifest.scene = frameOptions.scenePath.empty() ? "<default scene>" : frameOptions.scenePath;
-  manifest.sceneHash = plan.sceneHash;
-  manifest.defines = plan.defines;
-  manifest.sweeps = plan.axes;
-  manifest.spp = sppOption;
+  manifest.scene = sp.frameOptions.scenePath.empty() ? "<default scene>" : sp.frameOptions.scenePath;
+  manifest.sceneHash = sp.frames.sceneHash;
+  manifest.defines = sp.frames.defines;
+  manifest.sweeps = sp.frames.axes;
+  manifest.spp = sp.spp;
   manifest.seed = options.scene.seed;
-  manifest.parts = parts;
-  manifest.passes = passes;
-  for (size_t f = 0; f < plan.frames.size(); ++f) {
+  manifest.parts = sp.parts;
+  manifest.passes = sp.passes;
+  for (size_t f = 0; f < sp.frames.frames.size(); ++f) {
     ManifestFrame frame;
     frame.frame = int(f);
-    frame.defines = plan.frameDefines(int(f));
+    frame.defines = sp.frames.frameDefines(int(f));
     frame.seed = options.scene.seed;
-    frame.spp = sppOption;
-    frame.output = plan.files[f];
-    for (int k = 1; k <= parts; ++k)
-      for (int p = 1; p <= passes; ++p) {
+    frame.spp = sp.spp;
+    frame.output = sp.frames.files[f];
+    for (int k = 1; k <= sp.parts; ++k)
+      for (int p = 1; p <= sp.passes; ++p) {
         ManifestPiece piece;
-        piece.part = PieceIndex{k, parts};
-        if (passes > 1) piece.pass = PieceIndex{p, passes};
-        piece.file = pieceFileName(piecePlan.files[f], piece.part, piece.pass);
+        piece.part = PieceIndex{k, sp.parts};
+        if (sp.passes > 1) piece.pass = PieceIndex{p, sp.passes};
+        piece.file = pieceFileName(sp.pieces.files[f], piece.part, piece.pass);
         frame.pieces.push_back(piece);
       }
     manifest.frames.push_back(frame);
   }
   // A rerun: the same render, whose earlier submissions are kept.
-  if (fs::exists(manifestPath)) {
-    Manifest old = readManifest(manifestPath.string());
+  if (fs::exists(sp.manifestPath)) {
+    Manifest old = readManifest(sp.manifestPath.string());
     std::string different = difference(old, manifest);
     if (!different.empty())
       throw std::runtime_error(fmt::format("'{}' is of another render: {}. Use another --out-dir, or remove it",
-                                           manifestPath.string(), different));
+                                           sp.manifestPath.string(), different));
     manifest.submissions = old.submissions;
     for (size_t f = 0; f < old.frames.size() && f < manifest.frames.size(); ++f) {
       manifest.frames[f].spp = old.frames[f].spp;
@@ -264,31 +281,28 @@ int runSlurm(const SlurmOptions& options) {
                      : fs::exists(partialFileName(piece.file))  ? "interrupted"
                                                                 : "pending";
   }
+  return manifest;
+}
+
+// Prints how to submit the job, or submits it (--submit) and records the submission.
+int submitJob(const SlurmOptions& options, const SlurmPlan& sp, const SlurmJob& job, Manifest& manifest,
+              const std::string& renderScript, const std::string& mergeScript) {
   MissingWork work = missingWork(
       manifest, [](const ManifestFrame& f) { return f.status == "done"; },
       [](const ManifestPiece& p) { return p.status == "done"; });
 
-  const std::string renderScript = (outDir / "render.sbatch").string(),
-                    mergeScript = (outDir / "merge.sbatch").string();
-  manifest.renderScript = renderScript;
-  manifest.mergeScript = mergeScript;
-  manifest.logDir = logDir.string();
-  writeScript(renderScript, renderText);
-  writeScript(mergeScript, mergeText);
-  writeManifest(manifestPath.string(), manifest);
-
   fmt::print("{} frame{} x {} part{} x {} pass{} = {} array tasks; {} to render, {} frame{} to merge\n", job.frames,
-             job.frames == 1 ? "" : "s", parts, parts == 1 ? "" : "s", passes, passes == 1 ? "" : "es", taskCount,
-             work.tasks.size(), work.framesToMerge.size(), work.framesToMerge.size() == 1 ? "" : "s");
+             job.frames == 1 ? "" : "s", sp.parts, sp.parts == 1 ? "" : "s", sp.passes, sp.passes == 1 ? "" : "es",
+             sp.taskCount, work.tasks.size(), work.framesToMerge.size(), work.framesToMerge.size() == 1 ? "" : "s");
   fmt::print("Scripts: {}, {}\nManifest: {}\nLogs: {}/ (render_JOB_TASK.log, merge_JOB.log)\n", renderScript,
-             mergeScript, manifestPath.string(), logDir.string());
+             mergeScript, sp.manifestPath.string(), sp.logDir.string());
   if (work.framesToMerge.empty()) {
     fmt::print("Nothing to do: every frame is merged.\n");
     return 0;
   }
-  if (taskCount > 1001)
+  if (sp.taskCount > 1001)
     fmt::print(stderr, "warning: task indices reach {}; Slurm's default MaxArraySize (1001) allows at most 1000\n",
-               taskCount - 1);
+               sp.taskCount - 1);
   const std::string tasks = arraySpec(work.tasks);
   if (!options.submit) {
     fmt::print("Submit with:\n");
@@ -322,11 +336,11 @@ int runSlurm(const SlurmOptions& options) {
     submission.mergeJob = submitOne(mergeSubmitCommand(mergeScript, submission.renderJob));
   } catch (...) {
     manifest.submissions.push_back(submission);  // the render job is queued: recorded all the same
-    writeManifest(manifestPath.string(), manifest);
+    writeManifest(sp.manifestPath.string(), manifest);
     throw;
   }
   manifest.submissions.push_back(submission);
-  writeManifest(manifestPath.string(), manifest);
+  writeManifest(sp.manifestPath.string(), manifest);
   if (!submission.renderJob.empty())
     fmt::print("Submitted render job {} (array tasks {}) and merge job {} (runs after every task succeeded)\n",
                submission.renderJob, tasks, submission.mergeJob);
@@ -335,6 +349,27 @@ int runSlurm(const SlurmOptions& options) {
   fmt::print("render job: {}\nmerge job: {}\n", submission.renderJob.empty() ? "-" : submission.renderJob,
              submission.mergeJob);
   return 0;
+}
+
+int runSlurm(const SlurmOptions& options) {
+  const SlurmPlan sp = planSlurm(options);
+  const SlurmJob job = slurmJob(options, sp);
+  // Written before anything is created, so that a value no script can hold is refused first.
+  const std::string renderText = renderBatchScript(job), mergeText = mergeBatchScript(job);
+  fs::create_directories(sp.outDir);
+  for (const std::string& file : sp.frames.files) fs::create_directories(fs::path(file).parent_path());
+  for (const std::string& file : sp.pieces.files) fs::create_directories(fs::path(file).parent_path());
+  fs::create_directories(sp.logDir);
+  Manifest manifest = slurmManifest(options, sp);
+  const std::string renderScript = (sp.outDir / "render.sbatch").string(),
+                    mergeScript = (sp.outDir / "merge.sbatch").string();
+  manifest.renderScript = renderScript;
+  manifest.mergeScript = mergeScript;
+  manifest.logDir = sp.logDir.string();
+  writeScript(renderScript, renderText);
+  writeScript(mergeScript, mergeText);
+  writeManifest(sp.manifestPath.string(), manifest);
+  return submitJob(options, sp, job, manifest, renderScript, mergeScript);
 }
 
 }  // namespace

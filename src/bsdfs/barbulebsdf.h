@@ -34,30 +34,14 @@
 //   same holds for TRT; with T = 1 - r the total never exceeds 1.
 #include <memory>
 #include <vector>
-#include "barbule/cross_section.h"
 #include "barbule/parameters.h"
+#include "barbule/point_model.h"
 #include "bsdfs/bsdf.h"
 #include "bsdfs/per_point_parameters.h"
 #include "core/properties.h"
 #include "textures/textured_parameter.h"
 
 namespace columba {
-
-// Node counts of the deterministic parts of the model and its sampler. The TRT lobe is a
-// Gauss-Legendre average over visible normals (offsets across the lit arc x longitudinal angles;
-// one longitudinal node sits at the mean angle). Against 24 x 8 nodes, the default 4 x 1 has a
-// relative L1 error of the TRT lobe over outgoing directions of about 0.7 % on average and 3 % at
-// worst (grazing incidence, where the film's transmission changes fast along the arc); 8 x 2
-// reaches 0.1 % / 0.6 % at four times the cost. The sampler chooses between R and TRT at the
-// sampled offset in proportion to the lobes' weights at `lobeShareNodes` offsets spread evenly over
-// the lit arc (2 to kMaxLobeShareNodes), linear between them; it only steers sampling (pdf()
-// integrates that share exactly), so the node count changes noise, never the expected image.
-inline constexpr int kMaxLobeShareNodes = 8;
-struct BarbuleQuadrature {
-  int offsetNodes = 4;
-  int thetaNodes = 1;
-  int lobeShareNodes = 4;
-};
 
 // Parameters a scene gives as textures, per point, in place of BarbuleParameters' constants and
 // of the shape's per-point values; only the textured ones are read.
@@ -85,17 +69,12 @@ class BarbuleBSDF : public BSDF {
 
   // The model's two non-delta lobes f(omega_i, omega_o) (without any cosine), omega_i first
   // whatever the role: for plots and tests.
-  struct Lobes {
-    Spectrum reflection, trt;
-  };
+  using Lobes = BarbuleLobes;
   Lobes evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const;
   // Coverage r(omega_i): the fraction of light from omega_i meeting the reflective arc (T = 1 - r).
   float coverage(const BSDFContext& ctx, const Vec3& omegaI) const;
   // The density pdf() reports, by the lobe that draws wo: pdf() is their sum.
-  struct LobeDensities {
-    float reflection = 0.0f, trt = 0.0f;
-    float total() const { return reflection + trt; }
-  };
+  using LobeDensities = BarbuleLobeDensities;
   LobeDensities lobePdfs(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const;
 
   const BarbuleParameters& parameters() const { return params_; }
@@ -109,64 +88,27 @@ class BarbuleBSDF : public BSDF {
   }
 
  private:
-  struct PointModel;
-  struct Incident;
-  struct LobeChoice;
-  struct Outgoing;
-
-  // The cross-section with the point's own b, mu and H, when textures or its attributes give any.
+  // The model at the point: the cross-section with the point's own b, mu and H where textures or
+  // its attributes give any, and the film with its thickness there.
+  BarbulePointModel pointModel(const BSDFContext& ctx, const Wavelengths& wl) const;
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
-  // The film thickness at the point (um).
-  float cortexThickness(const BSDFContext& ctx) const;
-  // omega_i's lit arc, coverage and whether it scatters; `arc` when already computed.
-  Incident incident(const PointModel& point, const Vec3& w) const;
-  Incident incident(const PointModel& point, const Vec3& w, const LitArc& arc) const;
-  // omega_o, whose lit arc is `arc`, with what the pair (omega_i, omega_o) shares.
-  Outgoing outgoing(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
-  // The same without the common lit interval: what R needs (the half vector and its normal's lighting).
-  Outgoing mirrorGeometry(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& arc) const;
+  float cortexThickness(const BSDFContext& ctx) const;  // micrometres
 
-  // Evaluation, one scheme. eval* gives the value f |cos omega_o|, evalLobes* the lobes without a
-  // cosine, evalPdf* the value with the sampling density. eval and evalLobes (public) start from a
-  // context and directions; *At starts from the point's model and omega_i's quantities (`fromWi`)
-  // with wo and its lit arc; *ForPair from a prepared pair (omega_i, omega_o). eval, evalAt and
-  // evalPdfAt take the interface's (wi, wo) and apply the role; evalLobes and *ForPair take the
-  // model's (omega_i, omega_o).
-  Spectrum evalAt(const PointModel& point, const Incident& fromWi, const Vec3& wo, const LitArc& woArc) const;
-  // `mirrorVisible`: for an R sample just drawn, the share of visible longitudinal angles it was
-  // drawn with (MirrorVisibleAngles::visibleFraction()); negative otherwise.
-  BSDFEvalPdf evalPdfAt(const PointModel& point, const Incident& fromWi, const LobeChoice& choice, const Vec3& wo,
-                        const LitArc& woArc, float mirrorVisible = -1.0f) const;
-  Spectrum evalForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
-  Lobes evalLobesForPair(const PointModel& point, const Incident& in, const Outgoing& out) const;
-  // The lobes of a pair.
-  Spectrum reflection(const PointModel& point, const Incident& in, const Outgoing& out) const;
-  Spectrum trt(const PointModel& point, const Incident& in, const Outgoing& out) const;
-  // What emitter candidates are chosen by (BSDFVertexRequest::chooseLight), with omega_i = wi: R
-  // exactly, the R lobe being what varies fast across an area light, and a bound of TRT.
-  Spectrum resamplingTarget(const PointModel& point, const Incident& in, const Vec3& wo, const LitArc& woArc) const;
-  // The TRT integrand's mean over the longitudinal angles at one offset node (thetaNodes > 1),
-  // per wavelength.
-  Spectrum trtLongitudinalMean(const PointModel& point, float projectedIn, float projectedOut, float inY,
-                               float outY) const;
-
-  LobeChoice lobeChoice(const PointModel& point, const Incident& in, bool passThroughByCaller) const;
-  static float transmission(const BarbuleCrossSection& geometry, const Incident& in);
-  LobeDensities samplingPdfs(const PointModel& point, const Incident& in, const LobeChoice& choice, const Outgoing& out,
-                             float mirrorVisible = -1.0f) const;
-  static float trtSamplingPdf(const Incident& in, const LobeChoice& choice, const Outgoing& out);
-  // sample, once the point's model, omega_i's quantities and the lobe choice are known; without
-  // `withPdf` the sample's pdf is left 0.
-  std::optional<BSDFSample> sampleAt(const PointModel& point, const Incident& in, const LobeChoice& choice,
-                                     float uComponent, Vec2 u, bool withPdf = true) const;
+  // f |cos theta_o| for the interface's (wi, wo), the role deciding which is omega_i; `fromWi`
+  // holds wi's quantities, `woArc` wo's lit arc. With the density of the sampler (from wi) too.
+  Spectrum roleValue(const BarbulePointModel& point, const BarbuleIncident& fromWi, const Vec3& wo,
+                     const LitArc& woArc) const;
+  BSDFEvalPdf roleValueAndPdf(const BarbulePointModel& point, const BarbuleScattering& fromWi, const Vec3& wo,
+                              const LitArc& woArc, float mirrorVisible = -1.0f) const;
+  // sample, once the point's model and what sampling needs from wi are known; without `withPdf`
+  // the sample's pdf is left 0.
+  std::optional<BSDFSample> sampleAt(const BarbulePointModel& point, const BarbuleScattering& fromWi, float uComponent,
+                                     Vec2 u, bool withPdf = true) const;
 
   BarbuleParameters params_;
   Role role_;
   BarbuleCrossSection geometry_;
-  int offsetNodeCount_;
-  std::vector<FloatLanes> offsetNodes_, offsetWeights_;  // in groups of four lanes
-  std::vector<float> thetaNodes_, thetaWeights_;
-  int lobeShareNodes_;
+  BarbuleQuadratureRules rules_;
   BarbuleTextures textures_;
   std::shared_ptr<const PerPointParameterSources> sceneSources_;
 };

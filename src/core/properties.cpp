@@ -180,7 +180,8 @@ SourceLocation Properties::childLocation(const Object& child) const {
 }
 
 InputError Properties::error(const std::string& name, const std::string& message) const {
-  return InputError(locationOf(name), element() + ", parameter '" + name + "': " + message);
+  const std::string named = nameParameter ? nameParameter(name) : element() + ", parameter '" + name + "'";
+  return InputError(locationOf(name), named + ": " + message);
 }
 
 void Properties::checkAllUsed() const {
@@ -206,6 +207,25 @@ void Properties::set(const std::string& name, Value value) {
     throw InputError(value.location, "duplicate parameter '" + name + "' in " + element() + " (first set at " +
                                          it->second.location.str() + ")");
   values_.emplace(name, std::move(value));
+}
+
+void Properties::setFloat(const std::string& name, double value) {
+  Value v{Kind::Float, location};
+  v.number = value;
+  set(name, std::move(v));
+}
+
+void Properties::setString(const std::string& name, const std::string& value) {
+  Value v{Kind::String, location};
+  v.text = value;
+  set(name, std::move(v));
+}
+
+void Properties::setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest) {
+  Value v{Kind::Spectrum, location};
+  v.spectrum = value;
+  v.lowest = lowest;
+  set(name, std::move(v));
 }
 
 }  // namespace columba

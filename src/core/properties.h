@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of one plug-in element of a scene file, with the source line of each, and its
 // nested plug-ins. Factories read what they understand; anything left unread is an error.
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <memory>
@@ -27,6 +28,10 @@ class Properties {
   // Where a relative file name is looked for, in order (core/file_lookup.h): the declaring scene
   // file's directory, the main scene file's, the <path> directories; then the working directory.
   std::vector<std::string> searchDirs;
+  // How messages name a parameter. Unset: as a scene element's ("<bsdf> 'diffuse', parameter
+  // 'reflectance'"); a front end that builds Properties from its own options names them as its
+  // users wrote them ("--film-ior").
+  std::function<std::string(const std::string& name)> nameParameter;
 
   bool has(const std::string& name) const;
   // True when `name` was given as a <string> (e.g. a named IOR rather than a number).
@@ -117,6 +122,11 @@ class Properties {
   };
   // Throws InputError if `name` is already set.
   void set(const std::string& name, Value value);
+  // Values given by a front end's options instead of a scene file (as Mitsuba's load_dict takes a
+  // dictionary), at the element's own location.
+  void setFloat(const std::string& name, double value);
+  void setString(const std::string& name, const std::string& value);
+  void setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest);
   void addChild(Child child) { children_.push_back(std::move(child)); }
 
  private:

@@ -76,35 +76,10 @@ void checkSameRender(const std::vector<Piece>& pieces) {
                       describe(first), describe(p)));
 }
 
-}  // namespace
+using WindowGroups = std::map<std::tuple<int, int, int, int>, std::vector<const Piece*>>;
 
-Piece loadPiece(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw std::runtime_error("'" + path + "' does not exist or is not a regular file");
-  EXRImageFile file = readEXRFile(path);
-  Piece piece;
-  piece.path = path;
-  piece.info = pieceInfoFromFile(path, file);
-  piece.image = std::move(file.image);
-  // The merge allocates the whole frame, whatever the pieces hold.
-  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight, 3 + int64_t(piece.image.spectral.count()),
-                   sizeof(float), "its frame (the EXR display window) is");
-  return piece;
-}
-
-MergedImage mergePieces(const std::vector<Piece>& pieces) {
-  if (pieces.empty()) throw std::runtime_error("no pieces to merge");
-  for (const Piece& p : pieces)
-    if (!p.info.complete)
-      throw std::runtime_error(
-          fmt::format("{} is unfinished: its render was interrupted (Status: interrupted); "
-                      "render that piece again",
-                      describe(p)));
-  checkSameRender(pieces);
-  const PieceInfo& first = pieces.front().info;
-  const int width = first.frameWidth, height = first.frameHeight, spp = first.spp;
-
-  // Every piece's window lies in the frame, and is the band its part says it is.
+// Every piece's window lies in the frame of width x height, and is the band its part says it is.
+void checkWindows(const std::vector<Piece>& pieces, int width, int height) {
   for (const Piece& p : pieces) {
     const PixelRect& w = p.info.window;
     if (w.empty() || w.x0 < 0 || w.y0 < 0 || w.x1 > width || w.y1 > height)
@@ -118,16 +93,13 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
       throw std::runtime_error(fmt::format("{} holds {} x {} pixels for {}", describe(p), p.image.width, p.image.height,
                                            windowText(w, width)));
   }
+}
 
-  // Pieces of the same window, in the order of their samples.
-  std::map<std::tuple<int, int, int, int>, std::vector<const Piece*>> groups;
-  for (const Piece& p : pieces)
-    groups[{p.info.window.y0, p.info.window.x0, p.info.window.y1, p.info.window.x1}].push_back(&p);
-  std::vector<std::string> problems;
-
-  // Windows: no two overlap, and together they cover the frame.
+// Windows: no two overlap, and together they cover the frame.
+void findCoverageProblems(const std::vector<Piece>& pieces, const WindowGroups& groups, int width, int height,
+                          std::vector<std::string>& problems) {
   std::vector<const Piece*> representatives;
-  for (auto& [key, group] : groups) representatives.push_back(group.front());
+  for (const auto& [key, group] : groups) representatives.push_back(group.front());
   for (size_t i = 0; i < representatives.size(); ++i)
     for (size_t j = i + 1; j < representatives.size(); ++j) {
       const PixelRect &a = representatives[i]->info.window, &b = representatives[j]->info.window;
@@ -169,8 +141,11 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
         y = end;
       }
   }
+}
 
-  // Passes: in each window, every sample index 0 .. spp - 1 exactly once.
+// Passes: in each window, every sample index 0 .. spp - 1 exactly once. Sorts each group by its
+// samples; returns the most passes any window has.
+int findPassProblems(WindowGroups& groups, int spp, std::vector<std::string>& problems) {
   int mostPasses = 0;
   for (auto& [key, group] : groups) {
     std::sort(group.begin(), group.end(),
@@ -209,15 +184,22 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
       if (!named) problems.push_back(fmt::format("samples {}:{}{} are in no piece", b, e, where));
     }
   }
-  if (!problems.empty()) {
-    std::string message = problems.size() == 1 ? "cannot merge: " + problems.front()
-                                               : fmt::format("cannot merge, {} problems:", problems.size());
-    if (problems.size() > 1)
-      for (const std::string& p : problems) message += "\n  " + p;
-    throw std::runtime_error(message);
-  }
+  return mostPasses;
+}
 
-  // The merge itself.
+void throwProblems(const std::vector<std::string>& problems) {
+  std::string message = problems.size() == 1 ? "cannot merge: " + problems.front()
+                                             : fmt::format("cannot merge, {} problems:", problems.size());
+  if (problems.size() > 1)
+    for (const std::string& p : problems) message += "\n  " + p;
+  throw std::runtime_error(message);
+}
+
+// The merge itself: each window's pieces, weighted by their sample counts (a window of one piece
+// bit for bit).
+MergedImage combinePieces(const std::vector<Piece>& pieces, const WindowGroups& groups, int mostPasses) {
+  const PieceInfo& first = pieces.front().info;
+  const int width = first.frameWidth, height = first.frameHeight, spp = first.spp;
   MergedImage merged;
   merged.info = first;
   merged.info.part.reset();
@@ -256,6 +238,44 @@ MergedImage mergePieces(const std::vector<Piece>& pieces) {
       }
   }
   return merged;
+}
+
+}  // namespace
+
+Piece loadPiece(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error("'" + path + "' does not exist or is not a regular file");
+  EXRImageFile file = readEXRFile(path);
+  Piece piece;
+  piece.path = path;
+  piece.info = pieceInfoFromFile(path, file);
+  piece.image = std::move(file.image);
+  // The merge allocates the whole frame, whatever the pieces hold.
+  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight, 3 + int64_t(piece.image.spectral.count()),
+                   sizeof(float), "its frame (the EXR display window) is");
+  return piece;
+}
+
+MergedImage mergePieces(const std::vector<Piece>& pieces) {
+  if (pieces.empty()) throw std::runtime_error("no pieces to merge");
+  for (const Piece& p : pieces)
+    if (!p.info.complete)
+      throw std::runtime_error(
+          fmt::format("{} is unfinished: its render was interrupted (Status: interrupted); "
+                      "render that piece again",
+                      describe(p)));
+  checkSameRender(pieces);
+  const PieceInfo& first = pieces.front().info;
+  checkWindows(pieces, first.frameWidth, first.frameHeight);
+  // Pieces of the same window, in the order of their samples.
+  WindowGroups groups;
+  for (const Piece& p : pieces)
+    groups[{p.info.window.y0, p.info.window.x0, p.info.window.y1, p.info.window.x1}].push_back(&p);
+  std::vector<std::string> problems;
+  findCoverageProblems(pieces, groups, first.frameWidth, first.frameHeight, problems);
+  const int mostPasses = findPassProblems(groups, first.spp, problems);
+  if (!problems.empty()) throwProblems(problems);
+  return combinePieces(pieces, groups, mostPasses);
 }
 
 MergedImage mergePieceFiles(const std::vector<std::string>& paths) {

@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 #include "core/vector.h"
-#include "shapes/feather_ply.h"
+#include "io/feather_ply.h"
 
 namespace columba {
 

@@ -8,8 +8,8 @@
 #include <utility>
 #include "core/rng.h"
 #include "feather/feather_design.h"
-#include "feather/feather_ply_writer.h"
 #include "feather/neck_layout.h"
+#include "io/feather_ply_writer.h"
 #include "shapes/feather_barbule_values.h"
 #include "shapes/feather_shape.h"
 

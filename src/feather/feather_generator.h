@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <string>
 #include "feather/neck_layout.h"
-#include "shapes/feather_ply.h"
+#include "io/feather_ply.h"
 
 namespace columba {
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "barbule/parameter_reader.h"
 #include "bsdfs/barbule_measurement.h"
 #include "bsdfs/barbulebsdf.h"
 #include "core/byte_order_mark.h"
@@ -99,18 +100,15 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
   return model;
 }
 
-BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std::map<std::string, double>& values) {
-  BarbuleParameters p = base;
-  const std::map<std::string, float*> fields = {{"b", &p.b},   {"phi_0", &p.phi0}, {"phi_1", &p.phi1},
-                                                {"mu", &p.mu}, {"H", &p.H},        {"height", &p.height}};
-  for (const auto& [name, value] : values) {
-    auto it = fields.find(name);
-    if (it == fields.end())
-      throw std::runtime_error(fmt::format("'{}' is not a barbule parameter (b, phi_0, phi_1, mu, H, height)", name));
-    *it->second = float(value);
-  }
-  if (auto problem = findProblem(p))
-    throw std::runtime_error(fmt::format("barbule parameter {}: {}", problem->parameter, problem->message));
+BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values) {
+  Properties props;
+  props.tag = "bsdf";
+  props.type = "barbulebsdf";
+  props.nameParameter = [](const std::string& name) { return "barbule parameter " + name; };
+  for (const auto& [name, value] : values) props.setFloat(name, value);
+  std::optional<BarbuleParameterProblem> implausible;  // a fit's trial values may well be
+  BarbuleParameters p = readBarbuleParameters(props, implausible);
+  props.checkAllUsed();
   return p;
 }
 
@@ -118,14 +116,14 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   std::vector<std::string> fixedNames;
   for (const auto& value : settings.fixed) fixedNames.push_back(value.first);
   checkFitSettings(settings.parameters, settings.fit, fixedNames);
-  const BarbuleParameters base = barbuleParametersWith(settings.base, settings.fixed);
+  barbuleParametersWith(settings.fixed);  // refuses a bad -D before the first evaluation
   std::vector<float> target;
   for (const SpectraSample& s : settings.samples) target.push_back(s.reflectance);
   ScaledLoss loss(std::move(target), {}, settings.loss, settings.scale);
   auto parametersAt = [&](const std::vector<double>& values) {
-    std::map<std::string, double> named;
+    std::map<std::string, double> named = settings.fixed;
     for (size_t i = 0; i < values.size(); ++i) named[settings.parameters[i].name] = values[i];
-    return barbuleParametersWith(base, named);
+    return barbuleParametersWith(named);
   };
   SpectraFitResult result;
   result.fit = runFit(

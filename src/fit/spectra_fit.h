@@ -25,14 +25,14 @@ std::vector<SpectraSample> readSpectraCSV(const std::string& path);
 // The model's reflectance factor at each sample's directions and wavelength.
 std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples);
 
-// `base` with the named parameters (b, phi_0, phi_1, mu, H, height, as the scene plug-in spells
-// them) set; throws std::runtime_error for another name or an invalid set of values.
-BarbuleParameters barbuleParametersWith(const BarbuleParameters& base, const std::map<std::string, double>& values);
+// The barbule's parameters with the named ones (b, phi_0, phi_1, mu, H, height, ..., as the scene
+// plug-in spells them) set and the rest at their defaults, read as the plug-in reads them
+// (barbule/parameter_reader.h); throws InputError for an unknown name or values it refuses.
+BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values);
 
 struct SpectraFitSettings {
   std::vector<SpectraSample> samples;
-  BarbuleParameters base;               // the parameters not fitted
-  std::map<std::string, double> fixed;  // set on base (-D), by barbuleParametersWith
+  std::map<std::string, double> fixed;  // the parameters held at a value (-D); the rest not fitted are defaults
   std::vector<FitParameter> parameters;
   LossKind loss = LossKind::MSE;
   ScaleMode scale = ScaleMode::Free;

@@ -44,9 +44,9 @@
 #include <vector>
 #include "core/properties.h"
 #include "core/transform.h"
+#include "io/feather_ply.h"
 #include "shapes/barb_strip.h"
 #include "shapes/feather_barbule_values.h"
-#include "shapes/feather_ply.h"
 #include "shapes/shape.h"
 
 namespace columba {

@@ -9,7 +9,7 @@
 #include <string>
 #include <unordered_set>
 #include <vector>
-#include "shapes/ply_file.h"
+#include "io/ply_file.h"
 
 namespace columba {
 

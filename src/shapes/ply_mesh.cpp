@@ -13,8 +13,8 @@ uses: mesh
 #include <string>
 #include <unordered_set>
 
+#include "io/ply_file.h"
 #include "shapes/ply_attributes.h"
-#include "shapes/ply_file.h"
 
 namespace columba {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 #include "feather/feather_generator.h"
-#include "feather/feather_ply_writer.h"
+#include "io/feather_ply_writer.h"
 #include "support/render_test_support.h"
 #include "support/temp_dir_test.h"
 

@@ -201,7 +201,7 @@ TEST(SceneFit, NamesAVariableTheSceneDoesNotUse) {
 
 TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
   // Specular spectra at three light angles, 400-700 nm every 5 nm, 2 % relative noise.
-  BarbuleParameters truth = barbuleParametersWith(BarbuleParameters{}, {{"height", 0.53}, {"b", 0.3}});
+  BarbuleParameters truth = barbuleParametersWith({{"height", 0.53}, {"b", 0.3}});
   std::vector<SpectraSample> samples;
   for (float theta : {10.0f, 30.0f, 50.0f})
     for (float lambda = 400.0f; lambda <= 700.0f; lambda += 5.0f)
@@ -281,7 +281,7 @@ TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
   std::vector<SpectraSample> samples;
   for (float lambda = 400.0f; lambda <= 700.0f; lambda += 10.0f)
     samples.push_back({20.0f, 0.0f, 20.0f, 180.0f, lambda, 0.0f});
-  std::vector<float> clean = modelSpectra(barbuleParametersWith(BarbuleParameters{}, {{"height", 0.6}}), samples);
+  std::vector<float> clean = modelSpectra(barbuleParametersWith({{"height", 0.6}}), samples);
   for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = 2.0f * clean[i];
   SpectraFitSettings s;
   s.samples = samples;

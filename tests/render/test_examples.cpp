@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "builtin/builtin_plugins.h"
+#include "io/feather_ply.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
-#include "shapes/feather_ply.h"
 
 using namespace columba;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "shapes/feather_ply.h"
+#include "io/feather_ply.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "shapes/ply_file.h"
+#include "io/ply_file.h"
 
 namespace columba {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Streams barbs into a feather PLY (the format the `feather` shape reads, see
-// shapes/feather_ply.h): vertices go straight to disk as they come, and the faces, which
+// io/feather_ply.h): vertices go straight to disk as they come, and the faces, which
 // just number the vertices in order, are written at the end. Nothing is kept in memory, so
 // files of any size can be written. The file appears under its name only when complete: it is
 // written beside it under a temporary name and renamed by commit().
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 #include "core/vector.h"
-#include "shapes/feather_ply.h"
+#include "io/feather_ply.h"
 
 namespace columba {
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "shapes/feather_ply.h"
+#include "io/feather_ply.h"
 
 using namespace columba;
 

@@ -1,4 +1,4 @@
-#include "shapes/ply_file.h"
+#include "io/ply_file.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "feather/feather_ply_writer.h"
+#include "io/feather_ply_writer.h"
 
 #include <fmt/format.h>
 #include <unistd.h>

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "shapes/ply_file.h"
+#include "io/ply_file.h"
 
 using namespace columba;
 

@@ -1,0 +1,65 @@
+#include "barbule/parameter_reader.h"
+
+#include "optics/dispersion.h"
+
+namespace columba {
+
+namespace {
+
+// A <float>, a <string> with a number, a named index or "keratin", or (`tabulated`) a <spectrum>
+// of the index against wavelength.
+RefractiveIndex readIOR(const Properties& props, const std::string& name, const std::string& defaultName,
+                        bool tabulated) {
+  if (props.has(name) && !props.isString(name)) {
+    SpectralDistribution n = tabulated ? props.getSpectrum(name, 1.0f, SpectrumUse::Unbounded)
+                                       : SpectralDistribution::constant(props.getFloat(name));
+    if (!n.isConstant()) return RefractiveIndex::tabulated(std::move(n));
+    float value = n.eval(kLambdaMin);
+    if (!(value > 0.0f)) throw props.error(name, "the index of refraction must be positive");
+    return RefractiveIndex::constant(value);
+  }
+  std::string text = props.getString(name, defaultName);
+  std::optional<RefractiveIndex> ior = iorFromName(text);
+  if (!ior)
+    throw props.error(name, "unknown index of refraction '" + text +
+                                "' (give a number, a named material such as 'air', or 'keratin')");
+  return *ior;
+}
+
+}  // namespace
+
+BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<BarbuleParameterProblem>& implausible) {
+  BarbuleParameters p;
+  if (props.has("preset")) {
+    std::string name = props.getString("preset");
+    std::optional<BarbuleParameters> preset = barbulePreset(name);
+    if (!preset) throw props.error("preset", "unknown preset '" + name + "' (known: " + barbulePresetNames() + ")");
+    p = *preset;
+  }
+  p.b = props.getFloat("b", p.b);
+  p.phi0 = props.getFloat("phi_0", p.phi0);
+  p.phi1 = props.getFloat("phi_1", p.phi1);
+  p.mu = props.getFloat("mu", p.mu);
+  p.H = props.getFloat("H", p.H);
+  p.height = props.getFloat("height", p.height);
+  if (props.has("film_cauchy_a") || props.has("film_cauchy_b")) {
+    if (props.has("film_ior"))
+      throw props.error("film_ior", "give the film's index either as film_ior or as film_cauchy_a/film_cauchy_b");
+    p.filmIOR = RefractiveIndex::cauchy(props.getFloat("film_cauchy_a"), props.getFloat("film_cauchy_b", 0.0f));
+  } else {
+    p.filmIOR = readIOR(props, "film_ior", "keratin", true);
+  }
+  RefractiveIndex ext = readIOR(props, "ext_ior", "air", false);
+  if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
+  p.extIOR = ext.a;
+  if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
+
+  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
+    bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
+    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
+  }
+  implausible = findImplausibility(p);
+  return p;
+}
+
+}  // namespace columba

@@ -1,0 +1,21 @@
+#pragma once
+// The one reader of a barbule's parameters, for every front end: a scene's <bsdf
+// type="barbulebsdf">, and `columba bsdf` and Python's BarbuleBSDF, which build Properties from
+// their options and keyword arguments (as Mitsuba's load_dict does), so that all take the same
+// values with the same checks.
+#include <optional>
+
+#include "barbule/parameters.h"
+#include "core/properties.h"
+
+namespace columba {
+
+// preset (a string; the parameters given beside it override it), b, phi_0, phi_1, mu, H, height,
+// film_ior (a number, a named index, "keratin" by default, or a spectrum of n against
+// wavelength) or film_cauchy_a and film_cauchy_b, ext_ior ("air" by default), melanin (a
+// spectrum or a number; the embedded measured table by default). Throws InputError
+// (props.error) for values the model cannot take. Values it takes that are probably a mistake
+// are returned in `implausible` for the caller to warn about in its own way.
+BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<BarbuleParameterProblem>& implausible);
+
+}  // namespace columba
