@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 
+#include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
-#include "bsdfs/barbule_measurement.h"
 #include "bsdfs/barbulebsdf.h"
 #include "core/error.h"
 #include "feather/feather_generator.h"
@@ -334,7 +334,7 @@ py::dict lobeSpectraDict(const PyBarbule& s, float theta, float phi, const py::o
   LobeSpectra r;
   {
     py::gil_scoped_release release;
-    r = measure(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
+    r = measure(s.bsdf().model(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
   }
   py::dict d;
   d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
@@ -486,8 +486,8 @@ void bindModel(py::module_& m) {
             Image image;
             {
               py::gil_scoped_release release;
-              image = scatterometerImage(s.bsdf(), directionFromAngles(degToRad(theta), degToRad(phi)), resolution,
-                                         supersampling);
+              image = scatterometerImage(s.bsdf().model(), directionFromAngles(degToRad(theta), degToRad(phi)),
+                                         resolution, supersampling);
             }
             return imageArray(std::move(image));
           },

@@ -7,8 +7,8 @@
 #include <iterator>
 #include <limits>
 
+#include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
-#include "bsdfs/barbule_measurement.h"
 #include "core/version.h"
 #include "io/data_files.h"
 #include "plot/canvas.h"
@@ -78,12 +78,12 @@ void writeTable(const fs::path& path, const CsvTable& table, std::vector<std::st
   written.push_back(path.string());
 }
 
-void measureHemispheres(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir,
+void measureHemispheres(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir,
                         std::vector<std::string>& written) {
   for (float angle : o.angles) {
     Vec3 light = lightDirection(o, angle);
-    Image image = scatterometerImage(bsdf, light, o.resolution);
-    if (o.spectral) image.spectral = spectralScatterometerBands(bsdf, light, o.resolution, o.bins, 400.0f, 700.0f);
+    Image image = scatterometerImage(model, light, o.resolution);
+    if (o.spectral) image.spectral = spectralScatterometerBands(model, light, o.resolution, o.bins, 400.0f, 700.0f);
     const ImageMetadata metadata = {
         {"Measurement",
          "scatterometer image: f(light, camera) |cos theta_camera| per steradian under a D65 beam of "
@@ -126,7 +126,7 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
 }
 
 // Directional reflectance (albedo) of R and TRT per light angle.
-void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+void measureAlbedo(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                    std::vector<std::string>& written) {
   const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Directional reflectance of the barbule lobes",
@@ -138,7 +138,7 @@ void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path
   fmt::print("light theta (deg)  mean R    mean TRT  coverage  R peaks (nm, 1 nm grid)\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
     Vec3 light = lightDirection(o, o.angles[a]);
-    LobeSpectra lr = lobeReflectance(bsdf, light, lambdas);
+    LobeSpectra lr = lobeReflectance(model, light, lambdas);
     PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a)};
     PlotSeries t{fmt::format("TRT {:g} deg", o.angles[a]), {}, seriesColour(a), true};
     double meanR = 0, meanT = 0;
@@ -154,7 +154,7 @@ void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path
     table.columns.push_back(fmt::format("R_theta{:g}", o.angles[a]));
     table.columns.push_back(fmt::format("TRT_theta{:g}", o.angles[a]));
     std::vector<float> peaks = peakWavelengths(lambdas, lr.reflection);
-    float coverage = bsdf.coverage(BSDFContext{}, light);
+    float coverage = model.coverage(light);
     fmt::print("{:17g}  {:7.4f}   {:7.4f}   {:7.3f}   {}\n", o.angles[a], meanR, meanT, coverage,
                fmt::join(peaks, " "));
     record["spectra"].push_back({{"light_theta_deg", o.angles[a]},
@@ -171,7 +171,7 @@ void measureAlbedo(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path
 }
 
 // Reflectance factor in the mirror direction of each light angle: a microspectrophotometer.
-void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                      std::vector<std::string>& written) {
   const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Reflectance factor pi f in the mirror direction",
@@ -182,7 +182,7 @@ void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::pa
   fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
-    LobeSpectra s = specularSpectra(bsdf, lightDirection(o, o.angles[a]), lambdas);
+    LobeSpectra s = specularSpectra(model, lightDirection(o, o.angles[a]), lambdas);
     std::vector<float> total(lambdas.size());
     PlotSeries sum{fmt::format("total {:g} deg", o.angles[a]), {}, seriesColour(a)};
     PlotSeries r{fmt::format("R {:g} deg", o.angles[a]), {}, seriesColour(a), true};
@@ -215,7 +215,7 @@ void measureSpecular(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::pa
 }
 
 // In-plane slices of the scatterometer quantity at a few wavelengths and as RGB.
-void measurePlane(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path& dir,
+void measurePlane(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir,
                   std::vector<std::string>& written) {
   const std::vector<float> shown = {450.0f, 550.0f, 650.0f};
   const std::vector<float> lambdas = visibleWavelengthGrid(5.0f);
@@ -229,8 +229,8 @@ void measurePlane(const BarbuleBSDF& bsdf, const BSDFOptions& o, const fs::path&
                  {}};
   for (float angle : o.angles) {
     Vec3 light = lightDirection(o, angle);
-    PlaneSlice spectral = planeSlice(bsdf, light, degToRad(o.phiDegrees), thetaO, lambdas);
-    PlaneSlice lines = planeSlice(bsdf, light, degToRad(o.phiDegrees), thetaO, shown);
+    PlaneSlice spectral = planeSlice(model, light, degToRad(o.phiDegrees), thetaO, lambdas);
+    PlaneSlice lines = planeSlice(model, light, degToRad(o.phiDegrees), thetaO, shown);
     std::vector<Vec3> rgb = sliceRGB(spectral);
     LinePlot plot;
     plot.title = fmt::format("In-plane slice, light at theta {:g} deg", angle);
@@ -290,7 +290,7 @@ nlohmann::json parameterRecord(const BSDFOptions& o) {
 void runBSDF(const BSDFOptions& o) {
   if (!fs::is_directory(o.outputDir)) throw std::runtime_error("output directory '" + o.outputDir + "' does not exist");
   const fs::path dir(o.outputDir);
-  BarbuleBSDF bsdf(o.params);
+  const BarbuleModel model(o.params);
   fmt::print("barbule BSDF: {}\n", describeParameters(o));
   nlohmann::json record = {{"columba_version", kColumbaVersion},
                            {"parameters", parameterRecord(o)},
@@ -302,13 +302,13 @@ void runBSDF(const BSDFOptions& o) {
   std::vector<std::string> written;
   for (const std::string& mode : o.modes) {
     if (mode == "hemisphere")
-      measureHemispheres(bsdf, o, dir, written);
+      measureHemispheres(model, o, dir, written);
     else if (mode == "spectra")
-      measureAlbedo(bsdf, o, dir, record, written);
+      measureAlbedo(model, o, dir, record, written);
     else if (mode == "specular")
-      measureSpecular(bsdf, o, dir, record, written);
+      measureSpecular(model, o, dir, record, written);
     else if (mode == "plane")
-      measurePlane(bsdf, o, dir, written);
+      measurePlane(model, o, dir, written);
   }
   record["outputs"] = written;
   writeJSON((dir / "bsdf.json").string(), record);

@@ -44,37 +44,36 @@ float finiteOr(float value, float fallback) { return std::isfinite(value) ? valu
 }  // namespace
 
 BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuadrature quadrature)
-    : params_(params),
-      role_(role),
-      geometry_(params.b, params.phi0, params.phi1, params.mu, params.H),
-      rules_(quadrature) {}
+    : model_(params, quadrature), role_(role) {}
 
 BarbulePointModel BarbuleBSDF::pointModel(const BSDFContext& ctx, const Wavelengths& wl) const {
-  return BarbulePointModel(overriddenGeometry(ctx), geometry_, params_, cortexThickness(ctx), wl, rules_);
+  return model_.at(overriddenGeometry(ctx), cortexThickness(ctx), wl);
 }
 
 float BarbuleBSDF::cortexThickness(const BSDFContext& ctx) const {
+  const BarbuleParameters& params = model_.parameters();
   const float height = textures_.height.isTextured()
                            ? finiteOr(textures_.height.eval(ctx.point), 0.0f)
-                           : shapeValueUnlessZero(ctx, kCortexThicknessAttribute).value_or(params_.height);
+                           : shapeValueUnlessZero(ctx, kCortexThicknessAttribute).value_or(params.height);
   return std::max(height, 0.0f);
 }
 
 std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFContext& ctx) const {
+  const BarbuleParameters& params = model_.parameters();
   // A texture wins over the shape's value; a spacing below contact acts as contact.
-  std::optional<float> mu = textures_.mu.isTextured() ? finiteOr(textures_.mu.eval(ctx.point), params_.mu)
+  std::optional<float> mu = textures_.mu.isTextured() ? finiteOr(textures_.mu.eval(ctx.point), params.mu)
                                                       : shapeValueUnlessZero(ctx, kBarbuleTiltAttribute);
-  std::optional<float> H = textures_.H.isTextured() ? finiteOr(textures_.H.eval(ctx.point), params_.H)
+  std::optional<float> H = textures_.H.isTextured() ? finiteOr(textures_.H.eval(ctx.point), params.H)
                                                     : ctx.attribute(kBarbuleSpacingAttribute);
   if (textures_.b.isTextured()) {
     // A semi-axis that is not positive (or not a number) is taken as a thin one.
     constexpr float kThinnest = 1e-3f;
     const float b = textures_.b.eval(ctx.point);
-    return BarbuleCrossSection(b > kThinnest ? b : kThinnest, params_.phi0, params_.phi1, mu.value_or(params_.mu),
-                               H.value_or(params_.H));
+    return BarbuleCrossSection(b > kThinnest ? b : kThinnest, params.phi0, params.phi1, mu.value_or(params.mu),
+                               H.value_or(params.H));
   }
   if (!mu && !H) return std::nullopt;
-  return geometry_.withTiltAndSpacing(mu.value_or(params_.mu), H.value_or(params_.H));
+  return model_.geometry().withTiltAndSpacing(mu.value_or(params.mu), H.value_or(params.H));
 }
 
 Spectrum BarbuleBSDF::roleValue(const BarbulePointModel& point, const BarbuleIncident& fromWi, const Vec3& wo,
@@ -178,7 +177,7 @@ std::optional<BSDFSample> BarbuleBSDF::sampleAt(const BarbulePointModel& point, 
 
 Spectrum BarbuleBSDF::passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths&) const {
   std::optional<BarbuleCrossSection> own = overriddenGeometry(ctx);
-  return Spectrum(gapTransmission(own ? *own : geometry_, wi));
+  return Spectrum(gapTransmission(own ? *own : model_.geometry(), wi));
 }
 
 BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& omegaI, const Vec3& omegaO,
@@ -190,7 +189,7 @@ BarbuleBSDF::Lobes BarbuleBSDF::evalLobes(const BSDFContext& ctx, const Vec3& om
 
 float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
   std::optional<BarbuleCrossSection> own = overriddenGeometry(ctx);
-  return 1.0f - gapTransmission(own ? *own : geometry_, omegaI);
+  return 1.0f - gapTransmission(own ? *own : model_.geometry(), omegaI);
 }
 
 namespace {

@@ -34,8 +34,7 @@
 //   same holds for TRT; with T = 1 - r the total never exceeds 1.
 #include <memory>
 #include <vector>
-#include "barbule/parameters.h"
-#include "barbule/point_model.h"
+#include "barbule/model.h"
 #include "bsdfs/bsdf.h"
 #include "bsdfs/per_point_parameters.h"
 #include "core/properties.h"
@@ -77,7 +76,8 @@ class BarbuleBSDF : public BSDF {
   using LobeDensities = BarbuleLobeDensities;
   LobeDensities lobePdfs(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const;
 
-  const BarbuleParameters& parameters() const { return params_; }
+  const BarbuleModel& model() const { return model_; }
+  const BarbuleParameters& parameters() const { return model_.parameters(); }
   Role role() const { return role_; }
 
   void setTextures(BarbuleTextures textures) { textures_ = std::move(textures); }
@@ -105,10 +105,8 @@ class BarbuleBSDF : public BSDF {
   std::optional<BSDFSample> sampleAt(const BarbulePointModel& point, const BarbuleScattering& fromWi, float uComponent,
                                      Vec2 u, bool withPdf = true) const;
 
-  BarbuleParameters params_;
+  BarbuleModel model_;
   Role role_;
-  BarbuleCrossSection geometry_;
-  BarbuleQuadratureRules rules_;
   BarbuleTextures textures_;
   std::shared_ptr<const PerPointParameterSources> sceneSources_;
 };

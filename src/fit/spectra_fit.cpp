@@ -9,9 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
-#include "bsdfs/barbule_measurement.h"
-#include "bsdfs/barbulebsdf.h"
 #include "core/byte_order_mark.h"
 #include "core/error.h"
 #include "core/math.h"
@@ -80,7 +79,7 @@ std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
 }
 
 std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples) {
-  const BarbuleBSDF bsdf(parameters);
+  const BarbuleModel barbule(parameters);
   std::vector<float> model(samples.size());
   // Consecutive rows with the same directions share one evaluation per kSpectrumSamples wavelengths.
   for (size_t first = 0; first < samples.size();) {
@@ -93,7 +92,7 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
     for (size_t k = 0; k < lambdas.size(); ++k) lambdas[k] = samples[first + std::min(k, count - 1)].wavelength;
     const Vec3 wi = directionFromAngles(degToRad(s.thetaI), degToRad(s.phiI));
     const Vec3 wo = directionFromAngles(degToRad(s.thetaO), degToRad(s.phiO));
-    BarbuleBSDF::Lobes lobes = bsdf.evalLobes(BSDFContext{}, wi, wo, Wavelengths::fixed(lambdas));
+    BarbuleLobes lobes = barbule.lobes(wi, wo, Wavelengths::fixed(lambdas));
     for (size_t k = 0; k < count; ++k) model[first + k] = kPi * (lobes.reflection[int(k)] + lobes.trt[int(k)]);
     first += count;
   }

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include "bsdfs/barbule_measurement.h"
+#include "barbule/measurement.h"
+#include "bsdfs/barbulebsdf.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 
@@ -15,7 +16,7 @@ TEST(BarbuleMeasurement, LobeReflectanceMatchesMonteCarloIntegrationSlow) {
   Wavelengths wl = Wavelengths::fixed({450, 530, 610, 690});
   for (float thetaDeg : {0.0f, 35.0f, 65.0f}) {
     Vec3 omegaI(std::sin(degToRad(thetaDeg)), 0.0f, std::cos(degToRad(thetaDeg)));
-    LobeSpectra grid = lobeReflectance(bsdf, omegaI, lambdas);
+    LobeSpectra grid = lobeReflectance(bsdf.model(), omegaI, lambdas);
     // Independent estimate: uniform directions over the sphere.
     PCG32 rng(11, 3);
     const int n = 400000;
@@ -40,7 +41,7 @@ TEST(BarbuleMeasurement, LobeReflectanceMatchesMonteCarloIntegrationSlow) {
 TEST(BarbuleMeasurement, ScatterometerImageIsBlackOutsideTheDiskAndPeaksOppositeTheLight) {
   BarbuleBSDF bsdf{BarbuleParameters{}};
   Vec3 light(std::sin(degToRad(45.0f)), 0.0f, std::cos(degToRad(45.0f)));  // from +x
-  Image img = scatterometerImage(bsdf, light, 64, 1);
+  Image img = scatterometerImage(bsdf.model(), light, 64, 1);
   for (int c = 0; c < 3; ++c) EXPECT_EQ(img.pixel(0, 0)[c], 0.0f);
   int bestX = 0, bestY = 0;
   float best = -1;
@@ -89,7 +90,7 @@ TEST(BarbuleMeasurement, SpecularPeaksAreTheFilmsInterferenceMaxima) {
       p.height = height;
       BarbuleBSDF bsdf(p);
       const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
-      LobeSpectra s = specularSpectra(bsdf, directionFromAngles(degToRad(thetaDeg), 0.0f), lambdas);
+      LobeSpectra s = specularSpectra(bsdf.model(), directionFromAngles(degToRad(thetaDeg), 0.0f), lambdas);
       std::vector<float> found;
       for (float peak : peakWavelengths(lambdas, s.reflection))
         if (peak >= 380.0f && peak <= 780.0f) found.push_back(peak);
@@ -111,7 +112,7 @@ TEST(BarbuleMeasurement, PlaneSliceHoldsTheScatterometerQuantity) {
   const float thetaI = degToRad(30.0f), phi = degToRad(10.0f);
   Vec3 light = directionFromAngles(thetaI, phi);
   std::vector<float> thetaO = {-thetaI, 0.0f, degToRad(50.0f)};
-  PlaneSlice slice = planeSlice(bsdf, light, phi, thetaO, {450.0f, 550.0f, 650.0f, 700.0f});
+  PlaneSlice slice = planeSlice(bsdf.model(), light, phi, thetaO, {450.0f, 550.0f, 650.0f, 700.0f});
   // Negative angles lie on the far side from the light: -theta_i is the mirror direction.
   Vec3 directions[] = {Vec3(-light.x, -light.y, light.z), Vec3(0, 0, 1), directionFromAngles(degToRad(50.0f), phi)};
   Wavelengths wl = Wavelengths::fixed({450.0f, 550.0f, 650.0f, 700.0f});
@@ -128,7 +129,7 @@ TEST(BarbuleMeasurement, SpectralBandsAreBinMeansOfTheImagesQuantity) {
   BarbuleBSDF bsdf{BarbuleParameters{}};
   Vec3 light = directionFromAngles(degToRad(35.0f), 0.0f);
   const int res = 16, bins = 6;
-  SpectralBands bands = spectralScatterometerBands(bsdf, light, res, bins, 400.0f, 700.0f, 1);
+  SpectralBands bands = spectralScatterometerBands(bsdf.model(), light, res, bins, 400.0f, 700.0f, 1);
   ASSERT_EQ(bands.count(), size_t(bins));
   EXPECT_FLOAT_EQ(bands.centres[0], 425.0f);
   EXPECT_FLOAT_EQ(bands.centres[5], 675.0f);

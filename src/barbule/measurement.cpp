@@ -1,4 +1,4 @@
-#include "bsdfs/barbule_measurement.h"
+#include "barbule/measurement.h"
 
 #include <tbb/parallel_for.h>
 
@@ -46,7 +46,7 @@ std::optional<Vec3> scatterometerDirection(int px, int py, int sx, int sy, int r
   return directionFromAngles(r * kHalfPi, std::atan2(v, u));
 }
 
-Spectrum total(const BarbuleBSDF::Lobes& lobes) { return lobes.reflection + lobes.trt; }
+Spectrum total(const BarbuleLobes& lobes) { return lobes.reflection + lobes.trt; }
 }  // namespace
 
 std::vector<float> visibleWavelengthGrid(float step) {
@@ -55,20 +55,19 @@ std::vector<float> visibleWavelengthGrid(float step) {
   return lambdas;
 }
 
-LobeSpectra lobeReflectance(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
+LobeSpectra lobeReflectance(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
   LobeSpectra result;
   result.lambdas = lambdas;
   result.reflection.assign(lambdas.size(), 0.0f);
   result.trt.assign(lambdas.size(), 0.0f);
   const double cellSolidAngle = (2.0 / kAxisSteps) * (2.0 * kPiDouble / kAzimuthSteps);
-  BSDFContext ctx;
   tbb::parallel_for(size_t(0), groups.size(), [&](size_t g) {
     double r[kSpectrumSamples] = {}, t[kSpectrumSamples] = {};
     for (int i = 0; i < kAxisSteps; ++i)
       for (int j = 0; j < kAzimuthSteps; ++j) {
         Vec3 wo = gridDirection(i, j);
-        BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, wo, groups[g].wl);
+        BarbuleLobes lobes = model.lobes(omegaI, wo, groups[g].wl);
         for (int k = 0; k < kSpectrumSamples; ++k) {
           r[k] += lobes.reflection[k] * std::abs(wo.z);
           t[k] += lobes.trt[k] * std::abs(wo.z);
@@ -93,7 +92,7 @@ Vec3 directionFromAngles(float theta, float phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
-LobeSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const std::vector<float>& lambdas) {
+LobeSpectra specularSpectra(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
   LobeSpectra result;
   result.lambdas = lambdas;
   result.reflection.resize(lambdas.size());
@@ -101,7 +100,7 @@ LobeSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const s
   const Vec3 mirror(-omegaI.x, -omegaI.y, omegaI.z);
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
   for (size_t k = 0; k < groups.size(); ++k) {
-    BarbuleBSDF::Lobes lobes = bsdf.evalLobes(BSDFContext{}, omegaI, mirror, groups[k].wl);
+    BarbuleLobes lobes = model.lobes(omegaI, mirror, groups[k].wl);
     for (int i = 0; i < groups[k].count; ++i) {
       result.reflection[k * kSpectrumSamples + i] = kPi * lobes.reflection[i];
       result.trt[k * kSpectrumSamples + i] = kPi * lobes.trt[i];
@@ -110,7 +109,7 @@ LobeSpectra specularSpectra(const BarbuleBSDF& bsdf, const Vec3& omegaI, const s
   return result;
 }
 
-PlaneSlice planeSlice(const BarbuleBSDF& bsdf, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
+PlaneSlice planeSlice(const BarbuleModel& model, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
                       const std::vector<float>& lambdas) {
   PlaneSlice slice{thetaO, lambdas, std::vector<std::vector<float>>(thetaO.size(), std::vector<float>(lambdas.size()))};
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
@@ -118,7 +117,7 @@ PlaneSlice planeSlice(const BarbuleBSDF& bsdf, const Vec3& omegaI, float phi, co
     // Signed angles: positive toward the light's azimuth, so the mirror direction is at -theta_i.
     Vec3 wo = directionFromAngles(std::abs(thetaO[a]), thetaO[a] >= 0.0f ? phi : phi + kPi);
     for (size_t k = 0; k < groups.size(); ++k) {
-      BarbuleBSDF::Lobes lobes = bsdf.evalLobes(BSDFContext{}, omegaI, wo, groups[k].wl);
+      BarbuleLobes lobes = model.lobes(omegaI, wo, groups[k].wl);
       for (int i = 0; i < groups[k].count; ++i)
         slice.values[a][k * kSpectrumSamples + i] = (lobes.reflection[i] + lobes.trt[i]) * std::abs(wo.z);
     }
@@ -138,7 +137,7 @@ std::vector<Vec3> sliceRGB(const PlaneSlice& slice) {
   return rgb;
 }
 
-SpectralBands spectralScatterometerBands(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int bins,
+SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& omegaI, int resolution, int bins,
                                          float lambdaMin, float lambdaMax, int supersampling) {
   // Each bin is averaged over four wavelengths at the centres of its quarters.
   const float binWidth = (lambdaMax - lambdaMin) / float(bins);
@@ -159,7 +158,7 @@ SpectralBands spectralScatterometerBands(const BarbuleBSDF& bsdf, const Vec3& om
           std::optional<Vec3> wo = scatterometerDirection(px, py, sx, sy, resolution, supersampling);
           if (!wo) continue;
           for (int b = 0; b < bins; ++b) {
-            Spectrum f = total(bsdf.evalLobes(BSDFContext{}, omegaI, *wo, binWavelengths[b]));
+            Spectrum f = total(model.lobes(omegaI, *wo, binWavelengths[b]));
             out[b] += f.average() * std::abs(wo->z) / float(supersampling * supersampling);
           }
         }
@@ -168,11 +167,10 @@ SpectralBands spectralScatterometerBands(const BarbuleBSDF& bsdf, const Vec3& om
   return image;
 }
 
-Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolution, int supersampling) {
+Image scatterometerImage(const BarbuleModel& model, const Vec3& omegaI, int resolution, int supersampling) {
   Image image(resolution, resolution);
   std::vector<WavelengthGroup> groups = wavelengthGroups(visibleWavelengthGrid(5.0f));
   const float dLambda = 5.0f;
-  BSDFContext ctx;
   tbb::parallel_for(0, resolution, [&](int py) {
     for (int px = 0; px < resolution; ++px) {
       Vec3 xyz(0, 0, 0);
@@ -181,7 +179,7 @@ Image scatterometerImage(const BarbuleBSDF& bsdf, const Vec3& omegaI, int resolu
           std::optional<Vec3> wo = scatterometerDirection(px, py, sx, sy, resolution, supersampling);
           if (!wo) continue;
           for (const WavelengthGroup& g : groups) {
-            BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, omegaI, *wo, g.wl);
+            BarbuleLobes lobes = model.lobes(omegaI, *wo, g.wl);
             for (int k = 0; k < g.count; ++k)
               xyz +=
                   cieXYZ(g.wl[k]) * ((lobes.reflection[k] + lobes.trt[k]) * std::abs(wo->z) * d65(g.wl[k]) * dLambda);
