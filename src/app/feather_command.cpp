@@ -6,22 +6,29 @@
 #include <memory>
 #include "app/interruption.h"
 #include "feather/feather_generator.h"
+#include "feather/rock_dove.h"
 
 namespace columba {
 
 void addFeatherCommand(CLI::App& app) {
   struct Settings {
-    bool single = false, neck = false;
+    bool single = false, neck = false, bird = false;
     std::string output;
     FeatherGenerationOptions options;
+    float featherScale = 1.0f;
   };
   auto settings = std::make_shared<Settings>();
   CLI::App* cmd = app.add_subcommand("feather", "Write procedural feather geometry as a feather PLY");
   auto* single = cmd->add_flag("--single", settings->single, "One feather, 1.2 long, centred on the origin, facing +z");
   auto* neck = cmd->add_flag("--neck", settings->neck,
                              "A neck of overlapping feathers (x in [-2.4, 3.4], y in [-1.6, 3], facing +z)");
-  single->excludes(neck);
-  cmd->add_option("-o,--output", settings->output, "Output PLY file")->required();
+  auto* bird =
+      cmd->add_flag("--bird", settings->bird,
+                    "A rock dove (cm, x toward the beak, y up): -o names a directory for rock_dove.xml, a scene "
+                    "to <include>, and its feather templates");
+  single->excludes(neck, bird);
+  neck->excludes(bird);
+  cmd->add_option("-o,--output", settings->output, "Output PLY file (a directory with --bird)")->required();
   cmd->add_option("--seed", settings->options.seed, "Random seed")->capture_default_str();
   cmd->add_option("--feathers", settings->options.feathers, "Feathers on the neck")
       ->capture_default_str()
@@ -37,7 +44,11 @@ void addFeatherCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--purple-height", o.purpleHeight, "Cortex thickness of the purple barbules, um")
       ->capture_default_str()
-      ->needs(neck);
+      ->excludes(single);
+  cmd->add_option("--feather-scale", settings->featherScale,
+                  "With --bird: every feather this much larger (fewer feathers) or smaller (more), 0.2 to 5")
+      ->capture_default_str()
+      ->needs(bird);
   cmd->add_option("--height-spread", o.heightSpread, "Each feather's thickness varies by up to this much, um")
       ->capture_default_str();
   cmd->add_option("--purple-below", o.purpleBelow,
@@ -48,14 +59,32 @@ void addFeatherCommand(CLI::App& app) {
                   "Width of the change from green to purple on either side of the boundary (0: sharp)")
       ->capture_default_str()
       ->needs(neck);
-  cmd->callback([settings] {
-    if (settings->single == settings->neck) throw CLI::ValidationError("feather", "choose one of --single or --neck");
+  cmd->callback([settings, cmd] {
+    if (int(settings->single) + int(settings->neck) + int(settings->bird) != 1)
+      throw CLI::ValidationError("feather", "choose one of --single, --neck or --bird");
     settings->options.neck = settings->neck;
     auto start = std::chrono::steady_clock::now();
     // Ctrl-C stops at the next barb and removes the unfinished file.
     InterruptionGuard interruption("\nStopping: removing the unfinished file (interrupt again to quit at once)\n");
     interruption.deferStops();
     settings->options.cancel = &interruption.requested();
+    if (settings->bird) {
+      RockDoveOptions dove;
+      dove.seed = settings->options.seed;
+      dove.featherScale = settings->featherScale;
+      dove.greenHeight = settings->options.greenHeight;
+      dove.purpleHeight = settings->options.purpleHeight;
+      if (cmd->count("--height-spread") > 0) dove.heightSpread = settings->options.heightSpread;
+      dove.cancel = settings->options.cancel;
+      RockDoveSummary s = writeRockDove(dove, settings->output);
+      if (!s.written) throw CLI::RuntimeError(128 + interruption.signalNumber());
+      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      fmt::print(
+          "wrote {}/rock_dove.xml: {} feathers ({} iridescent), copies of {} templates of {} barbs in all, in {:.2f} "
+          "s\n",
+          settings->output, s.feathers, s.iridescent, dove.templates, s.templateBarbs, seconds);
+      return;
+    }
     FeatherGenerationSummary s = generateFeatherPly(settings->options, settings->output);
     if (!s.written) throw CLI::RuntimeError(128 + interruption.signalNumber());
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -7,40 +7,35 @@
 
 #include "builtin/builtin_plugins.h"
 #include "builtin/default_scene_xml.h"
-#include "feather/feather_generator.h"
+#include "feather/rock_dove.h"
 
 namespace columba {
 
 namespace {
-// Generated into a private temporary file that is removed once the scene has loaded it.
-class TemporaryNeck {
+// Generated into a private temporary directory that is removed once the scene has loaded it.
+class TemporaryBird {
  public:
-  TemporaryNeck() {
-    path_ = (std::filesystem::temp_directory_path() / ("columba-neck-" + std::to_string(::getpid()) + ".ply")).string();
-    FeatherGenerationOptions options;
-    options.neck = true;
-    options.binary = true;
-    generateFeatherPly(options, path_);
+  TemporaryBird() {
+    directory_ = std::filesystem::temp_directory_path() / ("columba-rock-dove-" + std::to_string(::getpid()));
+    writeRockDove(RockDoveOptions{}, directory_.string());
   }
-  ~TemporaryNeck() {
+  ~TemporaryBird() {
     std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
+    std::filesystem::remove_all(directory_, ignored);
   }
-  const std::string& path() const { return path_; }
+  std::string scene() const { return (directory_ / "rock_dove.xml").string(); }
 
  private:
-  std::string path_;
+  std::filesystem::path directory_;
 };
 }  // namespace
 
 ParsedScene loadDefaultScene(const Defines& userDefines) {
-  // Sized to render in about a minute on two cores.
-  Defines defines = {{"width", "800"}, {"height", "600"}, {"spp", "32"}};
-  for (const auto& [name, value] : userDefines) defines[name] = value;
-  std::optional<TemporaryNeck> neck;
-  if (!defines.count("feathers")) {
-    neck.emplace();
-    defines["feathers"] = neck->path();
+  Defines defines = userDefines;
+  std::optional<TemporaryBird> bird;
+  if (!defines.count("bird")) {
+    bird.emplace();
+    defines["bird"] = bird->scene();
   }
   return loadSceneString(kDefaultSceneXML, "<default scene>", std::filesystem::current_path().string(), defines,
                          builtinPlugins());

@@ -1,6 +1,6 @@
 #pragma once
-// The scene `columba render` draws when given none: a rock dove neck (scenes/neck_direction1.xml)
-// whose feathers are generated on the fly.
+// The scene `columba render` draws when given none: a rock dove (scenes/rock_dove.xml) whose
+// feathers are generated on the fly.
 #include "scene/scene_loader.h"
 
 namespace columba {

@@ -52,6 +52,12 @@ class SurfaceAttributes {
     return values_[key.slot()];
   }
   bool empty() const { return given_ == 0; }
+  // Takes every value `other` gives, keeping the others.
+  void overrideWith(const SurfaceAttributes& other) {
+    for (int i = 0; i < kCapacity; ++i)
+      if (other.given_ >> i & 1u) values_[i] = other.values_[i];
+    given_ |= other.given_;
+  }
   // The names given here, each after `prefix`, for messages ("vertex_H, vertex_mu").
   std::string names(const std::string& prefix) const;
 

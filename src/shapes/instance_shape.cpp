@@ -2,9 +2,14 @@
 A placed copy of one `shapegroup` (a `<ref>` to it, or nested), its `to_world` applied on top of the group's shapes' own. Instances use Embree's instancing, so a group instanced many times is stored once.
 Mitsuba 3: as Mitsuba 3's `instance`; a transform that Embree's single-precision instancing cannot trace is refused.
 | parameter | type | default | meaning | Mitsuba 3 |
+| H | float | the shapes' own | the barbule spacing this copy's barbule BSDFs use everywhere on it, in place of its shapes' per-point values; positive | not in Mitsuba 3 |
+| mu | float | the shapes' own | the barbule tilt (radians) this copy gives in the same way | not in Mitsuba 3 |
+| height | float | the shapes' own | the cortex thickness (µm, at least 0) this copy gives in the same way: copies of one feather in different colours | not in Mitsuba 3 |
 | to_world | transform | identity | an affine transform (last row 0, 0, 0, 1); refused when degenerate: a 3×3 determinant beyond float range, or a shrink that takes world points within 10⁶ of the origin beyond 1.8 × 10¹⁸ in the group's space (as a uniform scale below about 5 × 10⁻¹³ does) | same |
 */
 #include "shapes/instance_shape.h"
+
+#include "barbule/parameters.h"
 
 #include <fmt/format.h>
 
@@ -59,6 +64,16 @@ std::optional<std::string> embreeInstanceProblem(const Matrix4& toWorld) {
   return std::nullopt;
 }
 
+// A barbule value for the whole copy, if given: finite and at least `lowest` (above it when `strictly`).
+std::optional<float> barbuleValue(const Properties& props, const char* name, float lowest, bool strictly) {
+  if (!props.has(name)) return std::nullopt;
+  const float v = props.getFloat(name);
+  if (!std::isfinite(v) || v < lowest || (strictly && v == lowest))
+    throw props.error(
+        name, fmt::format("must be a finite number {} {:g}, not {:g}", strictly ? "above" : "of at least", lowest, v));
+  return v;
+}
+
 }  // namespace
 
 unsigned InstanceShape::addToEmbree(RTCDevice device, RTCScene scene) const {
@@ -87,6 +102,7 @@ SurfaceInteraction InstanceShape::interaction(const Ray& ray, const HitRecord& h
   si.shading = Frame::fromNormalAndS(normalize(toWorld_.normal(si.shading.n)), toWorld_.vector(si.shading.s));
   si.dpdu = toWorld_.vector(si.dpdu);
   si.dpdv = toWorld_.vector(si.dpdv);
+  si.attributes.overrideWith(values_);
   return si;
 }
 
@@ -101,7 +117,14 @@ std::shared_ptr<Object> makeInstanceShape(const Properties& props) {
     throw props.error("to_world", "an instance's transform must be affine (last row 0, 0, 0, 1)");
   if (std::optional<std::string> problem = embreeInstanceProblem(toWorld.matrix()))
     throw props.error("to_world", "the transform is degenerate: " + *problem);
-  return std::make_shared<InstanceShape>(groups.front(), toWorld);
+  SurfaceAttributes values;
+  auto give = [&](SurfaceAttributeKey key, std::optional<float> value) {
+    if (value) values.set(key, *value);
+  };
+  give(kBarbuleSpacingAttribute, barbuleValue(props, "H", 0.0f, true));
+  give(kBarbuleTiltAttribute, barbuleValue(props, "mu", -INFINITY, false));
+  give(kCortexThicknessAttribute, barbuleValue(props, "height", 0.0f, false));
+  return std::make_shared<InstanceShape>(groups.front(), toWorld, values);
 }
 
 }  // namespace columba

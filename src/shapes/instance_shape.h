@@ -14,8 +14,10 @@ class InstanceShape : public Shape {
  public:
   // Embree inverts the matrix of `toWorld` itself; the interaction inverts it too, so that both
   // agree to rounding whatever inverse `toWorld` carries.
-  InstanceShape(std::shared_ptr<const ShapeGroup> group, const Transform& toWorld)
-      : group_(std::move(group)), toWorld_(toWorld.matrix()), toGroup_(toWorld_.inverse()) {}
+  // `values`: per-point BSDF parameters this copy gives in place of its shapes' own (a feather's
+  // cortex thickness, so that copies of one feather differ in colour).
+  InstanceShape(std::shared_ptr<const ShapeGroup> group, const Transform& toWorld, SurfaceAttributes values = {})
+      : group_(std::move(group)), toWorld_(toWorld.matrix()), toGroup_(toWorld_.inverse()), values_(values) {}
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   // `hit.geomID` is the shape hit within the group (Embree's geomID under instID[0]).
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
@@ -24,6 +26,7 @@ class InstanceShape : public Shape {
  private:
   std::shared_ptr<const ShapeGroup> group_;
   Transform toWorld_, toGroup_;
+  SurfaceAttributes values_;
 };
 
 // <shape type="instance">: its parameters are in docs/reference/shapes.md.

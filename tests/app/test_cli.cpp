@@ -313,14 +313,14 @@ TEST_F(CliTest, AFilmTooLargeForMemorySaysHowMuchItNeeds) {
   EXPECT_NE(r.output.find("46341 x 46341 pixels needs 24.0 GiB"), std::string::npos) << r.output;
 }
 
-TEST_F(CliTest, DefaultSceneIsAGeneratedNeckSlow) {
+TEST_F(CliTest, DefaultSceneIsAGeneratedRockDoveSlow) {
   std::string out = (dir_ / "default.exr").string();
   CommandResult r = run("render -D width=40 -D height=30 -D spp=2 -o " + out);
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("default scene"), std::string::npos) << r.output;
   columba::Image img = columba::readEXR(out);
   EXPECT_EQ(img.width, 40);
-  // Hundreds of thousands of barb segments were generated and loaded.
+  // Thousands of feathers, copies of templates of thousands of barb segments, were generated and loaded.
   size_t at = r.output.find(" primitives");
   ASSERT_NE(at, std::string::npos) << r.output;
   size_t start = r.output.rfind(' ', at - 1) + 1;

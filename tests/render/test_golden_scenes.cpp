@@ -19,6 +19,7 @@
 
 #include "builtin/builtin_plugins.h"
 #include "feather/feather_generator.h"
+#include "feather/rock_dove.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "support/temp_dir_test.h"
@@ -88,6 +89,10 @@ class GoldenScenes : public TempDirTest {
     for (const char* name : {"neck_direction1", "neck_direction2", "neck_omnidirectional"})
       list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), neckView});
     list.push_back({"tiny_feather", source / "examples" / "tiny_feather.xml", {{"res", "32"}, {"spp", "8"}}});
+    writeRockDove(RockDoveOptions{}, path("rock_dove"));
+    list.push_back({"rock_dove",
+                    source / "scenes" / "rock_dove.xml",
+                    {{"bird", path("rock_dove/rock_dove.xml")}, {"width", "40"}, {"height", "30"}, {"spp", "8"}}});
     return list;
   }
 

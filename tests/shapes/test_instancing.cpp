@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "barbule/parameters.h"
 #include "shapes/instance_shape.h"
 #include "support/error_test_support.h"
 #include "support/feather_test_util.h"
@@ -367,4 +368,45 @@ TEST(Instancing, TransformsEmbreeCannotTraceThroughAreRefusedNamingTheLine) {
   auto hit = scene->intersect(Ray{Vec3(0, 0, 1), Vec3(0, 0, -1)});
   ASSERT_TRUE(hit.has_value());
   EXPECT_NEAR(hit->t, 1.0f, 1e-6f);
+}
+
+TEST(Instancing, AnInstanceGivesItsBarbuleValuesInPlaceOfItsShapesOwn) {
+  // A sphere instanced twice: one copy as it is, one giving barbule values.
+  const std::string group = R"(<shape type="shapegroup" id="f"><shape type="sphere"/></shape>)";
+  auto scene = sceneWith(group + R"(
+    <shape type="instance"><ref id="f"/><transform name="to_world"><translate x="-3"/></transform></shape>
+    <shape type="instance"><ref id="f"/><float name="height" value="0.51"/><float name="H" value="1.4"/>
+      <float name="mu" value="-0.2"/><transform name="to_world"><translate x="3"/></transform></shape>)");
+  auto plain = scene->intersect(Ray{Vec3(-3, 0, 10), Vec3(0, 0, -1)});
+  auto given = scene->intersect(Ray{Vec3(3, 0, 10), Vec3(0, 0, -1)});
+  ASSERT_TRUE(plain && given);
+  EXPECT_TRUE(plain->attributes.empty());
+  EXPECT_FLOAT_EQ(test::attribute(*given, "height"), 0.51f);
+  EXPECT_FLOAT_EQ(test::attribute(*given, "H"), 1.4f);
+  EXPECT_FLOAT_EQ(test::attribute(*given, "mu"), -0.2f);
+  // Over a feather's own per-vertex values too.
+  FeatherShapeParams params;
+  auto feather = std::make_shared<FeatherShape>(test::syntheticBarbs(3, 1.2f, 0.6f, 0.12f), params);
+  SurfaceAttributes thickness;
+  thickness.set(kCortexThicknessAttribute, 0.42f);
+  ParsedScene parsed;
+  parsed.objects = {std::make_shared<InstanceShape>(
+      std::make_shared<ShapeGroup>(std::vector<std::shared_ptr<Shape>>{feather}), Transform(), thickness)};
+  Scene featherScene(parsed, SourceLocation{"<test>", 0});
+  BarbStrip s = feather->strip(0);
+  Vec3 target = s.point(0.5f, 0.0f);
+  auto hit = featherScene.intersect(Ray{target + s.n * 0.05f, -s.n});
+  ASSERT_TRUE(hit);
+  EXPECT_FLOAT_EQ(test::attribute(*hit, "height"), 0.42f);
+  EXPECT_TRUE(hit->attributes.find(kBarbuleSpacingAttribute).has_value());  // the feather's own, kept
+}
+
+TEST(Instancing, BarbuleValuesOutOfRangeAreRefused) {
+  const std::string group = R"(<shape type="shapegroup" id="f"><shape type="sphere"/></shape>)";
+  EXPECT_NE(loadError(group + R"(<shape type="instance"><ref id="f"/><float name="height" value="-0.1"/></shape>)")
+                .find("parameter 'height': must be a finite number of at least 0, not -0.1"),
+            std::string::npos);
+  EXPECT_NE(loadError(group + R"(<shape type="instance"><ref id="f"/><float name="H" value="0"/></shape>)")
+                .find("parameter 'H': must be a finite number above 0, not 0"),
+            std::string::npos);
 }
