@@ -1,0 +1,146 @@
+#include "vision/observer.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "vision/visual_pigment.h"
+
+namespace columba {
+
+std::vector<float> coneSensitivity(const SpectralGrid& grid, const ConeClass& cone) {
+  std::vector<float> pigment = visualPigmentAbsorbance(grid, cone.lambdaMaxNm, cone.betaBand);
+  std::vector<double> s(grid.count);
+  double area = 0.0;
+  for (std::size_t i = 0; i < grid.count; ++i) {
+    double t = cone.droplet ? oilDropletTransmission(*cone.droplet, grid.wavelength(i)) : 1.0;
+    s[i] = double(pigment[i]) * t;
+    area += s[i];
+  }
+  area *= grid.stepNm;
+  std::vector<float> out(grid.count);
+  for (std::size_t i = 0; i < grid.count; ++i) out[i] = float(s[i] / area);
+  return out;
+}
+
+Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& grid) {
+  if (definition.cones.size() < 2)
+    throw std::invalid_argument("observer '" + definition.name + "' needs at least two chromatic cone classes");
+  const ReceptorNoise& noise = definition.noise;
+  if (noise.relativeDensities.size() != definition.cones.size())
+    throw std::invalid_argument("observer '" + definition.name + "' has " + std::to_string(definition.cones.size()) +
+                                " cones but " + std::to_string(noise.relativeDensities.size()) + " relative densities");
+  if (noise.weberReference >= definition.cones.size())
+    throw std::invalid_argument("observer '" + definition.name +
+                                "': the Weber fraction's reference cone is out of range");
+  Observer observer;
+  observer.name = definition.name;
+  observer.grid = grid;
+  observer.noise = noise;
+  for (const ConeClass& cone : definition.cones) {
+    observer.channels.push_back(cone.name);
+    observer.sensitivities.push_back(coneSensitivity(grid, cone));
+  }
+  if (definition.doubleCone) {
+    observer.achromaticChannel = definition.doubleCone->name;
+    observer.achromatic = coneSensitivity(grid, *definition.doubleCone);
+  }
+  return observer;
+}
+
+namespace {
+
+// pavo's coldist defaults, used where a species' own values were not found: relative densities
+// 1:2:2:4 (UVS/VS : SWS : MWS : LWS) of the Pekin robin Leiothrix lutea, and a Weber fraction of 0.1
+// for its LWS cone (the fourth); 0.1 for the achromatic channel (pavo's weber.achro).
+ReceptorNoise pavoDefaultNoise() { return {{1.0, 2.0, 2.0, 4.0}, 0.1, 3, 0.1}; }
+
+std::vector<ObserverDefinition> makeBuiltins() {
+  std::vector<ObserverDefinition> builtins;
+
+  // The blue tit, Cyanistes (Parus) caeruleus, an ultraviolet-sensitive passerine. Pigment peaks
+  // 371, 448, 502, 563 nm and oil-droplet cut-offs 330 (T), 413 (C), 507 (Y), 572 (R) nm from the
+  // microspectrophotometry of Hart, Partridge, Cuthill & Bennett (2000, J Comp Physiol A 186:375-387),
+  // as pavo's sensmodel documentation states them for this bird (its example "Blue tit visual system
+  // based on Hart et al (2000)", with the beta band left out). The mid-points follow from the cut-offs
+  // by Hart & Vorobyev's (2005) regressions for each droplet type (oil_droplet.h); the T droplet
+  // filters nothing. No double cone: its droplet's parameters were not found in a source to hand.
+  {
+    ObserverDefinition d;
+    d.name = "bluetit";
+    d.description = "blue tit (Cyanistes caeruleus), ultraviolet-sensitive";
+    d.cones = {
+        {"UVS", 371.0, oilDropletOfType(OilDropletType::T, 330.0), false},
+        {"SWS", 448.0, oilDropletOfType(OilDropletType::C, 413.0), false},
+        {"MWS", 502.0, oilDropletOfType(OilDropletType::Y, 507.0), false},
+        {"LWS", 563.0, oilDropletOfType(OilDropletType::R, 572.0), false},
+    };
+    d.noise = pavoDefaultNoise();
+    builtins.push_back(d);
+  }
+  return builtins;
+}
+
+}  // namespace
+
+const std::vector<ObserverDefinition>& builtinObserverDefinitions() {
+  static const std::vector<ObserverDefinition> builtins = makeBuiltins();
+  return builtins;
+}
+
+const ObserverDefinition* findObserverDefinition(const std::string& name) {
+  for (const ObserverDefinition& d : builtinObserverDefinitions())
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+Observer namedObserver(const std::string& name, const SpectralGrid& grid) {
+  if (const ObserverDefinition* d = findObserverDefinition(name)) return makeObserver(*d, grid);
+  std::string known;
+  for (const ObserverDefinition& d : builtinObserverDefinitions()) known += (known.empty() ? "" : ", ") + d.name;
+  throw std::invalid_argument("unknown observer '" + name + "' (known: " + known + ")");
+}
+
+std::vector<Observer> readEndlerMielkeObservers(std::istream& table) {
+  std::vector<double> wavelengths;
+  std::vector<std::vector<float>> columns(8);
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(table, line)) {
+    ++lineNumber;
+    if (lineNumber <= 3 || line.find_first_not_of(" \t\r") == std::string::npos) continue;  // the header
+    std::istringstream row(line);
+    double wl = 0.0;
+    if (!(row >> wl))
+      throw std::invalid_argument("Endler & Mielke table, line " + std::to_string(lineNumber) + ": no wavelength");
+    for (std::vector<float>& column : columns) {
+      double v = 0.0;
+      if (!(row >> v))
+        throw std::invalid_argument("Endler & Mielke table, line " + std::to_string(lineNumber) +
+                                    ": fewer than 8 sensitivities");
+      column.push_back(float(v / 100.0));
+    }
+    wavelengths.push_back(wl);
+  }
+  if (wavelengths.size() < 2) throw std::invalid_argument("Endler & Mielke table: fewer than two rows");
+  double step = wavelengths[1] - wavelengths[0];
+  for (std::size_t i = 1; i < wavelengths.size(); ++i)
+    if (std::abs(wavelengths[i] - wavelengths[0] - step * double(i)) > 1e-6)
+      throw std::invalid_argument("Endler & Mielke table: wavelengths are not evenly spaced");
+  SpectralGrid grid{wavelengths[0], step, wavelengths.size()};
+
+  std::vector<Observer> observers(2);
+  const char* names[2] = {"avg.uv", "avg.v"};
+  const char* shortest[2] = {"UVS", "VS"};
+  for (int k = 0; k < 2; ++k) {
+    Observer& o = observers[k];
+    o.name = names[k];
+    o.grid = grid;
+    o.channels = {shortest[k], "SWS", "MWS", "LWS"};
+    for (int c = 0; c < 4; ++c) o.sensitivities.push_back(columns[4 * k + c]);
+    o.noise = pavoDefaultNoise();
+  }
+  return observers;
+}
+
+}  // namespace columba
