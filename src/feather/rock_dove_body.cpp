@@ -55,9 +55,9 @@ RockDoveBody::RockDoveBody() {
   parts_ = {
       {"torso", {{-3.5f, 1.0f, 0.0f}, {8.5f, 5.6f, 5.6f}, 0.15f}, Plumage::Grey},
       {"breast", {{2.5f, 2.6f, 0.0f}, {4.8f, 5.4f, 5.0f}, 0.3f}, Plumage::Grey},
-      {"neck base", along(neckAt(0.12f), 2.8f, 3.7f, neckPitch), Plumage::Iridescent},
-      {"neck", along(neckAt(0.5f), 2.8f, 2.8f, neckPitch), Plumage::Iridescent},
-      {"upper neck", along(neckAt(0.9f), 2.4f, 2.1f, neckPitch), Plumage::Iridescent},
+      // The neck as one ellipsoid from inside the breast to inside the head, so that no crease
+      // runs round it.
+      {"neck", along(neckAt(0.45f), 5.2f, 3.0f, neckPitch), Plumage::Iridescent},
       {"head", {{8.6f, 12.3f, 0.0f}, {2.1f, 1.75f, 1.65f}, 0.1f}, Plumage::Grey},
       {"left wing", {{-5.0f, 3.0f, 3.3f}, {9.5f, 3.6f, 2.3f}, -0.05f}, Plumage::Grey},
       {"right wing", {{-5.0f, 3.0f, -3.3f}, {9.5f, 3.6f, 2.3f}, -0.05f}, Plumage::Grey},
