@@ -90,9 +90,10 @@ class GoldenScenes : public TempDirTest {
       list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), neckView});
     list.push_back({"tiny_feather", source / "examples" / "tiny_feather.xml", {{"res", "32"}, {"spp", "8"}}});
     writeRockDove(RockDoveOptions{}, path("rock_dove"));
-    list.push_back({"rock_dove",
-                    source / "scenes" / "rock_dove.xml",
-                    {{"bird", path("rock_dove/rock_dove.xml")}, {"width", "40"}, {"height", "30"}, {"spp", "8"}}});
+    const Defines birdView = {
+        {"bird", path("rock_dove/rock_dove.xml")}, {"width", "40"}, {"height", "30"}, {"spp", "8"}};
+    for (const char* name : {"rock_dove", "rock_dove_omnidirectional", "rock_dove_direction1", "rock_dove_direction2"})
+      list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), birdView});
     return list;
   }
 
