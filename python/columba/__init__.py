@@ -20,11 +20,15 @@ try:
         InputError,
         Scene,
         __version__,
+        colour_distance,
+        cone_catches,
         direction,
         fit,
         fit_spectra,
         fresnel,
         melanin_reflectance,
+        observer,
+        observers,
         presets,
         from_srgb,
         to_srgb,
@@ -46,6 +50,7 @@ __all__ = [
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
+    "observers", "observer", "cone_catches", "colour_distance",
 ]
 
 

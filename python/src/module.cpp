@@ -24,8 +24,9 @@ namespace py = pybind11;
 
 namespace columba::python {
 
-void bindModel(py::module_& m);  // model.cpp: the barbule BSDF, optics, feathers
-void bindFit(py::module_& m);    // fit.cpp: parameter fits to images and spectra
+void bindModel(py::module_& m);   // model.cpp: the barbule BSDF, optics, feathers
+void bindFit(py::module_& m);     // fit.cpp: parameter fits to images and spectra
+void bindVision(py::module_& m);  // vision.cpp: avian visual models
 
 namespace {
 
@@ -246,4 +247,5 @@ PYBIND11_MODULE(_columba, m) {
         "The linear value of sRGB-encoded values in [0, 1]");
   bindModel(m);
   bindFit(m);
+  bindVision(m);
 }

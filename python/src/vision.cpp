@@ -1,0 +1,189 @@
+// Avian visual models over numpy arrays (src/vision/, docs/vision.md): observers, their cone
+// quantum catches of spectra, and receptor-noise-limited colour distances between spectra.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "vision/colour_distance.h"
+#include "vision/observer.h"
+#include "vision/quantum_catch.h"
+
+namespace py = pybind11;
+
+namespace columba::python {
+
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// An observer by name, or one built from published data given as a dict: {"name": ...,
+// "lambda_max": [nm, ...], "oil_droplets": [("C", cut_nm) or None, ...], "beta_band": bool,
+// "densities": [...], "weber": w, "weber_cone": index}.
+Observer observerFrom(const py::object& spec) {
+  if (py::isinstance<py::str>(spec)) {
+    try {
+      return namedObserver(spec.cast<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());
+    }
+  }
+  if (!py::isinstance<py::dict>(spec))
+    throw py::type_error("an observer is a name (columba.observers()) or a dict of its cones' data");
+  py::dict d = spec.cast<py::dict>();
+  ObserverDefinition definition;
+  definition.name = d.contains("name") ? d["name"].cast<std::string>() : "custom";
+  if (!d.contains("lambda_max")) throw py::value_error("a custom observer needs 'lambda_max', one per cone (nm)");
+  const std::vector<double> peaks = d["lambda_max"].cast<std::vector<double>>();
+  const bool beta = d.contains("beta_band") ? d["beta_band"].cast<bool>() : true;
+  py::list droplets = d.contains("oil_droplets") ? d["oil_droplets"].cast<py::list>() : py::list();
+  if (!droplets.empty() && droplets.size() != peaks.size())
+    throw py::value_error("give one oil droplet (or None) per cone in 'oil_droplets'");
+  static const char* kNames[][4] = {{"SWS", "LWS", "", ""}, {"SWS", "MWS", "LWS", ""}, {"VS", "SWS", "MWS", "LWS"}};
+  if (peaks.size() < 2 || peaks.size() > 4) throw py::value_error("a custom observer has 2 to 4 cones");
+  for (size_t i = 0; i < peaks.size(); ++i) {
+    if (!(peaks[i] >= 300.0 && peaks[i] <= 700.0))
+      throw py::value_error("lambda_max must lie in [300, 700] nm, not " + std::to_string(peaks[i]));
+    ConeClass cone{kNames[peaks.size() - 2][i], peaks[i], std::nullopt, beta};
+    if (!droplets.empty() && !droplets[i].is_none()) {
+      auto [letter, cut] = droplets[i].cast<std::pair<std::string, double>>();
+      std::optional<OilDropletType> type = parseOilDropletType(letter);
+      if (!type) throw py::value_error("oil droplet type '" + letter + "' is not one of T, C, Y, R, P");
+      cone.droplet = oilDropletOfType(*type, cut);
+    }
+    definition.cones.push_back(cone);
+  }
+  definition.noise.relativeDensities =
+      d.contains("densities") ? d["densities"].cast<std::vector<double>>() : std::vector<double>(peaks.size(), 1.0);
+  if (definition.noise.relativeDensities.size() != peaks.size())
+    throw py::value_error("give one relative density per cone in 'densities'");
+  if (d.contains("weber")) definition.noise.weberFraction = d["weber"].cast<double>();
+  definition.noise.weberReference = d.contains("weber_cone") ? d["weber_cone"].cast<size_t>() : peaks.size() - 1;
+  if (definition.noise.weberReference >= peaks.size()) throw py::value_error("'weber_cone' names no cone");
+  return makeObserver(definition);
+}
+
+// `values` (one spectrum, or N x k: k spectra in columns, pavo's layout) at `wavelengths`,
+// linearly interpolated onto the observer's grid; a spectrum must cover every wavelength where a
+// cone is sensitive (above 1e-4 of its peak).
+std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArray& wavelengths,
+                                       const DoubleArray& values, const char* what) {
+  if (wavelengths.ndim() != 1 || wavelengths.shape(0) < 2)
+    throw py::value_error("wavelengths must be a 1-D array of at least two values (nm)");
+  const py::ssize_t n = wavelengths.shape(0);
+  const double* w = wavelengths.data();
+  for (py::ssize_t i = 1; i < n; ++i)
+    if (!(w[i] > w[i - 1])) throw py::value_error("wavelengths must increase");
+  if (!((values.ndim() == 1 && values.shape(0) == n) || (values.ndim() == 2 && values.shape(0) == n)))
+    throw py::value_error(std::string(what) + " must have one row per wavelength (N, or N x k for k spectra)");
+  const py::ssize_t spectra = values.ndim() == 1 ? 1 : values.shape(1);
+  // The range the cones see.
+  double lo = observer.grid.lastNm(), hi = observer.grid.firstNm;
+  auto widen = [&](const std::vector<float>& s) {
+    const float peak = *std::max_element(s.begin(), s.end());
+    for (size_t i = 0; i < s.size(); ++i)
+      if (s[i] > 1e-4f * peak)
+        lo = std::min(lo, observer.grid.wavelength(i)), hi = std::max(hi, observer.grid.wavelength(i));
+  };
+  for (const auto& s : observer.sensitivities) widen(s);
+  if (observer.hasAchromatic()) widen(observer.achromatic);
+  if (w[0] > lo + 1e-9 || w[n - 1] < hi - 1e-9)
+    throw py::value_error(std::string(what) + " must cover " + std::to_string(int(std::floor(lo))) + "-" +
+                          std::to_string(int(std::ceil(hi))) + " nm, where observer '" + observer.name +
+                          "' is sensitive; it covers " + std::to_string(w[0]) + "-" + std::to_string(w[n - 1]) + " nm");
+  std::vector<std::vector<float>> out(size_t(spectra), std::vector<float>(observer.grid.count, 0.0f));
+  const double* v = values.data();
+  for (size_t g = 0; g < observer.grid.count; ++g) {
+    const double x = observer.grid.wavelength(g);
+    if (x < w[0] || x > w[n - 1]) continue;  // where no cone is sensitive
+    const py::ssize_t j = std::min<py::ssize_t>(n - 2, std::upper_bound(w, w + n, x) - w - 1);
+    const double t = (x - w[j]) / (w[j + 1] - w[j]);
+    for (py::ssize_t k = 0; k < spectra; ++k)
+      out[size_t(k)][g] = float(v[j * spectra + k] * (1.0 - t) + v[(j + 1) * spectra + k] * t);
+  }
+  return out;
+}
+
+std::vector<float> illuminantFrom(const Observer& observer, const DoubleArray& wavelengths, const py::object& given) {
+  if (given.is_none()) return equalQuantumSpectrum(observer.grid);
+  return onGrid(observer, wavelengths, given.cast<DoubleArray>(), "illuminant").front();
+}
+
+}  // namespace
+
+void bindVision(py::module_& m) {
+  m.def(
+      "observers",
+      [] {
+        py::list names;
+        for (const ObserverDefinition& d : builtinObserverDefinitions())
+          names.append(py::dict(py::arg("name") = d.name, py::arg("description") = d.description));
+        return names;
+      },
+      "The built-in avian observers: a list of {name, description} (docs/vision.md gives their sources)");
+  m.def(
+      "observer",
+      [](const py::object& spec) {
+        Observer o = observerFrom(spec);
+        const py::ssize_t n = py::ssize_t(o.grid.count), k = py::ssize_t(o.channels.size());
+        py::array_t<double> wl(n), s({k, n});
+        for (py::ssize_t i = 0; i < n; ++i) wl.mutable_at(i) = o.grid.wavelength(size_t(i));
+        for (py::ssize_t c = 0; c < k; ++c)
+          for (py::ssize_t i = 0; i < n; ++i) s.mutable_at(c, i) = o.sensitivities[size_t(c)][size_t(i)];
+        py::dict r;
+        r["name"] = o.name;
+        r["wavelengths"] = wl;
+        r["channels"] = o.channels;
+        r["sensitivities"] = s;
+        r["densities"] = o.noise.relativeDensities;
+        r["weber"] = o.noise.weberFraction;
+        r["weber_cone"] = o.channels[o.noise.weberReference];
+        r["noise"] = receptorNoise(o.noise);
+        return r;
+      },
+      py::arg("observer"),
+      "An observer's sensitivities (channels x wavelengths, each of area 1 per nm) and receptor noise");
+  m.def(
+      "cone_catches",
+      [](const DoubleArray& wavelengths, const DoubleArray& spectra, const py::object& spec,
+         const py::object& illuminant, bool vonKriesAdapted, bool relative) {
+        const Observer o = observerFrom(spec);
+        const std::vector<std::vector<float>> r = onGrid(o, wavelengths, spectra, "spectra");
+        const std::vector<float> light = illuminantFrom(o, wavelengths, illuminant);
+        const py::ssize_t k = py::ssize_t(o.channels.size());
+        py::array_t<double> out({py::ssize_t(r.size()), k});
+        for (size_t s = 0; s < r.size(); ++s) {
+          ConeCatches q = vonKriesAdapted ? adaptedQuantumCatches(o, r[s], light) : quantumCatches(o, r[s], light);
+          std::vector<double> c = relative ? relativeCatches(q.chromatic) : q.chromatic;
+          for (py::ssize_t i = 0; i < k; ++i) out.mutable_at(py::ssize_t(s), i) = c[size_t(i)];
+        }
+        if (spectra.ndim() == 1) return py::array_t<double>(out.reshape({k}));
+        return out;
+      },
+      py::arg("wavelengths"), py::arg("spectra"), py::arg("observer") = "bluetit", py::arg("illuminant") = py::none(),
+      py::arg("von_kries") = true, py::arg("relative") = false,
+      "Quantum catches of reflectance spectra (N, or N x k in columns) under an illuminant (default: equal "
+      "photon flux), adapted to an ideal white (von Kries) by default; one row per spectrum, one column per cone");
+  m.def(
+      "colour_distance",
+      [](const DoubleArray& wavelengths, const DoubleArray& a, const DoubleArray& b, const py::object& spec,
+         const py::object& illuminant) {
+        const Observer o = observerFrom(spec);
+        const std::vector<float> light = illuminantFrom(o, wavelengths, illuminant);
+        const ConeCatches qa = adaptedQuantumCatches(o, onGrid(o, wavelengths, a, "a").front(), light);
+        const ConeCatches qb = adaptedQuantumCatches(o, onGrid(o, wavelengths, b, "b").front(), light);
+        py::dict r;
+        r["dS"] = chromaticDistance(o, qa, qb);
+        r["dL"] = o.hasAchromatic() ? py::object(py::float_(achromaticDistance(o, qa, qb))) : py::object(py::none());
+        return r;
+      },
+      py::arg("wavelengths"), py::arg("a"), py::arg("b"), py::arg("observer") = "bluetit",
+      py::arg("illuminant") = py::none(),
+      "The receptor-noise-limited distance between two reflectance spectra in JND (dS, chromatic; dL, achromatic "
+      "where the observer has double cones), Vorobyev & Osorio 1998");
+}
+
+}  // namespace columba::python

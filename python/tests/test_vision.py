@@ -1,0 +1,58 @@
+"""Avian visual models from Python: observers, cone catches and colour distances (docs/vision.md)."""
+import numpy as np
+import pytest
+
+import columba
+
+WL = np.arange(300.0, 831.0)
+
+
+def test_the_blue_tit_is_built_in_with_sensitivities_of_area_one():
+    assert "bluetit" in [o["name"] for o in columba.observers()]
+    o = columba.observer("bluetit")
+    assert o["channels"] == ["UVS", "SWS", "MWS", "LWS"]
+    assert o["sensitivities"].shape == (4, 531)
+    np.testing.assert_allclose(o["sensitivities"].sum(axis=1), 1.0, rtol=1e-5)  # 1 nm steps
+
+
+def test_an_equal_quantum_white_catches_each_sensitivitys_integral_and_adapts_to_one():
+    white = np.ones_like(WL)
+    np.testing.assert_allclose(columba.cone_catches(WL, white, von_kries=False), 1.0, rtol=1e-5)
+    np.testing.assert_allclose(columba.cone_catches(WL, white), 1.0, rtol=1e-6)
+    # k spectra in columns, pavo's layout: one row of catches per spectrum.
+    two = np.stack([white, 0.5 * white], axis=1)
+    np.testing.assert_allclose(columba.cone_catches(WL, two), [[1.0] * 4, [0.5] * 4], rtol=1e-6)
+
+
+def test_a_grey_is_no_colour_and_identical_spectra_are_zero_apart():
+    # A grey scales every cone's catch alike: no chromatic difference however dark.
+    grey = np.full_like(WL, 0.2)
+    assert columba.colour_distance(WL, grey, np.ones_like(WL))["dS"] == pytest.approx(0.0, abs=1e-9)
+    green = np.exp(-0.5 * ((WL - 540.0) / 30.0) ** 2)
+    assert columba.colour_distance(WL, green, green)["dS"] == 0.0
+    purple = 0.5 * (np.exp(-0.5 * ((WL - 420.0) / 30.0) ** 2) + np.exp(-0.5 * ((WL - 650.0) / 30.0) ** 2))
+    assert columba.colour_distance(WL, green, purple)["dS"] > 5.0  # plainly different to a bird
+
+
+def test_a_custom_observer_from_published_pigment_peaks():
+    spec = {"name": "two cones", "lambda_max": [420.0, 540.0], "beta_band": False}
+    o = columba.observer(spec)
+    assert o["channels"] == ["SWS", "LWS"]
+    peaks = o["wavelengths"][np.argmax(o["sensitivities"], axis=1)]
+    np.testing.assert_allclose(peaks, [420.0, 540.0], atol=1.0)
+    # A dichromat's distance for a known pair of catches: with noise e = (e1, e2), dS = |df1 - df2| /
+    # sqrt(e1^2 + e2^2). Equal densities and a Weber fraction of 0.1 give e = (0.1, 0.1).
+    a = np.ones_like(WL)
+    b = np.where(WL > 480.0, 2.0, 1.0)  # doubles what the long cone catches, barely changes the short one
+    catches = columba.cone_catches(WL, b, observer=spec)
+    expected = abs(np.log(catches[0]) - np.log(catches[1])) / np.sqrt(0.1**2 + 0.1**2)
+    assert columba.colour_distance(WL, a, b, observer=spec)["dS"] == pytest.approx(expected, rel=1e-6)
+
+
+def test_mistakes_are_errors():
+    with pytest.raises(ValueError, match="must cover"):
+        columba.cone_catches(np.arange(400.0, 701.0), np.ones(301))
+    with pytest.raises(ValueError, match="pigeon"):
+        columba.observer("pigeon")
+    with pytest.raises(ValueError, match="one row per wavelength"):
+        columba.cone_catches(WL, np.ones(10))
