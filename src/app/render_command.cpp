@@ -383,8 +383,10 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
   addSceneOptions(cmd, options->scene);
-  cmd->add_option("-o,--output", options->output,
-                  "Output image, .exr or .png: the other of the two is written beside it (default: SCENE.exr)");
+  cmd->add_option(
+      "-o,--output", options->output,
+      "Output image, .exr or .png: the other of the two is written beside it, its directory made if missing "
+      "(default: SCENE.exr)");
   cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)");
   cmd->add_option("--frame", options->frame, "Render only this frame of the sweep (0-based, as in the manifest)");
   cmd->add_option("--part", options->part,
