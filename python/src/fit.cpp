@@ -75,6 +75,26 @@ py::dict fitImage(const std::filesystem::path& scene, const py::array& target, c
   return d;
 }
 
+// The fitted model beside the spectra it was fitted to, one entry a sample in the file's order:
+// its directions and wavelength, the model's reflectance factor before scaling and the measured one.
+py::dict modelDict(const std::vector<SpectraSample>& samples, const std::vector<float>& model) {
+  const py::ssize_t n = py::ssize_t(samples.size());
+  auto column = [&](float SpectraSample::*field) {
+    py::array_t<float> a(n);
+    for (py::ssize_t i = 0; i < n; ++i) a.mutable_data()[i] = samples[size_t(i)].*field;
+    return a;
+  };
+  py::dict d;
+  d["theta_i"] = column(&SpectraSample::thetaI);
+  d["phi_i"] = column(&SpectraSample::phiI);
+  d["theta_o"] = column(&SpectraSample::thetaO);
+  d["phi_o"] = column(&SpectraSample::phiO);
+  d["wavelength_nm"] = column(&SpectraSample::wavelength);
+  d["reflectance"] = py::array_t<float>(py::ssize_t(model.size()), model.data());
+  d["measured"] = column(&SpectraSample::reflectance);
+  return d;
+}
+
 py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary,
                         const std::string& scale, const std::string& loss, int maxEvaluations, double maxSeconds,
                         double rise) {
@@ -87,7 +107,7 @@ py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<
     result = fitSpectra(s);
   }
   py::dict d = resultDict(result.fit);
-  d["model"] = result.model;
+  d["model"] = modelDict(s.samples, result.model);
   return d;
 }
 
@@ -103,7 +123,9 @@ void bindFit(py::module_& m) {
   m.def("fit_spectra", &fitSpectraFile, py::arg("spectra"), py::arg("vary"), py::arg("scale") = "free",
         py::arg("loss") = "mse", py::arg("max_evals") = 300, py::arg("max_seconds") = 120.0, py::arg("rise") = 0.1,
         "Fit barbule parameters (b, phi_0, phi_1, mu, H, height) to a CSV of measured reflectance spectra, as "
-        "`columba fit --spectra` does. Returns a dict: values, intervals, loss, scale, evaluations, model.");
+        "`columba fit --spectra` does. Returns a dict: values, intervals, loss, scale, evaluations, model (a dict "
+        "of arrays, one entry a sample: theta_i, phi_i, theta_o, phi_o, wavelength_nm, reflectance of the model "
+        "before scaling, measured).");
 }
 
 }  // namespace columba::python

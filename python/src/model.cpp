@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -31,6 +32,15 @@ namespace {
 
 using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A float parameter as the shortest decimal that reads back as the same float (0.58, not
+// 0.5799999833): Python shows the value as it was written.
+double decimal(float x) {
+  const std::string text = fmt::format("{}", x);
+  double value = x;
+  std::from_chars(text.data(), text.data() + text.size(), value);
+  return value;
+}
 
 // "<bsdf> 'barbulebsdf', parameter 'b': ..." as the scene plug-in words it (without a file position).
 [[noreturn]] void parameterError(const std::string& parameter, const std::string& message) {
@@ -464,8 +474,9 @@ void bindModel(py::module_& m) {
                              [](const PyBarbule& s) {
                                const BarbuleParameters& p = s.bsdf().parameters();
                                py::dict d;
-                               d["b"] = p.b, d["H"] = p.H, d["mu"] = p.mu, d["height"] = p.height;
-                               d["phi_0"] = p.phi0, d["phi_1"] = p.phi1, d["ext_ior"] = p.extIOR;
+                               d["b"] = decimal(p.b), d["H"] = decimal(p.H), d["mu"] = decimal(p.mu);
+                               d["height"] = decimal(p.height), d["phi_0"] = decimal(p.phi0);
+                               d["phi_1"] = decimal(p.phi1), d["ext_ior"] = decimal(p.extIOR);
                                return d;
                              })
       .def("eval", &evalArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),
@@ -509,7 +520,8 @@ void bindModel(py::module_& m) {
     py::dict d;
     for (const BarbulePreset& p : barbulePresets()) {
       py::dict v;
-      v["b"] = p.b, v["phi_0"] = p.phi0, v["phi_1"] = p.phi1, v["mu"] = p.mu, v["H"] = p.H, v["height"] = p.height;
+      v["b"] = decimal(p.b), v["phi_0"] = decimal(p.phi0), v["phi_1"] = decimal(p.phi1), v["mu"] = decimal(p.mu);
+      v["H"] = decimal(p.H), v["height"] = decimal(p.height);
       v["source"] = p.source;
       d[p.name] = v;
     }

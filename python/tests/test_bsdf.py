@@ -39,6 +39,17 @@ def test_presets_and_parameters_equal_cli(cli, tmp_path):
     assert not np.array_equal(columba.BarbuleBSDF(preset="dove-purple").scatterometer_image(10, resolution=24), expected)
 
 
+def test_presets_and_parameters_read_as_they_are_written():
+    # The float32 parameters as the shortest decimals that are the same floats: 0.51, not 0.5099999904632568.
+    purple = columba.presets()["dove-purple"]
+    assert (purple["height"], purple["mu"], purple["phi_0"], purple["phi_1"]) == (0.51, -0.35, -0.37, 2.64)
+    assert repr(purple["height"]) == "0.51"
+    parameters = columba.BarbuleBSDF(preset="dove-purple", height=0.55).parameters
+    assert (parameters["height"], parameters["mu"], parameters["ext_ior"]) == (0.55, -0.35, 1.000277)
+    for value in parameters.values():
+        assert repr(value) == repr(float(str(np.float32(value))))
+
+
 def test_specular_spectra_equal_cli(cli, tmp_path):
     cli("bsdf", "--mode", "specular", "--angles", "0,40", "--preset", "dove-green", "-o", tmp_path)
     with open(tmp_path / "bsdf_specular.csv") as f:

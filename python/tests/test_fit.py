@@ -57,3 +57,23 @@ def test_fit_settings_are_checked_as_the_command_checks_them(repo, tmp_path):
             columba.fit_spectra(spectra, vary=vary, **kwargs)
     with pytest.raises(ValueError, match="varied twice"):
         columba.fit_spectra(spectra, vary=vary * 2)
+
+
+def test_fit_spectra_returns_the_model_with_its_wavelengths_and_directions(tmp_path):
+    spectra = tmp_path / "spectra.csv"
+    wavelengths = np.arange(400, 701, 20)
+    measured = 0.1 + 0.3 * np.exp(-0.5 * ((wavelengths - 540) / 40.0) ** 2)
+    rows = [f"{t},0,{t},180,{w},{r:.6f}" for t in (10, 30) for w, r in zip(wavelengths, measured)]
+    spectra.write_text("theta_i,phi_i,theta_o,phi_o,wavelength_nm,reflectance\n" + "\n".join(rows) + "\n")
+    r = columba.fit_spectra(spectra, ["height=0.5:0.7"], max_evals=30)
+    model = r["model"]
+    assert sorted(model) == ["measured", "phi_i", "phi_o", "reflectance", "theta_i", "theta_o", "wavelength_nm"]
+    n = 2 * len(wavelengths)
+    assert all(model[k].shape == (n,) for k in model)
+    # One entry a sample, in the file's order: the model can be drawn against the data as it is.
+    np.testing.assert_array_equal(model["wavelength_nm"], np.tile(wavelengths, 2).astype(np.float32))
+    np.testing.assert_array_equal(model["theta_i"], np.repeat([10, 30], len(wavelengths)).astype(np.float32))
+    np.testing.assert_array_equal(model["phi_o"], np.full(n, 180, np.float32))
+    np.testing.assert_allclose(model["measured"], np.tile(measured, 2), rtol=1e-5)
+    residual = r["scale"] * model["reflectance"].astype(np.float64) - model["measured"]
+    assert np.mean(residual ** 2) == pytest.approx(r["loss"], rel=1e-4)

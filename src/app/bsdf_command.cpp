@@ -11,6 +11,7 @@
 #include "barbule/parameter_reader.h"
 #include "core/version.h"
 #include "io/data_files.h"
+#include "io/output_directory.h"
 #include "plot/canvas.h"
 #include "plot/hemisphere_chart.h"
 #include "plot/line_plot.h"
@@ -288,9 +289,10 @@ nlohmann::json parameterRecord(const BSDFOptions& o) {
 }
 
 void runBSDF(const BSDFOptions& o) {
-  if (!fs::is_directory(o.outputDir)) throw std::runtime_error("output directory '" + o.outputDir + "' does not exist");
+  checkOutputDirectory(o.outputDir, o.outputDir);
   const fs::path dir(o.outputDir);
   const BarbuleModel model(o.params);
+  makeOutputDirectory(o.outputDir, o.outputDir);
   fmt::print("barbule BSDF: {}\n", describeParameters(o));
   nlohmann::json record = {{"columba_version", kColumbaVersion},
                            {"parameters", parameterRecord(o)},
@@ -385,7 +387,7 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--bins", o->bins, "Wavelength bins over 400-700 nm for --spectral (default 16)")
       ->check(CLI::Range(1, 300));
   cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
-  cmd->add_option("-o,--output", o->outputDir, "Output directory (default: the working directory)");
+  cmd->add_option("-o,--output", o->outputDir, "Output directory, made if missing (default: the working directory)");
   cmd->callback([o, given, cmd] {
     resolveParameters(*o, *cmd, *given);
     runBSDF(*o);

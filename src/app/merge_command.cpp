@@ -6,6 +6,7 @@
 
 #include "distribute/manifest.h"
 #include "distribute/merge.h"
+#include "io/output_directory.h"
 
 namespace columba {
 
@@ -21,12 +22,12 @@ struct MergeOptions {
 // OUT.exr and OUT.png from -o naming either, neither of them one of the pieces.
 std::pair<std::string, std::string> outputPair(const std::string& output, const std::vector<std::string>& pieces) {
   std::filesystem::path exr = output, png = output;
-  if (checkOutputImagePath(output) == ImageFormat::EXR)
+  if (checkOutputImagePath(output, true) == ImageFormat::EXR)
     png.replace_extension(".png");
   else
     exr.replace_extension(".exr");
-  checkOutputImagePath(exr.string());
-  checkOutputImagePath(png.string());
+  checkOutputImagePath(exr.string(), true);
+  checkOutputImagePath(png.string(), true);
   refuseWritingOverAPiece(exr.string(), pieces);
   refuseWritingOverAPiece(png.string(), pieces);
   return {exr.string(), png.string()};
@@ -42,6 +43,7 @@ std::string mergedFrom(const MergedImage& merged) {
 
 void writeMerged(const MergedImage& merged, const std::pair<std::string, std::string>& output) {
   const auto& [exr, png] = output;
+  makeOutputDirectory(exr, directoryOf(exr));
   ImageMetadata metadata = pieceMetadata(merged.info);
   metadata.emplace_back("Merged from", mergedFrom(merged));
   writeEXRAndPNG(exr, png, merged.image, metadata);
@@ -133,7 +135,8 @@ void addMergeCommand(CLI::App& app) {
   auto options = std::make_shared<MergeOptions>();
   CLI::App* cmd = app.add_subcommand("merge", "Put the pieces of a split render (--part, --pass) back together");
   cmd->add_option("pieces", options->pieces, "The pieces' EXR files (OUT.part1of4.exr ...)");
-  cmd->add_option("-o,--output", options->output, "The merged image, .exr or .png (the other is written beside it)");
+  cmd->add_option("-o,--output", options->output,
+                  "The merged image, .exr or .png (the other is written beside it; its directory made if missing)");
   cmd->add_option("--manifest", options->manifest,
                   "Merge every frame of this manifest (of `columba slurm`) whose image is not done");
   cmd->add_option("--frame", options->frame, "With --manifest: only this frame")->check(CLI::NonNegativeNumber);

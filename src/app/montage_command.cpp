@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "io/output_directory.h"
 #include "plot/contact_sheet.h"
 
 namespace columba {
@@ -36,7 +37,8 @@ std::vector<std::string> readLabels(const MontageOptions& options) {
 }
 
 void runMontage(const MontageOptions& options) {
-  const ImageFormat format = checkOutputImagePath(options.output);  // before reading the inputs
+  // Before reading the inputs; a missing directory is made once the sheet is.
+  const ImageFormat format = checkOutputImagePath(options.output, true);
   const std::vector<std::string> labels = readLabels(options);
   std::vector<ContactSheetEntry> entries;
   for (const std::string& path : options.inputs) {
@@ -50,6 +52,7 @@ void runMontage(const MontageOptions& options) {
   std::string inputs;
   for (const std::string& path : options.inputs) inputs += (inputs.empty() ? "" : "\n") + path;
   const ImageMetadata metadata = {{"Images", inputs}};
+  makeOutputDirectory(options.output, directoryOf(options.output));
   if (format == ImageFormat::EXR)
     writeEXR(options.output, sheet, metadata);
   else
@@ -62,7 +65,8 @@ void addMontageCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("montage", "Arrange images (PNG or EXR) into a labelled contact sheet (PNG or EXR)");
   cmd->add_option("images", options->inputs, "Images, in order")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", options->output, "Contact sheet, .png or .exr")->required();
+  cmd->add_option("-o,--output", options->output, "Contact sheet, .png or .exr (its directory made if missing)")
+      ->required();
   cmd->add_option("--columns", options->columns, "Tiles per row")->check(CLI::Range(1, 64));
   cmd->add_option("--tile", options->tileWidth, "Tile width in pixels")->check(CLI::Range(16, 4096));
   cmd->add_option("--title", options->title, "Title above the sheet (wrapped to its width)");

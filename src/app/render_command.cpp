@@ -18,6 +18,7 @@
 #include "distribute/manifest.h"
 #include "distribute/pieces.h"
 #include "io/image.h"
+#include "io/output_directory.h"
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
@@ -42,19 +43,22 @@ struct RenderOptions {
 struct OutputPair {
   std::filesystem::path exr, png;
 
-  // Throws before any work for a name Columba cannot write.
+  // Throws before any work for a name Columba cannot write. Its directory may be missing if it
+  // can be made (makeDirectory makes it).
   static OutputPair fromPath(const std::string& path) {
     std::filesystem::path given = path;
-    ImageFormat format = checkOutputImagePath(given.string());
+    ImageFormat format = checkOutputImagePath(given.string(), true);
     OutputPair pair{given, given};
     if (format == ImageFormat::EXR)
       pair.png.replace_extension(".png");
     else
       pair.exr.replace_extension(".exr");
-    checkOutputImagePath(pair.exr.string());
-    checkOutputImagePath(pair.png.string());
+    checkOutputImagePath(pair.exr.string(), true);
+    checkOutputImagePath(pair.png.string(), true);
     return pair;
   }
+
+  void makeDirectory() const { makeOutputDirectory(exr.string(), directoryOf(exr.string())); }
 
   // Where an interrupted render goes, so that it never replaces a finished image: OUT.partial.exr.
   OutputPair partial() const { return {partialFileName(exr.string()), partialFileName(png.string())}; }
@@ -64,7 +68,13 @@ struct OutputPair {
 std::string defaultManifestPath(const RenderOptions& options) {
   namespace fs = std::filesystem;
   if (!options.scene.framesPattern.empty()) {
-    fs::path dir = fs::path(options.scene.framesPattern).parent_path();
+    // In the frames' directory, or where their directories part (before the first with a {NAME}
+    // or %03d in its name).
+    fs::path dir;
+    for (const fs::path& part : fs::path(options.scene.framesPattern).parent_path()) {
+      if (part.string().find_first_of("{%") != std::string::npos) break;
+      dir /= part;
+    }
     return (dir / "manifest.json").string();
   }
   fs::path out = options.output.empty() ? fs::path(defaultOutput(options.scene.scenePath)) : fs::path(options.output);
@@ -150,11 +160,12 @@ RenderPlan planRender(const RenderOptions& options) {
         "or --pass");
   for (const std::string& file : plan.frames.files) {
     plan.outputs.push_back(OutputPair::fromPath(file));
-    if (plan.piece()) checkOutputImagePath(pieceFileName(file, plan.part, plan.pass));
+    if (plan.piece()) checkOutputImagePath(pieceFileName(file, plan.part, plan.pass), true);
   }
   plan.sweeping = !plan.frames.axes.empty();
   plan.keepManifest = (plan.sweeping || !options.manifest.empty()) && options.frame.empty() && !plan.piece();
   plan.manifestPath = options.manifest.empty() ? defaultManifestPath(options) : options.manifest;
+  if (plan.keepManifest) checkOutputDirectory(plan.manifestPath, directoryOf(plan.manifestPath));
   return plan;
 }
 
@@ -268,6 +279,9 @@ FrameResult renderFrame(const RenderOptions& options, const RenderPlan& plan, si
                         InterruptionGuard& interruption, std::set<std::string>& warned) {
   const int f = plan.selected[i];
   const std::string label = frameLabel(plan.frames.frames[size_t(f)]);
+  // Frames are named by their index in the sweep (0-based, as in the manifest and --frame), and
+  // counted among those rendered here from 1: "frame 1 (2 of 3)".
+  const std::string which = fmt::format("frame {} ({} of {})", f, i + 1, plan.selected.size());
   if (plan.sweeping) fmt::print(stderr, "Frame {} ({} of {}): {}\n", f, i + 1, plan.selected.size(), label);
   Scene scene = loadFrame(options, plan, f, warned);
   const Film& film = scene.sensor().film();
@@ -283,8 +297,7 @@ FrameResult renderFrame(const RenderOptions& options, const RenderPlan& plan, si
              film.height(), cropText, settings.samplesPerPixel, pieceText, scene.shapeCount(), scene.primitiveCount());
 
   overall.done = int(i);
-  ProgressReporter progress(plan.sweeping ? fmt::format("frame {}/{}", i + 1, plan.selected.size()) : "render",
-                            plan.sweeping ? &overall : nullptr);
+  ProgressReporter progress(plan.sweeping ? which : "render", plan.sweeping ? &overall : nullptr);
   settings.onTileDone = [&](int done, int total) { progress.update(done, total); };
   settings.cancel = &interruption.requested();
   interruption.deferStops();
@@ -324,7 +337,11 @@ void recordFrame(Manifest& manifest, const RenderPlan& plan, int f, const FrameR
 int runRender(const RenderOptions& options) {
   const RenderPlan plan = planRender(options);
   setImageWriterThreads(plan.settings.threads);
+  // Every option checked: the missing directories of the manifest and of the frames rendered
+  // here are made (the manifest's first: a manifest it refuses to replace is in one that exists).
+  if (plan.keepManifest) makeOutputDirectory(plan.manifestPath, directoryOf(plan.manifestPath));
   Manifest manifest = plan.keepManifest ? startManifest(options, plan) : Manifest{};
+  for (int f : plan.selected) plan.outputs[size_t(f)].makeDirectory();
   // Kept until the last image is written. Stops are deferred from the start of each frame's render
   // to its image on disk: a signal while a scene loads ends the process at once, and a second
   // Ctrl-C while writing exits at once.
@@ -349,8 +366,8 @@ int runRender(const RenderOptions& options) {
     if (interruption.requested()) return 128 + interruption.signalNumber();
     if (several) {
       overall.done = int(i) + 1;
-      fmt::print(stderr, "Frame {} done in {}; {} of {} frames, {}\n", f, formatDuration(stats.seconds), i + 1,
-                 plan.selected.size(), overall.eta(0.0));
+      fmt::print(stderr, "Frame {} ({} of {}) done in {}; {}\n", f, i + 1, plan.selected.size(),
+                 formatDuration(stats.seconds), overall.eta(0.0));
     }
   }
   if (several)
@@ -366,8 +383,10 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("render", "Render a Mitsuba-style scene file (or the built-in scene) to EXR + PNG");
   addSceneOptions(cmd, options->scene);
-  cmd->add_option("-o,--output", options->output,
-                  "Output image, .exr or .png: the other of the two is written beside it (default: SCENE.exr)");
+  cmd->add_option(
+      "-o,--output", options->output,
+      "Output image, .exr or .png: the other of the two is written beside it, its directory made if missing "
+      "(default: SCENE.exr)");
   cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)");
   cmd->add_option("--frame", options->frame, "Render only this frame of the sweep (0-based, as in the manifest)");
   cmd->add_option("--part", options->part,

@@ -15,6 +15,7 @@
 #include "core/version.h"
 #include "distribute/manifest.h"
 #include "distribute/slurm.h"
+#include "io/output_directory.h"
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
@@ -195,6 +196,7 @@ SlurmPlan planSlurm(const SlurmOptions& options) {
         sp.frames.frames.size(), sp.frames.frames.size() == 1 ? "" : "s", sp.parts, sp.passes, sp.taskCount,
         kMostArrayTasks));
   checkSplit(options.scene, sp.frames, sp.spp, sp.parts, sp.passes);
+  checkOutputDirectory(sp.outDir.string(), sp.outDir.string());
   return sp;
 }
 
@@ -356,10 +358,10 @@ int runSlurm(const SlurmOptions& options) {
   const SlurmJob job = slurmJob(options, sp);
   // Written before anything is created, so that a value no script can hold is refused first.
   const std::string renderText = renderBatchScript(job), mergeText = mergeBatchScript(job);
-  fs::create_directories(sp.outDir);
-  for (const std::string& file : sp.frames.files) fs::create_directories(fs::path(file).parent_path());
-  for (const std::string& file : sp.pieces.files) fs::create_directories(fs::path(file).parent_path());
-  fs::create_directories(sp.logDir);
+  makeOutputDirectory(sp.outDir.string(), sp.outDir.string());
+  for (const std::string& file : sp.frames.files) makeOutputDirectory(file, directoryOf(file));
+  for (const std::string& file : sp.pieces.files) makeOutputDirectory(file, directoryOf(file));
+  makeOutputDirectory(sp.logDir.string(), sp.logDir.string());
   Manifest manifest = slurmManifest(options, sp);
   const std::string renderScript = (sp.outDir / "render.sbatch").string(),
                     mergeScript = (sp.outDir / "merge.sbatch").string();

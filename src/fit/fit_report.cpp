@@ -69,8 +69,9 @@ nlohmann::json fitRecord(const FitResult& result, const nlohmann::json& settings
 CsvTable historyTable(const FitResult& result) {
   CsvTable table;
   table.comments = {
-      "every evaluation of the loss in order; stage 0 start, 1 global (DIRECT), 2 local "
-      "(BOBYQA or Nelder-Mead), 3 loss profile; seconds since the fit began"};
+      fmt::format("every evaluation of the loss in order; stage 0 start, 1 global ({}), 2 local ({}), 3 loss profile; "
+                  "seconds since the fit began",
+                  result.globalAlgorithm, result.localAlgorithm)};
   table.columns = {"evaluation", "stage"};
   for (const FitParameter& p : result.parameters) table.columns.push_back(p.name);
   for (const char* c : {"loss", "scale", "best_loss", "seconds"}) table.columns.push_back(c);

@@ -48,6 +48,8 @@ FitResult runFit(const std::vector<FitParameter>& parameters, FitObjective objec
   result.profileEvaluations = int(log.history().size()) - result.evaluations;
   result.totalSeconds = log.seconds();
   result.history = log.history();
+  result.globalAlgorithm = settings.optimizer.globalAlgorithm;
+  result.localAlgorithm = localAlgorithm(parameters.size());
   return result;
 }
 

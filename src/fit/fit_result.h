@@ -19,6 +19,7 @@ struct FitResult {
   int profileEvaluations = 0;
   double totalSeconds = 0.0;  // with the profiles
   std::vector<Evaluation> history;
+  std::string globalAlgorithm, localAlgorithm;  // the NLopt algorithms of the two stages, as run
 };
 
 struct FitSettings {

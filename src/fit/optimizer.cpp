@@ -132,6 +132,8 @@ std::vector<std::vector<double>> distinctBest(const std::vector<Evaluation>& his
 
 }  // namespace
 
+std::string localAlgorithm(size_t parameterCount) { return parameterCount > 1 ? "LN_BOBYQA" : "LN_NELDERMEAD"; }
+
 void minimise(const std::vector<FitParameter>& parameters, const OptimizerSettings& settings, EvaluationLog& log) {
   UnitCube cube{parameters};
   std::vector<double> start;
@@ -145,8 +147,7 @@ void minimise(const std::vector<FitParameter>& parameters, const OptimizerSettin
                              "' is not a global derivative-free NLopt algorithm (GN_...)");
   runStage(global, "global", cube, cube.toUnit(start), globalEvaluations,
            settings.globalShare * settings.maxSeconds - log.seconds(), log);
-  // NLopt's BOBYQA needs two dimensions or more; one parameter gets Nelder-Mead.
-  const nlopt_algorithm local = parameters.size() > 1 ? NLOPT_LN_BOBYQA : NLOPT_LN_NELDERMEAD;
+  const nlopt_algorithm local = nlopt_algorithm_from_string(localAlgorithm(parameters.size()).c_str());
   // Interference makes the loss multimodal in the film thickness: the local stage starts from
   // the best few distinct basins the global stage found, each with an equal share of what is left.
   const std::vector<std::vector<double>> starts =

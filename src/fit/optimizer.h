@@ -1,8 +1,9 @@
 #pragma once
 // Bounded minimisation of an expensive, deterministic objective with NLopt: a global stage
-// (DIRECT, which needs no start and samples the whole box, so every interference order of the
-// film gets looked at) followed by local derivative-free searches (BOBYQA) from its best distinct
-// points, each within its share of a budget of evaluations and seconds.
+// (CRS2-LM by default, or DIRECT, ...: they need no start and sample the whole box, so every
+// interference order of the film gets looked at) followed by local derivative-free searches
+// (BOBYQA, or Nelder-Mead for one parameter) from its best distinct points, each within its
+// share of a budget of evaluations and seconds.
 #include <functional>
 #include <string>
 #include <vector>
@@ -53,6 +54,10 @@ class EvaluationLog {
   size_t bestIndex_ = 0;
   double startTime_;
 };
+
+// The local stage's NLopt algorithm for this many parameters: LN_BOBYQA, or LN_NELDERMEAD for one
+// (NLopt's BOBYQA needs two dimensions or more).
+std::string localAlgorithm(size_t parameterCount);
 
 // Evaluates the start point, then runs the two stages; the best evaluation is in log.best().
 void minimise(const std::vector<FitParameter>& parameters, const OptimizerSettings& settings, EvaluationLog& log);

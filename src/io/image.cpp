@@ -34,6 +34,7 @@
 #include "core/version.h"
 #include "io/compression_bounds.h"
 #include "io/declared_image_size.h"
+#include "io/output_directory.h"
 
 namespace columba {
 
@@ -192,11 +193,6 @@ class DirectoryLock {
   int fd_;
 };
 
-std::string directoryOf(const std::string& path) {
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  return dir.empty() ? "." : dir;
-}
-
 // Writes every file to a temporary file beside it, then renames all of them into place. If a
 // write fails, nothing is renamed; if a rename fails, the files already renamed get their old
 // contents back (kept as hard links, or copies, until the last rename). Temporary files never
@@ -330,7 +326,7 @@ void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, cons
                    {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, image, all); }}});
 }
 
-ImageFormat checkOutputImagePath(const std::string& path) {
+ImageFormat checkOutputImagePath(const std::string& path, bool directoryMayBeMade) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw std::runtime_error("cannot write '" + path + "': it is a directory");
@@ -342,7 +338,9 @@ ImageFormat checkOutputImagePath(const std::string& path) {
         "cannot write '" + path +
         "': " + (given.empty() ? "the name has no extension" : "'" + given + "' is not a format Columba writes") +
         " (use .exr or .png)");
-  if (!fs::is_directory(directoryOf(path), ec))
+  if (directoryMayBeMade)
+    checkOutputDirectory(path, directoryOf(path));
+  else if (!fs::is_directory(directoryOf(path), ec))
     throw std::runtime_error("cannot write '" + path + "': the directory '" + directoryOf(path) + "' does not exist");
   return extension == ".exr" ? ImageFormat::EXR : ImageFormat::PNG;
 }

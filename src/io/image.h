@@ -78,8 +78,9 @@ void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, cons
 enum class ImageFormat { EXR, PNG };
 // The format a path's extension names (".exr" or ".png", in any letter case). Throws
 // std::runtime_error naming the path for any other extension, for a path that is a directory
-// and for one whose directory does not exist: checked before work whose result it will hold.
-ImageFormat checkOutputImagePath(const std::string& path);
+// and for one whose directory does not exist (or, with `directoryMayBeMade`, cannot be made, as
+// checkOutputDirectory checks): checked before work whose result it will hold.
+ImageFormat checkOutputImagePath(const std::string& path, bool directoryMayBeMade = false);
 
 // A piece of a larger frame (a part of a split render): `image` holds the pixels of `window`,
 // which lies in a frame of frameWidth x frameHeight pixels. Float32 RGB and spectral bands, the

@@ -29,6 +29,7 @@ Image resizeImage(const Image& image, int width, int height) {
 Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
                        const std::string& title) {
   if (entries.empty() || columns < 1 || tileWidth < 8) throw std::invalid_argument("empty contact sheet");
+  columns = std::min(columns, int(entries.size()));  // fewer images than columns: no empty tiles
   const int margin = 12;
   int tileHeight = 0;
   for (const auto& e : entries)

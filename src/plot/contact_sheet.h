@@ -12,6 +12,7 @@ struct ContactSheetEntry {
 };
 
 // `tileWidth` pixels per tile; each image keeps its aspect ratio (area-averaged when shrunk).
+// Fewer images than `columns` make one row of as many tiles as there are images.
 Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
                        const std::string& title);
 

@@ -382,3 +382,100 @@ TEST_F(CliTest, MontageTakesOneLabelPerImageSlow) {
   EXPECT_NE(mismatch.status, 0);
   EXPECT_NE(mismatch.output.find("1 labels for 2 images"), std::string::npos) << mismatch.output;
 }
+
+// Every command that writes makes the directories its outputs go in, as `mkdir -p` does; a file
+// where a directory should be is still refused before any work, naming the path.
+TEST_F(CliTest, RenderMakesTheDirectoriesOfItsOutputs) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  CommandResult r = run("render " + scene + " -o " + (dir_ / "out/figures/x.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "out/figures/x.exr"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/figures/x.png"));
+  // Frames whose directories vary with the sweep; the manifest goes where they part.
+  CommandResult sweep =
+      run("render " + scene + " --sweep res=4,6 --frames '" + (dir_ / "frames/r{res}/img.exr").string() + "'");
+  ASSERT_EQ(sweep.status, 0) << sweep.output;
+  for (const char* res : {"4", "6"}) EXPECT_TRUE(fs::exists(dir_ / "frames" / ("r" + std::string(res)) / "img.exr"));
+  EXPECT_TRUE(fs::exists(dir_ / "frames/manifest.json"));
+  // A piece of a split render.
+  CommandResult part = run("render " + scene + " --part 1/2 -o " + (dir_ / "parts/p.exr").string());
+  ASSERT_EQ(part.status, 0) << part.output;
+  EXPECT_TRUE(fs::exists(dir_ / "parts/p.part1of2.exr"));
+  // A file in the way.
+  write("taken", "");
+  const std::string blocked = (dir_ / "taken/sub/x.exr").string();
+  CommandResult refused = run("render " + scene + " -o " + blocked);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("cannot write '" + blocked + "': '" + (dir_ / "taken").string() +
+                                "' is a file, not a directory"),
+            std::string::npos)
+      << refused.output;
+}
+
+TEST_F(CliTest, BsdfMakesItsOutputDirectory) {
+  const fs::path out = dir_ / "green/spectra";
+  CommandResult r = run("bsdf --mode specular --res 16 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "bsdf_specular.csv"));
+  EXPECT_TRUE(fs::exists(out / "bsdf.json"));
+  const std::string file = write("file", "");
+  CommandResult refused = run("bsdf --mode specular -o " + file);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("'" + file + "' is a file, not a directory"), std::string::npos) << refused.output;
+}
+
+TEST_F(CliTest, MontageMakesTheDirectoryOfItsSheet) {
+  columba::Image tile(4, 4);
+  const std::string a = (dir_ / "a.png").string();
+  columba::writePNG(a, tile);
+  const fs::path sheet = dir_ / "out/figures/sheet.png";
+  CommandResult r = run("montage -o " + sheet.string() + " " + a);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(sheet));
+  // Checked before the images are read.
+  CommandResult refused = run("montage -o " + (dir_ / "a.png/sheet.png").string() + " " + a);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("'" + a + "' is a file, not a directory"), std::string::npos) << refused.output;
+}
+
+TEST_F(CliTest, MontageOfFewerImagesThanColumnsIsOneRowWide) {
+  columba::Image tile(4, 4);
+  const std::string a = (dir_ / "a.png").string(), b = (dir_ / "b.png").string();
+  columba::writePNG(a, tile);
+  columba::writePNG(b, tile);
+  const std::string sheet = (dir_ / "sheet.png").string();
+  ASSERT_EQ(run("montage --tile 40 -o " + sheet + " " + a + " " + b).status, 0);
+  EXPECT_EQ(columba::readPNG(sheet).width, 12 + 2 * (40 + 12));  // 2 tiles, not the 4 columns
+}
+
+TEST_F(CliTest, MergeMakesTheDirectoryOfTheMergedImage) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  std::string pieces;
+  for (int k = 1; k <= 2; ++k) {
+    ASSERT_EQ(run("render " + scene + " --part " + std::to_string(k) + "/2 -o " + (dir_ / "p.exr").string()).status, 0);
+    pieces += " " + (dir_ / ("p.part" + std::to_string(k) + "of2.exr")).string();
+  }
+  const fs::path merged = dir_ / "merged/deep/m.exr";
+  CommandResult r = run("merge" + pieces + " -o " + merged.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(merged));
+  EXPECT_TRUE(fs::exists(dir_ / "merged/deep/m.png"));
+  // Still never over one of its pieces.
+  CommandResult over = run("merge" + pieces + " -o " + (dir_ / "p.part1of2.exr").string());
+  EXPECT_NE(over.status, 0);
+  EXPECT_NE(over.output.find("which the merge reads"), std::string::npos) << over.output;
+}
+
+TEST_F(CliTest, SlurmMakesItsOutputDirectory) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  const fs::path out = dir_ / "jobs/tiny";
+  CommandResult r = run("slurm " + scene + " --parts 2 --out-dir " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "manifest.json"));
+  EXPECT_TRUE(fs::is_directory(out / "parts"));
+  EXPECT_TRUE(fs::is_directory(out / "logs"));
+  const std::string file = write("file", "");
+  CommandResult refused = run("slurm " + scene + " --parts 2 --out-dir " + file + "/job");
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("'" + file + "' is a file, not a directory"), std::string::npos) << refused.output;
+}

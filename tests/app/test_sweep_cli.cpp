@@ -62,6 +62,10 @@ TEST_F(SweepCli, ASweepRendersOneFramePerValueAndWritesAManifest) {
   CommandResult r = run("render " + s + " --sweep angle=0:20:10 -o " + at("s.exr"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("Frame 1 (2 of 3): angle=10"), std::string::npos) << r.output;
+  // Progress and the line after the frame name it alike: by its index, then its count from 1.
+  EXPECT_NE(r.output.find("frame 1 (2 of 3): 100%"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Frame 1 (2 of 3) done in"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("frame 2/3"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Rendered 3 frames"), std::string::npos) << r.output;
   Manifest m = readManifest(at("s.manifest.json"));
   ASSERT_EQ(m.frames.size(), 3u);

@@ -296,6 +296,16 @@ TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
   EXPECT_EQ(record["evaluations"].get<int>(), r.fit.evaluations);
   CsvTable history = historyTable(r.fit);
   EXPECT_EQ(history.rows.size(), size_t(r.fit.evaluations + r.fit.profileEvaluations));
+  // The stages are named by the algorithms that ran: the default global one, and Nelder-Mead for
+  // one parameter.
+  ASSERT_EQ(history.comments.size(), 1u);
+  EXPECT_NE(history.comments[0].find("1 global (GN_CRS2_LM), 2 local (LN_NELDERMEAD)"), std::string::npos)
+      << history.comments[0];
+  s.fit.optimizer.globalAlgorithm = "GN_DIRECT_L";
+  s.fit.optimizer.maxEvaluations = 20;
+  s.parameters.push_back(parseFitParameter("H=1.0:2.0"));
+  const std::string direct = historyTable(fitSpectra(s).fit).comments.at(0);
+  EXPECT_NE(direct.find("1 global (GN_DIRECT_L), 2 local (LN_BOBYQA)"), std::string::npos) << direct;
   EXPECT_GT(profilesImage(r.fit).width, 0);
   EXPECT_GT(spectraImage(samples, r.model, r.fit.loss.scale).width, 0);
   Image target(16, 8);

@@ -23,6 +23,7 @@
 #include <vector>
 #include "core/error.h"
 #include "io/image.h"
+#include "io/output_directory.h"
 
 // A private copy of the PNG decoder, independent of the writer under test.
 #define STB_IMAGE_STATIC
@@ -413,6 +414,35 @@ TEST_F(ImageFiles, OutputPathsAreCheckedBeforeWork) {
       EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
     }
   }
+  // A directory that can be made is no error when the caller makes it; one under a file is.
+  EXPECT_EQ(checkOutputImagePath(path("missing/deeper/a.exr"), true), ImageFormat::EXR);
+  EXPECT_FALSE(fs::exists(path("missing")));
+  std::ofstream(path("file")) << "";
+  for (const std::string& bad : {path("file/a.exr"), path("file/sub/a.png"), path("a.jpg"), path("dir.exr")}) {
+    try {
+      checkOutputImagePath(bad, true);
+      ADD_FAILURE() << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(ImageFiles, OutputDirectoriesAreMadeWithTheirParents) {
+  makeOutputDirectory(path("a/b/c/x.exr"), path("a/b/c"));
+  EXPECT_TRUE(fs::is_directory(path("a/b/c")));
+  makeOutputDirectory(path("a/b/c/x.exr"), path("a/b/c"));  // already there
+  std::ofstream(path("a/file")) << "";
+  try {
+    makeOutputDirectory(path("a/file/d/x.exr"), path("a/file/d"));
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write '" + path("a/file/d/x.exr") + "': '" + path("a/file") + "' is a file, not a directory");
+  }
+  EXPECT_THROW(checkOutputDirectory(path("a/file"), path("a/file")), std::runtime_error);
+  EXPECT_EQ(directoryOf("x.exr"), ".");
+  EXPECT_EQ(directoryOf("out/x.exr"), "out");
 }
 
 TEST(SpectralImageFiles, BandsRoundTripThroughEXRWithTheirWavelengths) {

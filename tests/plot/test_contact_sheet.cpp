@@ -28,3 +28,11 @@ TEST(ContactSheet, TilesAreLaidOutInRowsWithTheirContent) {
   EXPECT_FLOAT_EQ(sheet.pixel(12 + 52 + 20, 12 + 10)[2], 1.0f);            // second tile: blue
   EXPECT_FLOAT_EQ(sheet.pixel(12 + 20, 12 + 40 + 28 + 12 + 20)[0], 1.0f);  // third tile, second row
 }
+
+TEST(ContactSheet, FewerImagesThanColumnsMakeARowOfTheirWidth) {
+  Image grey(10, 10);
+  Image two = makeContactSheet({{grey, "a"}, {grey, "b"}}, 4, 40, "");
+  EXPECT_EQ(two.width, 12 + 2 * (40 + 12));
+  Image four = makeContactSheet({{grey, "a"}, {grey, "b"}, {grey, "c"}, {grey, "d"}, {grey, "e"}}, 4, 40, "");
+  EXPECT_EQ(four.width, 12 + 4 * (40 + 12));
+}
