@@ -34,14 +34,20 @@ void setCommon(Settings& s, const std::vector<std::string>& vary, const std::str
 
 // The fields of fit.json, as a dict.
 py::dict resultDict(const FitResult& r) {
-  py::dict values, intervals;
+  py::dict values, intervals, solutions;
   for (size_t i = 0; i < r.parameters.size(); ++i) {
     values[py::str(r.parameters[i].name)] = r.values[i];
     intervals[py::str(r.parameters[i].name)] = py::make_tuple(r.profiles[i].lower, r.profiles[i].upper);
+    py::list found;
+    for (const ProfileSolution& s : r.profiles[i].solutions)
+      found.append(py::dict(py::arg("value") = s.value, py::arg("loss") = s.loss,
+                            py::arg("interval") = py::make_tuple(s.lower, s.upper)));
+    solutions[py::str(r.parameters[i].name)] = found;
   }
   py::dict d;
   d["values"] = values;
   d["intervals"] = intervals;
+  d["solutions"] = solutions;
   d["loss"] = r.loss.loss;
   d["scale"] = r.loss.scale;
   d["evaluations"] = r.evaluations;

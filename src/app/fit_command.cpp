@@ -64,6 +64,13 @@ void printSummary(const FitResult& r, const fs::path& dir) {
     const LossProfile& p = r.profiles[i];
     fmt::print("  {:>8} = {:<10.5g} [{:.5g}{}, {:.5g}{}]\n", r.parameters[i].name, r.values[i], p.lower,
                p.lowerAtBound ? " (bound)" : "", p.upper, p.upperAtBound ? " (bound)" : "");
+    if (p.solutions.size() > 1) {
+      std::string list;
+      for (const ProfileSolution& s : p.solutions)
+        list += fmt::format("{}{:.5g} [{:.5g}, {:.5g}] (loss {:.4g})", list.empty() ? "" : "; ", s.value, s.lower,
+                            s.upper, s.loss);
+      fmt::print("           the data admit {} solutions for {}: {}\n", p.solutions.size(), r.parameters[i].name, list);
+    }
   }
   fmt::print("-> {}\n", dir.string());
 }

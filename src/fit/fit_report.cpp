@@ -50,16 +50,21 @@ nlohmann::json fitRecord(const FitResult& result, const nlohmann::json& settings
   record["profile_evaluations"] = result.profileEvaluations;
   record["total_seconds"] = result.totalSeconds;
   record["uncertainty"] = fmt::format(
-      "1-D slice of the loss through the optimum (other parameters held at their fitted values): the interval "
-      "where the loss stays below (1 + {:g}) x its minimum; an end at a bound means the loss never rose that far",
+      "1-D slice of the loss through the optimum over each parameter's bounds (other parameters held at their "
+      "fitted values): every stretch where the loss stays below (1 + {:g}) x its minimum is a solution, and the "
+      "interval spans them all; an end at a bound means the loss never rose that far",
       result.profileRise);
   for (size_t i = 0; i < result.parameters.size(); ++i) {
     const FitParameter& p = result.parameters[i];
     const LossProfile& profile = result.profiles[i];
+    nlohmann::json solutions = nlohmann::json::array();
+    for (const ProfileSolution& s : profile.solutions)
+      solutions.push_back({{"value", s.value}, {"loss", s.loss}, {"interval", {s.lower, s.upper}}});
     record["parameters"].push_back({{"name", p.name},
                                     {"value", result.values[i]},
                                     {"interval", {profile.lower, profile.upper}},
                                     {"interval_reaches_bound", {profile.lowerAtBound, profile.upperAtBound}},
+                                    {"solutions", solutions},
                                     {"bounds", {p.lower, p.upper}},
                                     {"start", p.startValue()}});
   }

@@ -49,10 +49,17 @@ std::vector<LossProfile> profileLoss(const std::vector<FitParameter>& parameters
   std::vector<LossProfile> profiles(parameters.size());
   for (size_t i = 0; i < parameters.size(); ++i) {
     LossProfile& profile = profiles[i];
+    const FitParameter& p = parameters[i];
     profile.values.push_back(best[i]);
     profile.losses.push_back(minimum);
-    profile.lower = crossing(i, -1, parameters[i], best, threshold, log, profile, profile.lowerAtBound);
-    profile.upper = crossing(i, +1, parameters[i], best, threshold, log, profile, profile.upperAtBound);
+    double lower = crossing(i, -1, p, best, threshold, log, profile, profile.lowerAtBound);
+    double upper = crossing(i, +1, p, best, threshold, log, profile, profile.upperAtBound);
+    for (int k = 0; k < kProfileScanPoints; ++k) {
+      std::vector<double> x = best;
+      x[i] = p.lower + (p.upper - p.lower) * double(k) / double(kProfileScanPoints - 1);
+      profile.values.push_back(x[i]);
+      profile.losses.push_back(log.evaluate(x, "profile").loss);
+    }
     std::vector<size_t> order(profile.values.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return profile.values[a] < profile.values[b]; });
@@ -62,6 +69,31 @@ std::vector<LossProfile> profileLoss(const std::vector<FitParameter>& parameters
       sorted.losses[k] = profile.losses[order[k]];
     }
     profile = sorted;
+    // The stretches below the threshold; the optimum's keeps the bisected crossings, the others
+    // end halfway to the first value above it.
+    const std::vector<double>& v = profile.values;
+    const std::vector<double>& l = profile.losses;
+    for (size_t k = 0; k < v.size();) {
+      if (l[k] > threshold) {
+        ++k;
+        continue;
+      }
+      ProfileSolution s{v[k], l[k], k == 0 ? v[k] : 0.5 * (v[k - 1] + v[k]), 0.0};
+      size_t end = k;
+      for (; end < v.size() && l[end] <= threshold; ++end)
+        if (l[end] < s.loss) s.value = v[end], s.loss = l[end];
+      s.upper = end == v.size() ? v[end - 1] : 0.5 * (v[end - 1] + v[end]);
+      if (s.lower <= best[i] && best[i] <= s.upper) {
+        s.lower = std::min(s.lower, lower);
+        s.upper = std::max(s.upper, upper);
+      }
+      profile.solutions.push_back(s);
+      k = end;
+    }
+    profile.lower = profile.solutions.empty() ? lower : std::min(lower, profile.solutions.front().lower);
+    profile.upper = profile.solutions.empty() ? upper : std::max(upper, profile.solutions.back().upper);
+    profile.lowerAtBound = profile.lower <= p.lower;
+    profile.upperAtBound = profile.upper >= p.upper;
   }
   return profiles;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -275,6 +276,35 @@ TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
   ASSERT_EQ(samples.size(), 1u);
   EXPECT_EQ(samples[0].thetaI, 10.0f);
   EXPECT_EQ(samples[0].reflectance, 0.25f);
+}
+
+TEST(LossProfile, BothMinimaOfATwoMinimumLossAreReportedAndTheIntervalCoversBoth) {
+  // A loss with two equal dips, at 0.42 and 0.60 (as a film thickness whose interference orders
+  // the data cannot tell apart): whichever the optimiser finds, both are solutions.
+  auto loss = [](const std::vector<double>& x) {
+    const double d = std::min(std::abs(x[0] - 0.42), std::abs(x[0] - 0.60));
+    return LossValue{0.01 + d * d, 1.0};
+  };
+  FitSettings settings;
+  settings.optimizer.maxEvaluations = 60;
+  const FitResult r = runFit({parseFitParameter("height=0.4:0.8")}, loss, settings);
+  const LossProfile& p = r.profiles[0];
+  ASSERT_EQ(p.solutions.size(), 2u);
+  EXPECT_NEAR(p.solutions[0].value, 0.42, 0.02);
+  EXPECT_NEAR(p.solutions[1].value, 0.60, 0.02);
+  EXPECT_LT(p.lower, 0.42);
+  EXPECT_GT(p.upper, 0.60);
+  EXPECT_FALSE(p.upperAtBound);
+  // Each solution's own stretch: where 0.01 + d^2 < 1.1 x the optimum's loss, |d| < 0.032.
+  for (const ProfileSolution& s : p.solutions) {
+    EXPECT_LT(s.lower, s.value);
+    EXPECT_GT(s.upper, s.value);
+    EXPECT_NEAR(s.upper - s.lower, 2 * std::sqrt(0.1 * 0.01), 0.03);
+  }
+  // A single dip gives a single solution.
+  auto single = [](const std::vector<double>& x) { return LossValue{0.01 + (x[0] - 0.6) * (x[0] - 0.6), 1.0}; };
+  const FitResult one = runFit({parseFitParameter("height=0.4:0.8")}, single, settings);
+  EXPECT_EQ(one.profiles[0].solutions.size(), 1u);
 }
 
 TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
