@@ -99,15 +99,17 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
   return model;
 }
 
-BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values) {
+BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values,
+                                        std::optional<BarbuleParameterProblem>* implausible) {
   Properties props;
   props.tag = "bsdf";
   props.type = "barbulebsdf";
   props.nameParameter = [](const std::string& name) { return "barbule parameter " + name; };
   for (const auto& [name, value] : values) props.setFloat(name, value);
-  std::optional<BarbuleParameterProblem> implausible;  // a fit's trial values may well be
-  BarbuleParameters p = readBarbuleParameters(props, implausible);
+  std::optional<BarbuleParameterProblem> odd;
+  BarbuleParameters p = readBarbuleParameters(props, odd);
   props.checkAllUsed();
+  if (implausible) *implausible = odd;
   return p;
 }
 
@@ -116,6 +118,17 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   for (const auto& value : settings.fixed) fixedNames.push_back(value.first);
   checkFitSettings(settings.parameters, settings.fit, fixedNames);
   barbuleParametersWith(settings.fixed);  // refuses a bad -D before the first evaluation
+  // A bound the model takes but no barbule has (a thickness in nm where um is meant) is refused
+  // before any evaluation too.
+  for (const FitParameter& p : settings.parameters)
+    for (double bound : {p.lower, p.upper}) {
+      std::map<std::string, double> at = settings.fixed;
+      at[p.name] = bound;
+      std::optional<BarbuleParameterProblem> odd;
+      barbuleParametersWith(at, &odd);
+      if (odd && odd->parameter == p.name)
+        throw std::invalid_argument(fmt::format("{}={:g}:{:g}: {}", p.name, p.lower, p.upper, odd->message));
+    }
   std::vector<float> target;
   for (const SpectraSample& s : settings.samples) target.push_back(s.reflectance);
   ScaledLoss loss(std::move(target), {}, settings.loss, settings.scale);

@@ -3,8 +3,10 @@
 // rendering): the reflectance factor pi (f_R + f_TRT)(omega_i, omega_o), what `columba bsdf --mode
 // specular` reports in the mirror direction, at each measured pair of directions and wavelength.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
+
 #include "barbule/parameters.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
@@ -28,7 +30,9 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
 // The barbule's parameters with the named ones (b, phi_0, phi_1, mu, H, height, ..., as the scene
 // plug-in spells them) set and the rest at their defaults, read as the plug-in reads them
 // (barbule/parameter_reader.h); throws InputError for an unknown name or values it refuses.
-BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values);
+// Values it takes but that are probably a mistake go to `implausible` where given.
+BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values,
+                                        std::optional<BarbuleParameterProblem>* implausible = nullptr);
 
 struct SpectraFitSettings {
   std::vector<SpectraSample> samples;
@@ -44,7 +48,8 @@ struct SpectraFitResult {
   std::vector<float> model;  // modelSpectra at the fitted values, before scaling
 };
 
-// Throws std::invalid_argument for settings checkFitSettings refuses (`fixed` held fixed).
+// Throws std::invalid_argument for settings checkFitSettings refuses (`fixed` held fixed), and for
+// a varied parameter whose bounds are implausible (a film thickness of hundreds of um: nm given).
 SpectraFitResult fitSpectra(const SpectraFitSettings& settings);
 
 }  // namespace columba

@@ -267,6 +267,22 @@ TEST(FitSettings, WhatNoFitCanRunWithIsRefusedBeforeAnyEvaluation) {
 }
 
 // As spreadsheet programs save CSV: "the header has no column 'theta_i'".
+TEST(SpectraFit, AThicknessInNanometresIsRefusedNamingTheBounds) {
+  SpectraFitSettings s;
+  s.samples = {{20.0f, 0.0f, 20.0f, 180.0f, 500.0f, 0.1f}};
+  s.parameters = {parseFitParameter("height=400:600")};
+  try {
+    fitSpectra(s);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("height=400:600: a film"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("did you give nm?"), std::string::npos) << e.what();
+  }
+  s.parameters = {parseFitParameter("height=0.4:0.6")};
+  s.fit.optimizer.maxEvaluations = 20;
+  EXPECT_NO_THROW(fitSpectra(s));
+}
+
 TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
   const std::string path =
       (std::filesystem::temp_directory_path() / ("columba_bom_" + std::to_string(getpid()) + ".csv")).string();
