@@ -108,15 +108,7 @@ int runFitCommand(const FitOptions& o) {
   if (!o.spectraPath.empty()) {
     SpectraFitSettings s;
     s.samples = readSpectraCSV(o.spectraPath);
-    std::map<std::string, double> fixedValues;
-    for (const auto& [name, value] : defines) {
-      try {
-        fixedValues[name] = std::stod(value);
-      } catch (const std::exception&) {
-        throw std::runtime_error(fmt::format("-D {}={}: not a number", name, value));
-      }
-    }
-    s.fixed = fixedValues;
+    s.fixed = std::map<std::string, std::string>(defines.begin(), defines.end());
     s.parameters = parameters;
     s.loss = parseLossKind(o.loss);
     s.scale = parseScaleMode(o.scale);

@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -100,11 +101,20 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
 }
 
 BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values,
+                                        const std::map<std::string, std::string>& given,
                                         std::optional<BarbuleParameterProblem>* implausible) {
   Properties props;
   props.tag = "bsdf";
   props.type = "barbulebsdf";
   props.nameParameter = [](const std::string& name) { return "barbule parameter " + name; };
+  for (const auto& [name, text] : given) {
+    char* end = nullptr;
+    const double number = std::strtod(text.c_str(), &end);
+    if (!text.empty() && end == text.c_str() + text.size())
+      props.setFloat(name, number);
+    else
+      props.setString(name, text);  // a preset, a named index
+  }
   for (const auto& [name, value] : values) props.setFloat(name, value);
   std::optional<BarbuleParameterProblem> odd;
   BarbuleParameters p = readBarbuleParameters(props, odd);
@@ -117,15 +127,15 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   std::vector<std::string> fixedNames;
   for (const auto& value : settings.fixed) fixedNames.push_back(value.first);
   checkFitSettings(settings.parameters, settings.fit, fixedNames);
-  barbuleParametersWith(settings.fixed);  // refuses a bad -D before the first evaluation
+  barbuleParametersWith({}, settings.fixed);  // refuses a bad -D before the first evaluation
   // A bound the model takes but no barbule has (a thickness in nm where um is meant) is refused
   // before any evaluation too.
   for (const FitParameter& p : settings.parameters)
     for (double bound : {p.lower, p.upper}) {
-      std::map<std::string, double> at = settings.fixed;
-      at[p.name] = bound;
+      std::map<std::string, std::string> others = settings.fixed;
+      others.erase(p.name);
       std::optional<BarbuleParameterProblem> odd;
-      barbuleParametersWith(at, &odd);
+      barbuleParametersWith({{p.name, bound}}, others, &odd);
       if (odd && odd->parameter == p.name)
         throw std::invalid_argument(fmt::format("{}={:g}:{:g}: {}", p.name, p.lower, p.upper, odd->message));
     }
@@ -133,9 +143,9 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   for (const SpectraSample& s : settings.samples) target.push_back(s.reflectance);
   ScaledLoss loss(std::move(target), {}, settings.loss, settings.scale);
   auto parametersAt = [&](const std::vector<double>& values) {
-    std::map<std::string, double> named = settings.fixed;
+    std::map<std::string, double> named;
     for (size_t i = 0; i < values.size(); ++i) named[settings.parameters[i].name] = values[i];
-    return barbuleParametersWith(named);
+    return barbuleParametersWith(named, settings.fixed);
   };
   SpectraFitResult result;
   result.fit = runFit(

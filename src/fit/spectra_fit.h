@@ -29,14 +29,17 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
 
 // The barbule's parameters with the named ones (b, phi_0, phi_1, mu, H, height, ..., as the scene
 // plug-in spells them) set and the rest at their defaults, read as the plug-in reads them
-// (barbule/parameter_reader.h); throws InputError for an unknown name or values it refuses.
-// Values it takes but that are probably a mistake go to `implausible` where given.
+// (barbule/parameter_reader.h): `values` numbers, `given` texts as -D gives them (a number, or a
+// name: preset=dove-purple, film_ior=keratin). Throws InputError for an unknown name or values it
+// refuses; values it takes but that are probably a mistake go to `implausible` where given.
 BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values,
+                                        const std::map<std::string, std::string>& given = {},
                                         std::optional<BarbuleParameterProblem>* implausible = nullptr);
 
 struct SpectraFitSettings {
   std::vector<SpectraSample> samples;
-  std::map<std::string, double> fixed;  // the parameters held at a value (-D); the rest not fitted are defaults
+  std::map<std::string, std::string>
+      fixed;  // held at a value (-D: a number or a name); the rest not fitted are defaults
   std::vector<FitParameter> parameters;
   LossKind loss = LossKind::MSE;
   ScaleMode scale = ScaleMode::Free;

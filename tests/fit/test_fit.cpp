@@ -246,7 +246,7 @@ TEST(FitSettings, WhatNoFitCanRunWithIsRefusedBeforeAnyEvaluation) {
   contains(spectraError([](SpectraFitSettings& s) { s.fit.profileRise = -0.1; }), "rise must be positive");
   contains(spectraError([](SpectraFitSettings& s) { s.parameters.push_back(parseFitParameter("height=0.5:0.6")); }),
            "'height' is varied twice");
-  contains(spectraError([](SpectraFitSettings& s) { s.fixed["height"] = 0.5; }), "'height' is both held fixed");
+  contains(spectraError([](SpectraFitSettings& s) { s.fixed["height"] = "0.5"; }), "'height' is both held fixed");
   contains(spectraError([](SpectraFitSettings& s) { s.parameters.clear(); }), "at least one parameter");
 
   auto sceneError = [](auto change) {
@@ -281,6 +281,18 @@ TEST(SpectraFit, AThicknessInNanometresIsRefusedNamingTheBounds) {
   s.parameters = {parseFitParameter("height=0.4:0.6")};
   s.fit.optimizer.maxEvaluations = 20;
   EXPECT_NO_THROW(fitSpectra(s));
+}
+
+TEST(SpectraFit, HeldValuesMayBeNamesAsInAScene) {
+  // -D preset=dove-purple and -D film_ior=1.56 hold the barbule at a preset and an index.
+  const BarbuleParameters purple =
+      barbuleParametersWith({{"height", 0.55}}, {{"preset", "dove-purple"}, {"film_ior", "1.56"}});
+  const BarbuleParameters preset = *barbulePreset("dove-purple");
+  EXPECT_EQ(purple.b, preset.b);
+  EXPECT_EQ(purple.mu, preset.mu);
+  EXPECT_FLOAT_EQ(purple.height, 0.55f);
+  EXPECT_FLOAT_EQ(purple.filmIOR.a, 1.56f);
+  EXPECT_THROW(barbuleParametersWith({}, {{"preset", "dove-blue"}}), InputError);
 }
 
 TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
