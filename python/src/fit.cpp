@@ -103,9 +103,15 @@ py::dict modelDict(const std::vector<SpectraSample>& samples, const std::vector<
 
 py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary,
                         const std::string& scale, const std::string& loss, int maxEvaluations, double maxSeconds,
-                        double rise) {
+                        double rise, const std::vector<float>& thetaI, float phiI, const std::string& geometry) {
+  SpectraGeometry where;
+  where.thetaI = thetaI;
+  where.phiI = phiI;
+  if (geometry != "mirror" && geometry != "normal")
+    throw py::value_error("geometry must be 'mirror' or 'normal', not '" + geometry + "'");
+  where.view = geometry == "normal" ? SpectraGeometry::View::Normal : SpectraGeometry::View::Mirror;
   SpectraFitSettings s;
-  s.samples = readSpectraCSV(spectra.string());
+  s.samples = readSpectraCSV(spectra.string(), where);
   setCommon(s, vary, scale, loss, maxEvaluations, maxSeconds, rise);
   SpectraFitResult result;
   {
@@ -128,8 +134,10 @@ void bindFit(py::module_& m) {
         "of 'NAME=LO:HI[:START]'. Returns a dict: values, intervals, loss, scale, evaluations, seconds, render.");
   m.def("fit_spectra", &fitSpectraFile, py::arg("spectra"), py::arg("vary"), py::arg("scale") = "free",
         py::arg("loss") = "mse", py::arg("max_evals") = 300, py::arg("max_seconds") = 120.0, py::arg("rise") = 0.1,
+        py::arg("theta_i") = std::vector<float>{}, py::arg("phi_i") = 0.0f, py::arg("geometry") = "mirror",
         "Fit barbule parameters (b, phi_0, phi_1, mu, H, height) to a CSV of measured reflectance spectra, as "
-        "`columba fit --spectra` does. Returns a dict: values, intervals, loss, scale, evaluations, model (a dict "
+        "`columba fit --spectra` does (theta_i, phi_i, geometry: where spectra without directions were measured). "
+        "Returns a dict: values, intervals, loss, scale, evaluations, model (a dict "
         "of arrays, one entry a sample: theta_i, phi_i, theta_o, phi_o, wavelength_nm, reflectance of the model "
         "before scaling, measured).");
 }

@@ -77,3 +77,17 @@ def test_fit_spectra_returns_the_model_with_its_wavelengths_and_directions(tmp_p
     np.testing.assert_allclose(model["measured"], np.tile(measured, 2), rtol=1e-5)
     residual = r["scale"] * model["reflectance"].astype(np.float64) - model["measured"]
     assert np.mean(residual ** 2) == pytest.approx(r["loss"], rel=1e-4)
+
+
+def test_fit_spectra_reads_a_two_column_spectrum_with_its_geometry_given():
+    import pathlib
+
+    example = pathlib.Path(__file__).resolve().parents[2] / "examples" / "two_column_spectrum.csv"
+    r = columba.fit_spectra(str(example), ["height=0.4:0.8"], theta_i=[20.0])
+    assert r["values"]["height"] == pytest.approx(0.55, abs=0.002)
+    assert set(r["model"]["theta_o"]) == {20.0} and set(r["model"]["phi_o"]) == {180.0}
+    assert len(r["solutions"]["height"]) >= 1
+    with pytest.raises(ValueError, match="without directions"):
+        columba.fit_spectra(str(example), ["height=0.4:0.8"])
+    with pytest.raises(ValueError, match="geometry must be"):
+        columba.fit_spectra(str(example), ["height=0.4:0.8"], theta_i=[20.0], geometry="side")

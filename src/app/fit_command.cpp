@@ -26,6 +26,8 @@ struct FitOptions {
   double maxSeconds = 120.0;
   double rise = 0.1;
   std::string global = "GN_CRS2_LM";
+  SpectraGeometry geometry;  // of spectra without directions
+  std::string view = "mirror";
 };
 
 Defines parseDefines(const std::vector<std::string>& items) {
@@ -107,7 +109,9 @@ int runFitCommand(const FitOptions& o) {
   FitResult result;
   if (!o.spectraPath.empty()) {
     SpectraFitSettings s;
-    s.samples = readSpectraCSV(o.spectraPath);
+    SpectraGeometry geometry = o.geometry;
+    geometry.view = o.view == "normal" ? SpectraGeometry::View::Normal : SpectraGeometry::View::Mirror;
+    s.samples = readSpectraCSV(o.spectraPath, geometry);
     s.fixed = std::map<std::string, std::string>(defines.begin(), defines.end());
     s.parameters = parameters;
     s.loss = parseLossKind(o.loss);
@@ -169,9 +173,22 @@ void addFitCommand(CLI::App& app) {
                   "Fix a scene variable (or barbule parameter with --spectra): -D name=value")
       ->allow_extra_args(false);
   cmd->add_option("--mask", o->maskPath, "PNG of the target's size: only pixels brighter than half count");
-  cmd->add_option("--spectra", o->spectraPath,
-                  "Fit barbule parameters to spectra: CSV with theta_i, phi_i, theta_o, phi_o (deg), wavelength_nm, "
-                  "reflectance (factor pi f)");
+  cmd->add_option(
+      "--spectra", o->spectraPath,
+      "Fit barbule parameters to spectra (reflectance factor pi f): CSV with theta_i, phi_i, theta_o, phi_o "
+      "(deg), wavelength_nm, reflectance; or a wavelength column (wl, wavelength_nm, ...) and a column per "
+      "spectrum, as pavo and columba bsdf --mode specular write them");
+  cmd->add_option("--theta-i", o->geometry.thetaI,
+                  "With --spectra: the light's polar angle (deg) of spectra without directions, one or one per column")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 89.9));
+  cmd->add_option("--phi-i", o->geometry.phiI,
+                  "With --spectra: the light's azimuth (deg; default 0, across the barbules)");
+  cmd->add_option(
+         "--geometry", o->view,
+         "With --spectra: where spectra without directions were seen: mirror (theta_i, phi_i + 180; default) or "
+         "normal (along the vane normal)")
+      ->check(CLI::IsMember({"mirror", "normal"}));
   cmd->add_option("--spp", o->spp, "Samples per pixel of every render (default: the scene's sampler)")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--seed", o->seed, "Random seed, the same for every render (common random numbers)");

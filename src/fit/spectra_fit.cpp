@@ -20,64 +20,11 @@ namespace columba {
 
 namespace {
 
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) {
-    size_t first = field.find_first_not_of(" \t\r"), last = field.find_last_not_of(" \t\r");
-    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
-  }
-  return fields;
-}
-
 bool sameDirections(const SpectraSample& a, const SpectraSample& b) {
   return a.thetaI == b.thetaI && a.phiI == b.phiI && a.thetaO == b.thetaO && a.phiO == b.phiO;
 }
 
 }  // namespace
-
-std::vector<SpectraSample> readSpectraCSV(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path, 0}, "cannot open the spectra file");
-  skipByteOrderMark(in);
-  static const std::array<const char*, 6> names = {"theta_i", "phi_i",         "theta_o",
-                                                   "phi_o",   "wavelength_nm", "reflectance"};
-  std::array<size_t, 6> column{};
-  bool haveHeader = false;
-  std::vector<SpectraSample> samples;
-  std::string line;
-  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
-    std::vector<std::string> fields = splitFields(line);
-    if (!haveHeader) {
-      for (size_t k = 0; k < names.size(); ++k) {
-        auto it = std::find(fields.begin(), fields.end(), names[k]);
-        if (it == fields.end())
-          throw InputError({path, lineNo}, fmt::format("the header has no column '{}' (it needs theta_i, phi_i, "
-                                                       "theta_o, phi_o, wavelength_nm, reflectance)",
-                                                       names[k]));
-        column[k] = size_t(it - fields.begin());
-      }
-      haveHeader = true;
-      continue;
-    }
-    std::array<float, 6> v{};
-    for (size_t k = 0; k < names.size(); ++k) {
-      const std::string text = column[k] < fields.size() ? fields[column[k]] : "";
-      auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v[k]);
-      if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v[k]))
-        throw InputError({path, lineNo}, fmt::format("{} '{}' is not a number", names[k], text));
-    }
-    if (v[4] < 360.0f || v[4] > 830.0f)
-      throw InputError({path, lineNo}, fmt::format("wavelength_nm {} lies outside 360..830 nm", v[4]));
-    if (v[0] < 0.0f || v[0] >= 90.0f || v[2] < 0.0f || v[2] >= 90.0f)
-      throw InputError({path, lineNo},
-                       fmt::format("theta_i {} and theta_o {} must lie in [0, 90) degrees", v[0], v[2]));
-    samples.push_back({v[0], v[1], v[2], v[3], v[4], v[5]});
-  }
-  if (samples.empty()) throw InputError({path, 0}, "the spectra file has no data rows");
-  return samples;
-}
 
 std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples) {
   const BarbuleModel barbule(parameters);

@@ -10,19 +10,9 @@
 #include "barbule/parameters.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
+#include "fit/spectra_table.h"
 
 namespace columba {
-
-// One row of a spectra file: directions in degrees (theta from the vane normal, phi from the
-// axis across the barbules), the wavelength in nm and the reflectance factor.
-struct SpectraSample {
-  float thetaI = 0, phiI = 0, thetaO = 0, phiO = 0, wavelength = 0, reflectance = 0;
-};
-
-// A CSV with a header naming the columns theta_i, phi_i, theta_o, phi_o, wavelength_nm and
-// reflectance (in any order, others ignored); '#' lines are comments. Throws InputError naming
-// the file, line and value for anything it cannot read.
-std::vector<SpectraSample> readSpectraCSV(const std::string& path);
 
 // The model's reflectance factor at each sample's directions and wavelength.
 std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples);

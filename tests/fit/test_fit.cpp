@@ -266,7 +266,6 @@ TEST(FitSettings, WhatNoFitCanRunWithIsRefusedBeforeAnyEvaluation) {
   contains(sceneError([](SceneFitSettings& s) { s.defines["height"] = "0.5"; }), "'height' is both held fixed");
 }
 
-// As spreadsheet programs save CSV: "the header has no column 'theta_i'".
 TEST(SpectraFit, AThicknessInNanometresIsRefusedNamingTheBounds) {
   SpectraFitSettings s;
   s.samples = {{20.0f, 0.0f, 20.0f, 180.0f, 500.0f, 0.1f}};
@@ -295,6 +294,7 @@ TEST(SpectraFit, HeldValuesMayBeNamesAsInAScene) {
   EXPECT_THROW(barbuleParametersWith({}, {{"preset", "dove-blue"}}), InputError);
 }
 
+// As spreadsheet programs save CSV: "the header has no column 'theta_i'".
 TEST(SpectraFit, TheCSVMayStartWithAByteOrderMark) {
   const std::string path =
       (std::filesystem::temp_directory_path() / ("columba_bom_" + std::to_string(getpid()) + ".csv")).string();
