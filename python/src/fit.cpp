@@ -103,7 +103,8 @@ py::dict modelDict(const std::vector<SpectraSample>& samples, const std::vector<
 
 py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<std::string>& vary,
                         const std::string& scale, const std::string& loss, int maxEvaluations, double maxSeconds,
-                        double rise, const std::vector<float>& thetaI, float phiI, const std::string& geometry) {
+                        double rise, const std::vector<float>& thetaI, float phiI, const std::string& geometry,
+                        float aperture) {
   SpectraGeometry where;
   where.thetaI = thetaI;
   where.phiI = phiI;
@@ -112,6 +113,7 @@ py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<
   where.view = geometry == "normal" ? SpectraGeometry::View::Normal : SpectraGeometry::View::Mirror;
   SpectraFitSettings s;
   s.samples = readSpectraCSV(spectra.string(), where);
+  s.aperture.halfAngleDeg = aperture;
   setCommon(s, vary, scale, loss, maxEvaluations, maxSeconds, rise);
   SpectraFitResult result;
   {
@@ -135,8 +137,10 @@ void bindFit(py::module_& m) {
   m.def("fit_spectra", &fitSpectraFile, py::arg("spectra"), py::arg("vary"), py::arg("scale") = "free",
         py::arg("loss") = "mse", py::arg("max_evals") = 300, py::arg("max_seconds") = 120.0, py::arg("rise") = 0.1,
         py::arg("theta_i") = std::vector<float>{}, py::arg("phi_i") = 0.0f, py::arg("geometry") = "mirror",
+        py::arg("aperture") = 0.0f,
         "Fit barbule parameters (b, phi_0, phi_1, mu, H, height) to a CSV of measured reflectance spectra, as "
-        "`columba fit --spectra` does (theta_i, phi_i, geometry: where spectra without directions were measured). "
+        "`columba fit --spectra` does (theta_i, phi_i, geometry: where spectra without directions were measured; "
+        "aperture: the instrument's half-angle in degrees). "
         "Returns a dict: values, intervals, loss, scale, evaluations, model (a dict "
         "of arrays, one entry a sample: theta_i, phi_i, theta_o, phi_o, wavelength_nm, reflectance of the model "
         "before scaling, measured).");

@@ -27,6 +27,7 @@ struct FitOptions {
   double rise = 0.1;
   std::string global = "GN_CRS2_LM";
   SpectraGeometry geometry;  // of spectra without directions
+  float aperture = 0.0f;     // the instrument's half-angle, degrees
   std::string view = "mirror";
 };
 
@@ -113,6 +114,7 @@ int runFitCommand(const FitOptions& o) {
     geometry.view = o.view == "normal" ? SpectraGeometry::View::Normal : SpectraGeometry::View::Mirror;
     s.samples = readSpectraCSV(o.spectraPath, geometry);
     s.fixed = std::map<std::string, std::string>(defines.begin(), defines.end());
+    s.aperture.halfAngleDeg = o.aperture;
     s.parameters = parameters;
     s.loss = parseLossKind(o.loss);
     s.scale = parseScaleMode(o.scale);
@@ -182,6 +184,9 @@ void addFitCommand(CLI::App& app) {
                   "With --spectra: the light's polar angle (deg) of spectra without directions, one or one per column")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.9));
+  cmd->add_option("--aperture", o->aperture,
+                  "With --spectra: the instrument's half-angle (deg; numerical aperture = its sine): the model is "
+                  "averaged over the illumination and collection cones (default 0, a point measurement)");
   cmd->add_option("--phi-i", o->geometry.phiI,
                   "With --spectra: the light's azimuth (deg; default 0, across the barbules)");
   cmd->add_option(

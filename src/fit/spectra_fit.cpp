@@ -26,7 +26,8 @@ bool sameDirections(const SpectraSample& a, const SpectraSample& b) {
 
 }  // namespace
 
-std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples) {
+std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples,
+                                const InstrumentAperture& aperture) {
   const BarbuleModel barbule(parameters);
   std::vector<float> model(samples.size());
   // Consecutive rows with the same directions share one evaluation per kSpectrumSamples wavelengths.
@@ -40,8 +41,22 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
     for (size_t k = 0; k < lambdas.size(); ++k) lambdas[k] = samples[first + std::min(k, count - 1)].wavelength;
     const Vec3 wi = directionFromAngles(degToRad(s.thetaI), degToRad(s.phiI));
     const Vec3 wo = directionFromAngles(degToRad(s.thetaO), degToRad(s.phiO));
-    BarbuleLobes lobes = barbule.lobes(wi, wo, Wavelengths::fixed(lambdas));
-    for (size_t k = 0; k < count; ++k) model[first + k] = kPi * (lobes.reflection[int(k)] + lobes.trt[int(k)]);
+    const Wavelengths wl = Wavelengths::fixed(lambdas);
+    if (aperture.isPoint()) {
+      BarbuleLobes lobes = barbule.lobes(wi, wo, wl);
+      for (size_t k = 0; k < count; ++k) model[first + k] = kPi * (lobes.reflection[int(k)] + lobes.trt[int(k)]);
+    } else {
+      // The average over the illumination and the collection cones.
+      std::array<double, kSpectrumSamples> sum{};
+      const std::vector<ConeDirection> ins = coneDirections(wi, aperture), outs = coneDirections(wo, aperture);
+      for (const ConeDirection& in : ins)
+        for (const ConeDirection& out : outs) {
+          BarbuleLobes lobes = barbule.lobes(in.w, out.w, wl);
+          for (size_t k = 0; k < count; ++k)
+            sum[k] += in.weight * out.weight * double(lobes.reflection[int(k)] + lobes.trt[int(k)]);
+        }
+      for (size_t k = 0; k < count; ++k) model[first + k] = float(kPi * sum[k]);
+    }
     first += count;
   }
   return model;
@@ -74,6 +89,9 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   std::vector<std::string> fixedNames;
   for (const auto& value : settings.fixed) fixedNames.push_back(value.first);
   checkFitSettings(settings.parameters, settings.fit, fixedNames);
+  if (!(settings.aperture.halfAngleDeg >= 0.0f && settings.aperture.halfAngleDeg < 45.0f))
+    throw std::invalid_argument(
+        fmt::format("the aperture's half-angle must lie in [0, 45) degrees, not {:g}", settings.aperture.halfAngleDeg));
   barbuleParametersWith({}, settings.fixed);  // refuses a bad -D before the first evaluation
   // A bound the model takes but no barbule has (a thickness in nm where um is meant) is refused
   // before any evaluation too.
@@ -97,9 +115,11 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   SpectraFitResult result;
   result.fit = runFit(
       settings.parameters,
-      [&](const std::vector<double>& values) { return loss(modelSpectra(parametersAt(values), settings.samples)); },
+      [&](const std::vector<double>& values) {
+        return loss(modelSpectra(parametersAt(values), settings.samples, settings.aperture));
+      },
       settings.fit);
-  result.model = modelSpectra(parametersAt(result.fit.values), settings.samples);
+  result.model = modelSpectra(parametersAt(result.fit.values), settings.samples, settings.aperture);
   return result;
 }
 

@@ -8,14 +8,17 @@
 #include <vector>
 
 #include "barbule/parameters.h"
+#include "fit/aperture.h"
 #include "fit/fit_result.h"
 #include "fit/scaled_loss.h"
 #include "fit/spectra_table.h"
 
 namespace columba {
 
-// The model's reflectance factor at each sample's directions and wavelength.
-std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples);
+// The model's reflectance factor at each sample's directions and wavelength, averaged over the
+// instrument's aperture where it has one.
+std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples,
+                                const InstrumentAperture& aperture = {});
 
 // The barbule's parameters with the named ones (b, phi_0, phi_1, mu, H, height, ..., as the scene
 // plug-in spells them) set and the rest at their defaults, read as the plug-in reads them
@@ -28,8 +31,9 @@ BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& val
 
 struct SpectraFitSettings {
   std::vector<SpectraSample> samples;
-  std::map<std::string, std::string>
-      fixed;  // held at a value (-D: a number or a name); the rest not fitted are defaults
+  InstrumentAperture aperture;  // of the instrument that measured them
+  // Held at a value (-D: a number or a name); the rest not fitted are defaults.
+  std::map<std::string, std::string> fixed;
   std::vector<FitParameter> parameters;
   LossKind loss = LossKind::MSE;
   ScaleMode scale = ScaleMode::Free;
