@@ -6,7 +6,8 @@ packages=("$@")
 [ ${#packages[@]} -gt 0 ] || packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
           libopenexr-dev libpng-dev libstb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfmt-dev libtinyobjloader-dev libnlopt-dev zlib1g-dev clang-format
-          python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev mkdocs)
+          python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev mkdocs libcairo2-dev
+          fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

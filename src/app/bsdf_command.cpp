@@ -69,9 +69,14 @@ Vec3 lightDirection(const BSDFOptions& o, float thetaDeg) {
 
 std::string angleTag(float thetaDeg) { return fmt::format("theta{:g}", thetaDeg); }
 
+// The plot as PNG, and as SVG and PDF beside it for papers.
 void writePlot(const fs::path& path, const LinePlot& plot, std::vector<std::string>& written) {
-  writePNG(path.string(), renderLinePlot(plot, 1000, 640));
-  written.push_back(path.string());
+  for (const char* extension : {".png", ".svg", ".pdf"}) {
+    fs::path file = path;
+    file.replace_extension(extension);
+    writeLinePlot(file.string(), plot, 1000, 640);
+    written.push_back(file.string());
+  }
 }
 
 void writeTable(const fs::path& path, const CsvTable& table, std::vector<std::string>& written) {

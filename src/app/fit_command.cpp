@@ -124,7 +124,9 @@ int runFitCommand(const FitOptions& o) {
     SpectraFitResult fitted = fitSpectra(s);
     result = fitted.fit;
     settings["spectra"] = o.spectraPath;
-    writePNG((dir / "spectra.png").string(), spectraImage(s.samples, fitted.model, result.loss.scale));
+    const LinePlot spectra = spectraPlot(s.samples, fitted.model, result.loss.scale);
+    for (const char* extension : {".png", ".svg", ".pdf"})
+      writeLinePlot((dir / (std::string("spectra") + extension)).string(), spectra, 1000, 640);
   } else {
     if (o.targetPath.empty()) throw std::runtime_error("--target MEASURED.exr is needed to fit a scene");
     if (!fs::is_regular_file(o.scenePath))

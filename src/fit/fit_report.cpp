@@ -191,9 +191,9 @@ Image compareImage(const Image& target, const Image& render, double scale, const
   return canvas.image();
 }
 
-Image spectraImage(const std::vector<SpectraSample>& samples, const std::vector<float>& model, double scale) {
+LinePlot spectraPlot(const std::vector<SpectraSample>& samples, const std::vector<float>& model, double scale) {
   LinePlot plot;
-  plot.title = "Reflectance spectra: measured (dashed) and fitted (solid)";
+  plot.title = "Reflectance spectra: measured (points) and fitted (lines)";
   plot.subtitle = fmt::format("reflectance factor pi f | fitted scale {:.4g}", scale);
   plot.xLabel = "wavelength (nm)";
   plot.yLabel = "reflectance factor";
@@ -205,8 +205,8 @@ Image spectraImage(const std::vector<SpectraSample>& samples, const std::vector<
         s.thetaO != samples[i - 1].thetaO || s.phiO != samples[i - 1].phiO) {
       const Vec3 colour = seriesColours()[measured.size() % seriesColours().size()];
       const std::string label = fmt::format("in {:g}/{:g}, out {:g}/{:g} deg", s.thetaI, s.phiI, s.thetaO, s.phiO);
-      measured.push_back({label + " measured", {}, colour, true});
-      fitted.push_back({label + " fitted", {}, colour, false});
+      measured.push_back({label + " measured", {}, colour, false, true});
+      fitted.push_back({label + " fitted", {}, colour, false, false});
     }
     const float fit = float(scale) * model[i];
     measured.back().points.push_back(Vec2(s.wavelength, s.reflectance));
@@ -222,7 +222,7 @@ Image spectraImage(const std::vector<SpectraSample>& samples, const std::vector<
     plot.series.push_back(measured[k]);
     plot.series.push_back(fitted[k]);
   }
-  return renderLinePlot(plot, 1000, 640);
+  return plot;
 }
 
 }  // namespace columba

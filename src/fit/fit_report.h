@@ -11,6 +11,7 @@
 #include "fit/spectra_fit.h"
 #include "io/data_files.h"
 #include "io/image.h"
+#include "plot/line_plot.h"
 
 namespace columba {
 
@@ -22,8 +23,8 @@ Image profilesImage(const FitResult& result);
 // Target, the render times `scale`, and their signed difference (mean of RGB) in a blue-white-red
 // map with its colour bar; pixels outside the mask are grey in the difference.
 Image compareImage(const Image& target, const Image& render, double scale, const std::optional<Image>& mask);
-// Measured (dashed) and fitted (solid) reflectance against wavelength, one colour per pair of
+// Measured (markers) and fitted (lines) reflectance against wavelength, one colour per pair of
 // directions.
-Image spectraImage(const std::vector<SpectraSample>& samples, const std::vector<float>& model, double scale);
+LinePlot spectraPlot(const std::vector<SpectraSample>& samples, const std::vector<float>& model, double scale);
 
 }  // namespace columba

@@ -1,85 +1,202 @@
 #include "plot/canvas.h"
 
-// The header defines every helper as a static function; the canvas uses two of them.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#include <stb_easy_font.h>
-#pragma GCC diagnostic pop
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
 
 #include <algorithm>
-#include <vector>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/math.h"
 
 namespace columba {
 
 namespace {
-struct FontVertex {
-  float x, y, z;
-  unsigned char colour[4];
-};
+
+constexpr const char* kFont = "DejaVu Sans";
+
+double fontSize(int scale) { return 6.5 * scale; }
+
+// Cairo draws in encoded sRGB.
+double encoded(float linear) { return double(toSRGB8(linear)) / 255.0; }
+
+void setColour(cairo_t* cr, const Vec3& c) { cairo_set_source_rgb(cr, encoded(c.x), encoded(c.y), encoded(c.z)); }
+
+void setFont(cairo_t* cr, int scale) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         scale >= 3 ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, fontSize(scale));
+}
+
+// A context on a small image surface, for measuring text outside any canvas.
+cairo_t* measuringContext() {
+  thread_local struct Scratch {
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+    cairo_t* cr = cairo_create(surface);
+    ~Scratch() {
+      cairo_destroy(cr);
+      cairo_surface_destroy(surface);
+    }
+  } scratch;
+  return scratch.cr;
+}
+
 }  // namespace
 
 Vec3 srgbColour(float r, float g, float b) { return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)}; }
 
-Canvas::Canvas(int width, int height, const Vec3& background) : image_(width, height) {
+Canvas::Canvas(int width, int height, const Vec3& background) {
+  surface_ = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  cr_ = cairo_create(surface_);
   fillRect(0, 0, float(width), float(height), background);
 }
 
-void Canvas::drawImage(int x0, int y0, const Image& image) {
-  for (int y = std::max(0, -y0); y < image.height && y0 + y < image_.height; ++y)
-    for (int x = std::max(0, -x0); x < image.width && x0 + x < image_.width; ++x)
-      std::copy_n(image.pixel(x, y), 3, image_.pixel(x0 + x, y0 + y));
+Canvas::Canvas(const std::string& path, int width, int height, const Vec3& background) : path_(path) {
+  const std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+  if (extension == ".svg")
+    surface_ = cairo_svg_surface_create(path.c_str(), width, height);
+  else if (extension == ".pdf")
+    surface_ = cairo_pdf_surface_create(path.c_str(), width, height);
+  else
+    throw std::runtime_error("cannot write a chart as '" + path + "': give .png, .svg or .pdf");
+  if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(surface_);
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+  cr_ = cairo_create(surface_);
+  fillRect(0, 0, float(width), float(height), background);
 }
 
-void Canvas::blend(int x, int y, const Vec3& colour, float coverage) {
-  if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0.0f) return;
-  float* p = image_.pixel(x, y);
-  coverage = std::min(coverage, 1.0f);
-  for (int c = 0; c < 3; ++c) p[c] = p[c] * (1.0f - coverage) + colour[c] * coverage;
+Canvas::~Canvas() {
+  cairo_destroy(cr_);
+  cairo_surface_destroy(surface_);
+}
+
+void Canvas::drawImage(int x0, int y0, const Image& image) {
+  cairo_surface_t* picture = cairo_image_surface_create(CAIRO_FORMAT_RGB24, image.width, image.height);
+  cairo_surface_flush(picture);
+  unsigned char* data = cairo_image_surface_get_data(picture);
+  const int stride = cairo_image_surface_get_stride(picture);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float* p = image.pixel(x, y);
+      uint32_t rgb = uint32_t(toSRGB8(p[0])) << 16 | uint32_t(toSRGB8(p[1])) << 8 | uint32_t(toSRGB8(p[2]));
+      reinterpret_cast<uint32_t*>(data + size_t(y) * size_t(stride))[x] = rgb;
+    }
+  cairo_surface_mark_dirty(picture);
+  cairo_save(cr_);
+  cairo_set_source_surface(cr_, picture, x0, y0);
+  cairo_pattern_set_filter(cairo_get_source(cr_), CAIRO_FILTER_NEAREST);
+  cairo_rectangle(cr_, x0, y0, image.width, image.height);
+  cairo_fill(cr_);
+  cairo_restore(cr_);
+  cairo_surface_destroy(picture);
 }
 
 void Canvas::fillRect(float x0, float y0, float x1, float y1, const Vec3& colour) {
-  for (int y = std::max(0, int(std::floor(y0))); y < std::min(image_.height, int(std::ceil(y1))); ++y)
-    for (int x = std::max(0, int(std::floor(x0))); x < std::min(image_.width, int(std::ceil(x1))); ++x) {
-      // Pixel coverage of the rectangle, so fractional edges are smooth.
-      float cx = std::min(x1, float(x + 1)) - std::max(x0, float(x));
-      float cy = std::min(y1, float(y + 1)) - std::max(y0, float(y));
-      blend(x, y, colour, cx * cy);
-    }
+  setColour(cr_, colour);
+  cairo_rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
+  cairo_fill(cr_);
 }
 
-void Canvas::line(Vec2 a, Vec2 b, const Vec3& colour, float thickness) {
-  // Coverage from the distance of each pixel centre to the segment (anti-aliased).
-  float half = 0.5f * thickness;
-  int x0 = int(std::floor(std::min(a.x, b.x) - half - 1)), x1 = int(std::ceil(std::max(a.x, b.x) + half + 1));
-  int y0 = int(std::floor(std::min(a.y, b.y) - half - 1)), y1 = int(std::ceil(std::max(a.y, b.y) + half + 1));
-  Vec2 d = b - a;
-  float len2 = d.x * d.x + d.y * d.y;
-  for (int y = std::max(y0, 0); y <= std::min(y1, image_.height - 1); ++y)
-    for (int x = std::max(x0, 0); x <= std::min(x1, image_.width - 1); ++x) {
-      Vec2 p(x + 0.5f, y + 0.5f);
-      float t = len2 > 0 ? clampf(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0f, 1.0f) : 0.0f;
-      Vec2 q = a + d * t;
-      float dist = std::sqrt((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y));
-      blend(x, y, colour, clampf(half + 0.5f - dist, 0.0f, 1.0f));
-    }
+void Canvas::line(Vec2 a, Vec2 b, const Vec3& colour, float thickness, bool dashed) {
+  cairo_save(cr_);
+  setColour(cr_, colour);
+  cairo_set_line_width(cr_, thickness);
+  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+  if (dashed) {
+    const double pattern[] = {6.0, 4.0};
+    cairo_set_dash(cr_, pattern, 2, 0.0);
+  }
+  cairo_move_to(cr_, a.x, a.y);
+  cairo_line_to(cr_, b.x, b.y);
+  cairo_stroke(cr_);
+  cairo_restore(cr_);
+}
+
+void Canvas::polyline(const std::vector<Vec2>& points, const Vec3& colour, float thickness, bool dashed,
+                      const std::array<float, 4>& clip) {
+  if (points.size() < 2) return;
+  cairo_save(cr_);
+  cairo_rectangle(cr_, clip[0], clip[1], clip[2] - clip[0], clip[3] - clip[1]);
+  cairo_clip(cr_);
+  setColour(cr_, colour);
+  cairo_set_line_width(cr_, thickness);
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  if (dashed) {
+    const double pattern[] = {9.0, 6.0};
+    cairo_set_dash(cr_, pattern, 2, 0.0);
+  }
+  cairo_move_to(cr_, points[0].x, points[0].y);
+  for (size_t i = 1; i < points.size(); ++i) cairo_line_to(cr_, points[i].x, points[i].y);
+  cairo_stroke(cr_);
+  cairo_restore(cr_);
+}
+
+void Canvas::marker(Vec2 centre, float radius, const Vec3& colour) {
+  cairo_save(cr_);
+  cairo_new_path(cr_);  // no line from where the last text or path ended
+  cairo_arc(cr_, centre.x, centre.y, radius, 0.0, 2.0 * kPi);
+  setColour(cr_, colour);
+  cairo_fill_preserve(cr_);
+  setColour(cr_, colour * 0.35f);
+  cairo_set_line_width(cr_, 1.0);
+  cairo_stroke(cr_);
+  cairo_restore(cr_);
 }
 
 void Canvas::text(float x, float y, const std::string& s, const Vec3& colour, int scale) {
-  std::vector<FontVertex> buffer(4 * 64 * std::max<size_t>(s.size(), 1));
-  std::string copy = s;
-  int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size() * sizeof(FontVertex)));
-  for (int q = 0; q < quads; ++q) {
-    const FontVertex* v = &buffer[size_t(q) * 4];
-    fillRect(x + v[0].x * scale, y + v[0].y * scale, x + v[2].x * scale, y + v[2].y * scale, colour);
-  }
+  cairo_save(cr_);
+  setColour(cr_, colour);
+  setFont(cr_, scale);
+  cairo_font_extents_t font;
+  cairo_font_extents(cr_, &font);
+  cairo_move_to(cr_, x, y + font.ascent);  // from the top-left corner to the baseline
+  cairo_show_text(cr_, s.c_str());
+  cairo_new_path(cr_);
+  cairo_restore(cr_);
 }
 
 float Canvas::textWidth(const std::string& s, int scale) {
-  std::string copy = s;
-  return float(stb_easy_font_width(copy.data()) * scale);
+  cairo_t* cr = measuringContext();
+  setFont(cr, scale);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, s.c_str(), &extents);
+  return float(extents.x_advance);
 }
 
-float Canvas::textHeight(int scale) { return 7.0f * scale; }
+float Canvas::textHeight(int scale) {
+  cairo_t* cr = measuringContext();
+  setFont(cr, scale);
+  cairo_font_extents_t font;
+  cairo_font_extents(cr, &font);
+  return float(font.ascent + font.descent);
+}
+
+Image Canvas::image() const {
+  cairo_surface_flush(surface_);
+  const int width = cairo_image_surface_get_width(surface_), height = cairo_image_surface_get_height(surface_);
+  const unsigned char* data = cairo_image_surface_get_data(surface_);
+  const int stride = cairo_image_surface_get_stride(surface_);
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const uint32_t rgb = reinterpret_cast<const uint32_t*>(data + size_t(y) * size_t(stride))[x];
+      float* p = image.pixel(x, y);
+      p[0] = srgbToLinear(float((rgb >> 16) & 0xff) / 255.0f);
+      p[1] = srgbToLinear(float((rgb >> 8) & 0xff) / 255.0f);
+      p[2] = srgbToLinear(float(rgb & 0xff) / 255.0f);
+    }
+  return image;
+}
+
+void Canvas::finish() {
+  cairo_show_page(cr_);
+  cairo_surface_finish(surface_);
+  if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error("cannot write '" + path_ + "': " + cairo_status_to_string(cairo_surface_status(surface_)));
+}
 
 std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale) {
   // Pieces end after a " | " separator (kept at the line's end, trimmed) or, failing that, a space.

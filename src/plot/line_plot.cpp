@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 
 #include "plot/canvas.h"
 
@@ -24,9 +25,10 @@ std::vector<float> niceTicks(float lo, float hi, int target) {
   return ticks;
 }
 
-Image renderLinePlot(const LinePlot& plot, int width, int height) {
-  const Vec3 white(1, 1, 1), black(0, 0, 0), grid = srgbColour(0.88f, 0.88f, 0.88f);
-  Canvas canvas(width, height, white);
+namespace {
+
+void drawLinePlot(Canvas& canvas, const LinePlot& plot, int width, int height) {
+  const Vec3 black(0, 0, 0), grid = srgbColour(0.88f, 0.88f, 0.88f);
   const std::vector<std::string> subtitle = wrapText(plot.subtitle, float(width) - 40, 2);
   const float lineHeight = Canvas::textHeight(2) + 6;
   // The legend stands right of the chart, so it never covers a curve.
@@ -62,28 +64,46 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
     canvas.text(0.5f * (width - Canvas::textWidth(subtitle[i])), 10 + Canvas::textHeight(3) + 8 + lineHeight * i,
                 subtitle[i], black);
 
-  for (const PlotSeries& s : plot.series)
-    for (size_t i = 1; i < s.points.size(); ++i) {
-      if (s.dashed && i % 4 >= 2) continue;
-      Vec2 a = toPixel(s.points[i - 1]), b = toPixel(s.points[i]);
-      if (a.y < top - 1 && b.y < top - 1) continue;  // off the chart
-      a.y = clampf(a.y, top, bottom);
-      b.y = clampf(b.y, top, bottom);
-      canvas.line(a, b, s.colour, 2.5f);
+  const std::array<float, 4> area = {left, top, right, bottom};
+  for (const PlotSeries& s : plot.series) {
+    std::vector<Vec2> pixels;
+    for (const Vec2& p : s.points) pixels.push_back(toPixel(p));
+    if (s.markers) {
+      for (const Vec2& p : pixels)
+        if (p.x >= left && p.x <= right && p.y >= top && p.y <= bottom) canvas.marker(p, 3.5f, s.colour);
+    } else {
+      canvas.polyline(pixels, s.colour, 2.5f, s.dashed, area);
     }
+  }
 
   float lx = right + 20, ly = top;
+  const float mid = 0.5f * Canvas::textHeight();
   for (const PlotSeries& s : plot.series) {
-    if (s.dashed) {
-      canvas.line(Vec2(lx, ly + 7), Vec2(lx + 11, ly + 7), s.colour, 2.5f);
-      canvas.line(Vec2(lx + 19, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
-    } else {
-      canvas.line(Vec2(lx, ly + 7), Vec2(lx + 30, ly + 7), s.colour, 2.5f);
-    }
+    if (s.markers)
+      canvas.marker(Vec2(lx + 15, ly + mid), 3.5f, s.colour);
+    else
+      canvas.line(Vec2(lx, ly + mid), Vec2(lx + 30, ly + mid), s.colour, 2.5f, s.dashed);
     canvas.text(lx + 38, ly, s.label, black);
     ly += 22;
   }
+}
+
+}  // namespace
+
+Image renderLinePlot(const LinePlot& plot, int width, int height) {
+  Canvas canvas(width, height, srgbColour(1, 1, 1));
+  drawLinePlot(canvas, plot, width, height);
   return canvas.image();
+}
+
+void writeLinePlot(const std::string& path, const LinePlot& plot, int width, int height) {
+  if (path.size() >= 4 && path.substr(path.size() - 4) == ".png") {
+    writePNG(path, renderLinePlot(plot, width, height));
+    return;
+  }
+  Canvas canvas(path, width, height, srgbColour(1, 1, 1));
+  drawLinePlot(canvas, plot, width, height);
+  canvas.finish();
 }
 
 }  // namespace columba

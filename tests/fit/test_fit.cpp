@@ -365,7 +365,7 @@ TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
   const std::string direct = historyTable(fitSpectra(s).fit).comments.at(0);
   EXPECT_NE(direct.find("1 global (GN_DIRECT_L), 2 local (LN_BOBYQA)"), std::string::npos) << direct;
   EXPECT_GT(profilesImage(r.fit).width, 0);
-  EXPECT_GT(spectraImage(samples, r.model, r.fit.loss.scale).width, 0);
+  EXPECT_GT(renderLinePlot(spectraPlot(samples, r.model, r.fit.loss.scale), 1000, 640).width, 0);
   Image target(16, 8);
   target.rgb.assign(target.rgb.size(), 1.0f);
   Image compare = compareImage(target, target, 0.5, std::nullopt);

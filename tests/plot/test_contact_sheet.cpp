@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "plot/canvas.h"
 #include "plot/contact_sheet.h"
 
 using namespace columba;
@@ -20,13 +21,15 @@ TEST(ContactSheet, TilesAreLaidOutInRowsWithTheirContent) {
   Image red(10, 10), blue(20, 10);
   for (size_t i = 0; i < red.rgb.size(); i += 3) red.rgb[i] = 1.0f;
   for (size_t i = 2; i < blue.rgb.size(); i += 3) blue.rgb[i] = 1.0f;
-  Image sheet = makeContactSheet({{red, "red"}, {blue, "blue"}, {red, "red again"}}, 2, 40, "");
+  Image sheet = makeContactSheet({{red, "r"}, {blue, "b"}, {red, "r2"}}, 2, 40, "");  // one-line labels
   // Two columns of 40-pixel tiles with 12-pixel margins; tiles are 40 high (the tallest).
   EXPECT_EQ(sheet.width, 12 + 2 * (40 + 12));
   EXPECT_GT(sheet.height, 2 * 40);
-  EXPECT_FLOAT_EQ(sheet.pixel(12 + 20, 12 + 20)[0], 1.0f);                 // first tile: red
-  EXPECT_FLOAT_EQ(sheet.pixel(12 + 52 + 20, 12 + 10)[2], 1.0f);            // second tile: blue
-  EXPECT_FLOAT_EQ(sheet.pixel(12 + 20, 12 + 40 + 28 + 12 + 20)[0], 1.0f);  // third tile, second row
+  EXPECT_FLOAT_EQ(sheet.pixel(12 + 20, 12 + 20)[0], 1.0f);       // first tile: red
+  EXPECT_FLOAT_EQ(sheet.pixel(12 + 52 + 20, 12 + 10)[2], 1.0f);  // second tile: blue
+  // Third tile, second row: below the first row's tiles and their one-line labels.
+  const int labels = 12 + int(Canvas::textHeight(2)) + 4;
+  EXPECT_FLOAT_EQ(sheet.pixel(12 + 20, 12 + 40 + labels + 12 + 20)[0], 1.0f);
 }
 
 TEST(ContactSheet, FewerImagesThanColumnsMakeARowOfTheirWidth) {

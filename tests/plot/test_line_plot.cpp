@@ -1,5 +1,12 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <pugixml.hpp>
+
+#include "io/image.h"
 #include "plot/canvas.h"
 #include "plot/line_plot.h"
 
@@ -48,4 +55,31 @@ TEST(Canvas, TextMarksPixels) {
   for (float v : c.image().rgb) dark += v < 0.5f;
   EXPECT_GT(dark, 30);
   EXPECT_GT(Canvas::textWidth("Hello"), Canvas::textWidth("Hi"));
+}
+
+TEST(LinePlot, IsWrittenAsPngSvgAndPdf) {
+  LinePlot plot;
+  plot.title = "Reflectance";
+  plot.xLabel = "wavelength (nm)";
+  plot.series = {{"measured", {{0.2f, 0.3f}, {0.5f, 0.6f}}, Vec3(1, 0, 0), false, true},
+                 {"fitted", {{0.0f, 0.1f}, {1.0f, 0.9f}}, Vec3(0, 0, 1)}};
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("columba_plot_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* extension : {".png", ".svg", ".pdf"})
+    writeLinePlot((dir / (std::string("plot") + extension)).string(), plot, 500, 320);
+  const Image png = readPNG((dir / "plot.png").string());
+  EXPECT_EQ(png.width, 500);
+  EXPECT_EQ(png.height, 320);
+  pugi::xml_document svg;
+  ASSERT_TRUE(svg.load_file((dir / "plot.svg").c_str()));
+  EXPECT_STREQ(svg.document_element().name(), "svg");
+  EXPECT_STREQ(svg.document_element().attribute("width").value(), "500pt");
+  std::ifstream in(dir / "plot.pdf", std::ios::binary);
+  const std::string pdf((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  EXPECT_NE(pdf.find("%%EOF"), std::string::npos);
+  EXPECT_NE(pdf.find("DejaVuSans"), std::string::npos);  // its text set in an embedded font, not drawn as pixels
+  EXPECT_THROW(writeLinePlot((dir / "plot.gif").string(), plot, 500, 320), std::runtime_error);
+  std::filesystem::remove_all(dir);
 }
