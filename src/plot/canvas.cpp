@@ -3,9 +3,11 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/math.h"
@@ -23,7 +25,21 @@ double encoded(float linear) { return double(toSRGB8(linear)) / 255.0; }
 
 void setColour(cairo_t* cr, const Vec3& c) { cairo_set_source_rgb(cr, encoded(c.x), encoded(c.y), encoded(c.z)); }
 
+// Cairo's and fontconfig's caches, released at exit once fonts were used, so that leak checkers
+// see only the program's own memory.
+void releaseFontCachesAtExit() {
+  static const bool registered = [] {
+    std::atexit([] {
+      cairo_debug_reset_static_data();
+      FcFini();
+    });
+    return true;
+  }();
+  (void)registered;
+}
+
 void setFont(cairo_t* cr, int scale) {
+  releaseFontCachesAtExit();
   cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
                          scale >= 3 ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, fontSize(scale));
