@@ -1,5 +1,7 @@
 #include "barbule/parameters.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <utility>
 #include "core/math.h"
@@ -75,7 +77,7 @@ std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
 std::optional<BarbuleParameterProblem> findImplausibility(const BarbuleParameters& p) {
   // Keratin cortices of iridescent barbules are a few hundred nanometres thick.
   if (p.height > 5.0f)
-    return BarbuleParameterProblem{"height", "a film " + std::to_string(p.height) +
+    return BarbuleParameterProblem{"height", "a film " + fmt::format("{:g}", p.height) +
                                                  " um thick is implausible for a barbule cortex (did you give nm? "
                                                  "the unit is micrometres)"};
   return std::nullopt;
