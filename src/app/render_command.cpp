@@ -36,6 +36,7 @@ struct RenderOptions {
   std::string manifest;      // --manifest FILE
   bool adaptive = false;     // --adaptive
   double targetError = 0.0;  // --target-error E (0: none)
+  float exposure = 0.0f;     // --exposure EV: the PNG's only
 };
 
 // The EXR and PNG a render writes. -o names one of them; the other is written beside it, so the
@@ -111,6 +112,7 @@ std::string frameLabel(const SweepFrame& frame) {
 struct RenderPlan {
   RenderSettings settings;  // from the options; each frame adds its sample count and piece
   bool spectral = false;
+  float exposure = 0.0f;  // of the PNG, stops
   std::optional<PieceIndex> part, pass;
   FramePlan frames;
   std::vector<int> selected;        // the frames to render (all, or --frame's)
@@ -146,6 +148,7 @@ RenderPlan planRender(const RenderOptions& options) {
   settings.threads = parseCount("--threads", options.threads, 1, kMaxRenderThreads);
   const int bins = parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
   plan.spectral = options.scene.spectral;
+  plan.exposure = options.exposure;
   if (plan.spectral) settings.spectralBins = bins;
   if (!options.part.empty()) plan.part = parsePieceIndex("--part", options.part, 65536);
   if (!options.pass.empty()) plan.pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
@@ -265,7 +268,7 @@ std::string writeFrame(const RenderPlan& plan, int f, const Scene& scene, const 
     return written;
   }
   const OutputPair pair = stats.complete ? output : output.partial();
-  writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata);
+  writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata, plan.exposure);
   return pair.exr.string() + ", " + pair.png.string();
 }
 
@@ -398,6 +401,10 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_flag("--adaptive", options->adaptive,
                 "Adaptive sampling: --spp becomes the mean budget per pixel; after a pilot of a quarter of it (2 to "
                 "16), each pixel gets samples in proportion to how much its neighbours' samples vary");
+  cmd->add_option("--exposure", options->exposure,
+                  "Brighten (or, negative, darken) the PNG by this many stops; the EXR keeps the linear values "
+                  "(default 0)")
+      ->check(CLI::Range(-20.0, 20.0));
   cmd->add_option("--target-error", options->targetError,
                   "Adaptive sampling that stops at the budget its plan predicts for this relative RMSE (e.g. 0.02), "
                   "at most --spp per pixel on average");

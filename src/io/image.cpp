@@ -319,11 +319,18 @@ void writePNG(const std::string& path, const Image& image, const ImageMetadata& 
 }
 
 void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
-                    const ImageMetadata& metadata) {
+                    const ImageMetadata& metadata, float pngExposure) {
   checkImage(exrPath, image);
   const ImageMetadata all = withSoftware(metadata);
+  Image exposed;
+  if (pngExposure != 0.0f) {
+    exposed = image;
+    const float scale = std::exp2(pngExposure);
+    for (float& v : exposed.rgb) v *= scale;
+  }
+  const Image& preview = pngExposure != 0.0f ? exposed : image;
   replaceTogether({{exrPath, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }},
-                   {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, image, all); }}});
+                   {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, preview, all); }}});
 }
 
 ImageFormat checkOutputImagePath(const std::string& path, bool directoryMayBeMade) {

@@ -72,8 +72,9 @@ void writePNG(const std::string& path, const Image& image, const ImageMetadata& 
 // files, then renamed into place; if a rename fails, the file already replaced is put back.
 // Writers of the same pair in other processes wait for each other's renames (a lock on the
 // directory), so the pair never mixes two writers' images.
+// `pngExposure` (stops) brightens or darkens the PNG only: the EXR keeps the linear values.
 void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
-                    const ImageMetadata& metadata = {});
+                    const ImageMetadata& metadata = {}, float pngExposure = 0.0f);
 
 enum class ImageFormat { EXR, PNG };
 // The format a path's extension names (".exr" or ".png", in any letter case). Throws

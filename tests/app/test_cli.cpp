@@ -44,6 +44,24 @@ TEST_F(CliTest, RenderWritesExrAndPngBesideIt) {
   EXPECT_TRUE(fs::exists(dir_ / "img.png"));
 }
 
+TEST_F(CliTest, ExposureBrightensThePngAndLeavesTheExrLinear) {
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " -o " + (dir_ / "plain.exr").string()).status, 0);
+  CommandResult r = run("render " + scene + " --exposure 1 -o " + (dir_ / "bright.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(columba::readEXR((dir_ / "plain.exr").string()).rgb, columba::readEXR((dir_ / "bright.exr").string()).rgb);
+  // One stop up doubles the PNG's linear values (to its white at most); the EXR's stay.
+  const columba::Image exr = columba::readEXR((dir_ / "plain.exr").string());
+  const columba::Image plain = columba::readPNG((dir_ / "plain.png").string());
+  const columba::Image bright = columba::readPNG((dir_ / "bright.png").string());
+  for (int c = 0; c < 3; ++c) {
+    const float linear = exr.pixel(4, 4)[c];
+    EXPECT_NEAR(plain.pixel(4, 4)[c], linear, 0.01f) << c;
+    EXPECT_NEAR(bright.pixel(4, 4)[c], std::min(1.0f, 2.0f * linear), 0.01f) << c;
+  }
+  EXPECT_NE(run("render " + scene + " --exposure 30 -o " + (dir_ / "x.exr").string()).status, 0);
+}
+
 TEST_F(CliTest, MalformedScenesFailWithFileLineAndValueSlow) {
   struct Case {
     const char* name;
