@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/spectrum.h"
 #include "vision/colour_distance.h"
 #include "vision/observer.h"
 #include "vision/quantum_catch.h"
@@ -94,15 +95,19 @@ std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArr
     throw py::value_error(std::string(what) + " must cover " + std::to_string(int(std::floor(lo))) + "-" +
                           std::to_string(int(std::ceil(hi))) + " nm, where observer '" + observer.name +
                           "' is sensitive; it covers " + std::to_string(w[0]) + "-" + std::to_string(w[n - 1]) + " nm");
-  std::vector<std::vector<float>> out(size_t(spectra), std::vector<float>(observer.grid.count, 0.0f));
+  // Each spectrum piecewise linear through its samples (core/spectrum.h), read on the grid where
+  // it was measured; no cone is sensitive elsewhere.
+  const std::vector<float> lambdas(w, w + n);
   const double* v = values.data();
-  for (size_t g = 0; g < observer.grid.count; ++g) {
-    const double x = observer.grid.wavelength(g);
-    if (x < w[0] || x > w[n - 1]) continue;  // where no cone is sensitive
-    const py::ssize_t j = std::min<py::ssize_t>(n - 2, std::upper_bound(w, w + n, x) - w - 1);
-    const double t = (x - w[j]) / (w[j + 1] - w[j]);
-    for (py::ssize_t k = 0; k < spectra; ++k)
-      out[size_t(k)][g] = float(v[j * spectra + k] * (1.0 - t) + v[(j + 1) * spectra + k] * t);
+  std::vector<std::vector<float>> out(size_t(spectra), std::vector<float>(observer.grid.count, 0.0f));
+  for (py::ssize_t k = 0; k < spectra; ++k) {
+    std::vector<float> measured(static_cast<size_t>(n));
+    for (py::ssize_t i = 0; i < n; ++i) measured[size_t(i)] = float(v[i * spectra + k]);
+    const SpectralDistribution spectrum = SpectralDistribution::piecewiseLinear(lambdas, measured);
+    for (size_t g = 0; g < observer.grid.count; ++g) {
+      const double x = observer.grid.wavelength(g);
+      if (x >= w[0] && x <= w[n - 1]) out[size_t(k)][g] = spectrum.eval(float(x));
+    }
   }
   return out;
 }

@@ -134,11 +134,17 @@ std::vector<Vec3> featherOutline() {
 RockDovePlumage layOutRockDove(const RockDoveBody& body, const RockDoveOptions& options) {
   const std::vector<Vec3> outline = featherOutline();
   RockDovePlumage plumage;
-  const float smallest = 0.55f * 0.22f * options.featherScale;
+  const std::vector<BodyPart>& parts = body.parts();
+  // The grid's cells as small as the least distance between bases on any part.
+  float smallest = INFINITY;
+  for (const BodyPart& part : parts)
+    if (part.plumage != Plumage::None) {
+      const PartFeathers f = featheringOf(part);
+      smallest = std::min(smallest, f.spacing * f.length * options.featherScale);
+    }
   BaseGrid grid(smallest);
   PCG32 colourRng(options.seed, 0x636f6c6fULL);
   const float wobblePhase = 2.0f * kPi * colourRng.nextFloat();
-  const std::vector<BodyPart>& parts = body.parts();
   for (size_t index = 0; index < parts.size(); ++index) {
     const BodyPart& part = parts[index];
     if (part.plumage == Plumage::None) continue;
