@@ -210,19 +210,25 @@ void Properties::set(const std::string& name, Value value) {
 }
 
 void Properties::setFloat(const std::string& name, double value) {
-  Value v{Kind::Float, location};
+  Value v;
+  v.kind = Kind::Float;
+  v.location = location;
   v.number = value;
   set(name, std::move(v));
 }
 
 void Properties::setString(const std::string& name, const std::string& value) {
-  Value v{Kind::String, location};
+  Value v;
+  v.kind = Kind::String;
+  v.location = location;
   v.text = value;
   set(name, std::move(v));
 }
 
 void Properties::setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest) {
-  Value v{Kind::Spectrum, location};
+  Value v;
+  v.kind = Kind::Spectrum;
+  v.location = location;
   v.spectrum = value;
   v.lowest = lowest;
   set(name, std::move(v));
