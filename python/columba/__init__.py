@@ -46,7 +46,7 @@ except ImportError as _error:
 from . import _columba  # noqa: E402
 
 __all__ = [
-    "load_file", "load_string", "load_default", "render", "write_image", "read_image",
+    "load_file", "load_string", "load_default", "render", "write_image", "read_image", "read_cones",
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
@@ -144,6 +144,13 @@ def read_image(path, spectral=False):
     spectral=True returns (rgb, wavelength bin centres or None, H x W x K bands or None)."""
     rgb, centres, bands = _columba._read_image(_os.fspath(path))
     return (rgb, centres, bands) if spectral else rgb
+
+
+def read_cones(path):
+    """The cone catches an .exr image records (a render whose film has a bird's observer) as a dict
+    of H x W float32 arrays named after the cones (UVS or VS, SWS, MWS, LWS, DBL); empty for
+    images without them."""
+    return _columba._read_cones(_os.fspath(path))
 
 
 def thin_film(theta_deg, wavelength, thickness, film_ior="keratin", n_outside=1.000277, substrate_ior=None):

@@ -241,6 +241,22 @@ PYBIND11_MODULE(_columba, m) {
         return py::make_tuple(imageArray(std::move(image)), centres, bands);
       },
       py::arg("path"));
+  m.def(
+      "_read_cones",
+      [](const std::string& path) {
+        const Image image = readImageFile(path);
+        py::dict cones;
+        const size_t k = image.cones.count();
+        for (size_t c = 0; c < k; ++c) {
+          py::array_t<float> plane({py::ssize_t(image.height), py::ssize_t(image.width)});
+          float* out = plane.mutable_data();
+          for (size_t p = 0; p < size_t(image.width) * size_t(image.height); ++p)
+            out[p] = image.cones.values[p * k + c];
+          cones[py::str(image.cones.names[c])] = plane;
+        }
+        return cones;
+      },
+      py::arg("path"));
   m.def("to_srgb", py::vectorize(toSRGB8), py::arg("linear"),
         "The 8-bit sRGB encoding of linear values (uint8), as PNGs are written");
   m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"),

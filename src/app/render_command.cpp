@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "samplers/sampler_parameters.h"
 #include "scene/scene.h"
+#include "vision/observer_response.h"
 
 namespace columba {
 
@@ -229,6 +230,7 @@ PieceInfo framePiece(const RenderPlan& plan, int f, const Scene& scene, const st
         "(S0.<centre>nm)",
         settings.spectralBins, (settings.spectralMax - settings.spectralMin) / settings.spectralBins,
         settings.spectralMin, settings.spectralMax);
+  if (const ObserverResponse* observer = scene.sensor().film().observer()) info.observer = describeObserver(*observer);
   if (plan.part) {
     // Bands of rows of about equal cost, from a pilot every part computes alike.
     const PieceIndex& part = *plan.part;

@@ -8,65 +8,42 @@
 namespace columba {
 
 namespace {
-// A wavelength density on [kLambdaMin, kLambdaMax], sampled through a table of its inverse CDF: the
-// wavelength is interpolated linearly within 1/1024 of the CDF, so the density actually drawn is
-// constant per table segment, and that density is what `pdf` reports.
-struct WavelengthTable {
-  static constexpr int kSegments = 1024;
-  std::array<float, kSegments + 1> lambda;
-  std::array<float, kSegments> pdf;  // density within each segment
-
-  // From the wavelengths at CDF = k / kSegments (the ends are set here).
-  template <typename InverseCDF>
-  explicit WavelengthTable(const InverseCDF& inverse) {
-    for (int k = 1; k < kSegments; ++k)
-      lambda[k] = float(std::clamp(inverse(double(k) / kSegments), double(kLambdaMin), double(kLambdaMax)));
-    lambda.front() = kLambdaMin;
-    lambda.back() = kLambdaMax;
-    for (int k = 0; k < kSegments; ++k) pdf[k] = 1.0f / (kSegments * (lambda[k + 1] - lambda[k]));
-  }
-
-  // Wavelength at position x = u kSegments of the table (u in [0, 1]), and the density it is drawn with.
-  float at(float x, float* density) const {
-    int k = std::min(int(x), kSegments - 1);
-    *density = pdf[k];
-    return lerp(x - float(k), lambda[k], lambda[k + 1]);
-  }
-  float pdfAt(float l) const {
-    if (l < kLambdaMin || l > kLambdaMax) return 0.0f;
-    int k = int(std::upper_bound(lambda.begin(), lambda.end(), l) - lambda.begin()) - 1;
-    return pdf[std::clamp(k, 0, kSegments - 1)];
-  }
-};
-
 // pbrt-v4's visible-wavelength density, 1/cosh^2(0.0072 (lambda - 538)), whose inverse CDF has a
 // closed form. The table spares four atanh and cosh per camera sample.
 const WavelengthTable& visibleTable() {
   static const WavelengthTable table(
-      [](double u) { return 538.0 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u); });
+      kLambdaMin, kLambdaMax, [](double u) { return 538.0 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u); });
   return table;
 }
 
 const WavelengthTable& rgbMatchingTable();
-const WavelengthTable& table(WavelengthDensity density) {
-  return density == WavelengthDensity::Visible ? visibleTable() : rgbMatchingTable();
-}
 }  // namespace
 
-float wavelengthPdf(float lambda, WavelengthDensity density) { return table(density).pdfAt(lambda); }
+const WavelengthTable& wavelengthTable(WavelengthDensity density) {
+  return density == WavelengthDensity::Visible ? visibleTable() : rgbMatchingTable();
+}
+
+float WavelengthTable::pdf(float l) const {
+  if (l < first() || l > last()) return 0.0f;
+  int k = int(std::upper_bound(lambda_.begin(), lambda_.end(), l) - lambda_.begin()) - 1;
+  return pdf_[std::clamp(k, 0, kSegments - 1)];
+}
+
+float wavelengthPdf(float lambda, WavelengthDensity density) { return wavelengthTable(density).pdf(lambda); }
 
 float sampleWavelength(float u, WavelengthDensity density) {
   float pdf;
-  return table(density).at(clampf(u, 0.0f, 1.0f) * WavelengthTable::kSegments, &pdf);
+  return wavelengthTable(density).at(clampf(u, 0.0f, 1.0f) * WavelengthTable::kSegments, &pdf);
 }
 
-Wavelengths Wavelengths::sample(float u, WavelengthDensity density) {
+Wavelengths Wavelengths::sample(float u, WavelengthDensity density) { return sample(u, wavelengthTable(density)); }
+
+Wavelengths Wavelengths::sample(float u, const WavelengthTable& t) {
   // The hero and three more at equal offsets in sample space, wrapped into [0, 1), in lanes:
   // which of them wrap depends on u, so branches would be mispredicted.
   FloatLanes ui = u + FloatLanes{0.0f, 0.25f, 0.5f, 0.75f};
   ui = ui >= 1.0f ? ui - 1.0f : ui;
   FloatLanes x = clampLanes(ui, 0.0f, 1.0f) * float(WavelengthTable::kSegments);
-  const WavelengthTable& t = table(density);
   Wavelengths wl;
   for (int i = 0; i < kSpectrumSamples; ++i) wl.lambda[i] = t.at(x[i], &wl.pdf[i]);
   return wl;
@@ -235,24 +212,30 @@ const WavelengthTable& rgbMatchingTable() {
     }
     double floor = 0.01 * *std::max_element(density.begin(), density.end());
     for (double& d : density) d += floor;
-    // The CDF at whole nanometres (trapezoids are exact for the linear pieces), inverted within
-    // each piece by solving its quadratic.
-    std::array<double, CieTable::kCount> cdf{};
-    for (int i = 1; i < CieTable::kCount; ++i) cdf[i] = cdf[i - 1] + 0.5 * (density[i - 1] + density[i]);
-    double total = cdf.back();
-    return WavelengthTable([&](double u) {
-      double target = u * total;
-      int i = int(std::upper_bound(cdf.begin(), cdf.end(), target) - cdf.begin()) - 1;
-      i = std::clamp(i, 0, CieTable::kCount - 2);
-      double d0 = density[i], slope = density[i + 1] - d0, rest = target - cdf[i];
-      // d0 x + slope x^2 / 2 = rest on x in [0, 1].
-      double x = std::abs(slope) > 1e-12 ? (std::sqrt(d0 * d0 + 2.0 * slope * rest) - d0) / slope : rest / d0;
-      return double(kLambdaMin) + double(i) + std::clamp(x, 0.0, 1.0);
-    });
+    return makeWavelengthTable(kLambdaMin, std::vector<double>(density.begin(), density.end()));
   }();
   return table;
 }
 }  // namespace
+
+WavelengthTable makeWavelengthTable(float firstNm, const std::vector<double>& density) {
+  const int count = int(density.size());
+  if (count < 2) throw std::invalid_argument("a wavelength density needs at least two values");
+  // The CDF at whole nanometres (trapezoids are exact for the linear pieces), inverted within
+  // each piece by solving its quadratic.
+  std::vector<double> cdf(density.size(), 0.0);
+  for (int i = 1; i < count; ++i) cdf[i] = cdf[i - 1] + 0.5 * (density[i - 1] + density[i]);
+  const double total = cdf.back();
+  return WavelengthTable(firstNm, firstNm + float(count - 1), [&](double u) {
+    double target = u * total;
+    int i = int(std::upper_bound(cdf.begin(), cdf.end(), target) - cdf.begin()) - 1;
+    i = std::clamp(i, 0, count - 2);
+    double d0 = density[i], slope = density[i + 1] - d0, rest = target - cdf[i];
+    // d0 x + slope x^2 / 2 = rest on x in [0, 1].
+    double x = std::abs(slope) > 1e-12 ? (std::sqrt(d0 * d0 + 2.0 * slope * rest) - d0) / slope : rest / d0;
+    return double(firstNm) + double(i) + std::clamp(x, 0.0, 1.0);
+  });
+}
 
 Vec3 spectrumToRGB(const Spectrum& s, const Wavelengths& wl) {
   const RgbMatchingFunctions& t = rgbMatchingFunctions();

@@ -1,5 +1,6 @@
 #pragma once
 // Spectral quantities carried along a path: 4 wavelengths (hero + 3 rotations) and values there.
+#include <algorithm>
 #include <array>
 #include <vector>
 #include "core/fast_math.h"
@@ -70,6 +71,40 @@ struct Spectrum {
 //                span the whole range.
 enum class WavelengthDensity { RGBMatching, Visible };
 
+// A wavelength density on [first, last] nm, sampled through a table of its inverse CDF: the
+// wavelength is interpolated linearly within 1/1024 of the CDF, so the density actually drawn is
+// constant per table segment, and that density is what `pdf` reports. The two densities above have
+// tables of their own; an observer's film makes one that follows its cones (makeWavelengthTable).
+class WavelengthTable {
+ public:
+  static constexpr int kSegments = 1024;
+  // From the wavelengths at CDF = k / kSegments (the ends are set here).
+  template <typename InverseCDF>
+  WavelengthTable(float first, float last, const InverseCDF& inverse) {
+    for (int k = 1; k < kSegments; ++k)
+      lambda_[k] = float(std::clamp(inverse(double(k) / kSegments), double(first), double(last)));
+    lambda_.front() = first;
+    lambda_.back() = last;
+    for (int k = 0; k < kSegments; ++k) pdf_[k] = 1.0f / (kSegments * (lambda_[k + 1] - lambda_[k]));
+  }
+  // Wavelength at position x = u kSegments of the table (u in [0, 1]), and the density it is drawn with.
+  float at(float x, float* density) const {
+    int k = std::min(int(x), kSegments - 1);
+    *density = pdf_[k];
+    return lerp(x - float(k), lambda_[k], lambda_[k + 1]);
+  }
+  float pdf(float lambda) const;
+  float first() const { return lambda_.front(); }
+  float last() const { return lambda_.back(); }
+
+ private:
+  std::array<float, kSegments + 1> lambda_;
+  std::array<float, kSegments> pdf_;  // density within each segment
+};
+// The table of a density given at whole nanometres firstNm, firstNm + 1, ... and linear between
+// them (it needs no normalisation; every value must be positive).
+WavelengthTable makeWavelengthTable(float firstNm, const std::vector<double>& densityPerNm);
+
 // The wavelengths (nm) a path carries and the density each was drawn with.
 struct Wavelengths {
   std::array<float, kSpectrumSamples> lambda{};
@@ -78,12 +113,14 @@ struct Wavelengths {
 
   // Hero wavelength from `u`, the others at equal offsets in sample space.
   static Wavelengths sample(float u, WavelengthDensity density);
+  static Wavelengths sample(float u, const WavelengthTable& table);
   // Fixed wavelengths with unit pdf, for tests and plots.
   static Wavelengths fixed(std::array<float, kSpectrumSamples> l);
 };
 // The density a wavelength is drawn with (the table's, constant over 1/1024 of the CDF), and one
 // wavelength drawn by inverting the CDF.
 float wavelengthPdf(float lambda, WavelengthDensity density);
+const WavelengthTable& wavelengthTable(WavelengthDensity density);
 float sampleWavelength(float u, WavelengthDensity density);
 
 // CIE 1931 2-degree colour matching functions (multi-lobe fit of Wyman, Sloan & Shirley 2013),

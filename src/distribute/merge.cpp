@@ -61,6 +61,7 @@ void checkSameRender(const std::vector<Piece>& pieces) {
       {"samples per pixel", [](const PieceInfo& i) { return std::to_string(i.spp); }},
       {"frame size", [](const PieceInfo& i) { return fmt::format("{}x{}", i.frameWidth, i.frameHeight); }},
       {"spectral channels", [](const PieceInfo& i) { return i.spectral.empty() ? std::string("none") : i.spectral; }},
+      {"observer", [](const PieceInfo& i) { return i.observer.empty() ? std::string("none") : i.observer; }},
   };
   for (const Piece& p : pieces)
     for (const Field& f : fields)
@@ -74,6 +75,10 @@ void checkSameRender(const std::vector<Piece>& pieces) {
           fmt::format("the pieces do not belong together: {} and {} have different spectral "
                       "channels",
                       describe(first), describe(p)));
+  for (const Piece& p : pieces)
+    if (p.image.cones.names != first.image.cones.names)
+      throw std::runtime_error(fmt::format("the pieces do not belong together: {} and {} have different cone channels",
+                                           describe(first), describe(p)));
 }
 
 using WindowGroups = std::map<std::tuple<int, int, int, int>, std::vector<const Piece*>>;
@@ -217,6 +222,9 @@ MergedImage combinePieces(const std::vector<Piece>& pieces, const WindowGroups& 
   const size_t bands = pieces.front().image.spectral.count();
   image.spectral.centres = pieces.front().image.spectral.centres;
   image.spectral.values.assign(size_t(width) * size_t(height) * bands, 0.0f);
+  const size_t cones = pieces.front().image.cones.count();
+  image.cones.names = pieces.front().image.cones.names;
+  image.cones.values.assign(size_t(width) * size_t(height) * cones, 0.0f);
   for (const auto& window : groups) {
     // A variable, not a structured binding: clang 14 cannot capture those in the lambdas below.
     const std::vector<const Piece*>& group = window.second;
@@ -235,6 +243,9 @@ MergedImage combinePieces(const std::vector<Piece>& pieces, const WindowGroups& 
         for (size_t b = 0; b < bands; ++b)
           image.spectral.values[at * bands + b] =
               combine([&](const Piece& p) { return p.image.spectral.values[from * bands + b]; });
+        for (size_t c = 0; c < cones; ++c)
+          image.cones.values[at * cones + c] =
+              combine([&](const Piece& p) { return p.image.cones.values[from * cones + c]; });
       }
   }
   return merged;
@@ -251,8 +262,9 @@ Piece loadPiece(const std::string& path) {
   piece.info = pieceInfoFromFile(path, file);
   piece.image = std::move(file.image);
   // The merge allocates the whole frame, whatever the pieces hold.
-  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight, 3 + int64_t(piece.image.spectral.count()),
-                   sizeof(float), "its frame (the EXR display window) is");
+  checkImageMemory(path, piece.info.frameWidth, piece.info.frameHeight,
+                   3 + int64_t(piece.image.spectral.count() + piece.image.cones.count()), sizeof(float),
+                   "its frame (the EXR display window) is");
   return piece;
 }
 

@@ -125,6 +125,7 @@ ImageMetadata pieceMetadata(const PieceInfo& info) {
                             {"Render time", fmt::format("{:.3f} s", info.seconds)},
                             {"Status", info.complete ? "complete" : "interrupted"}};
   if (!info.spectral.empty()) metadata.emplace_back("Spectral channels", info.spectral);
+  if (!info.observer.empty()) metadata.emplace_back("Observer", info.observer);
   if (info.part) {
     metadata.emplace_back("Part", info.part->str());
     metadata.emplace_back("Part bounds", joinInts(info.partBounds));
@@ -175,6 +176,7 @@ PieceInfo pieceInfoFromFile(const std::string& path, const EXRImageFile& file) {
                              file.frameHeight));
   }
   info.spectral = has("Spectral channels") ? get("Spectral channels") : "";
+  info.observer = has("Observer") ? get("Observer") : "";
   const std::string status = get("Status");
   info.complete = status == "complete";
   info.seconds = has("Render time") ? std::atof(get("Render time").c_str()) : 0.0;

@@ -50,6 +50,7 @@ struct PieceInfo {
   int spp = 0;                          // of the whole render ("Samples per pixel")
   int frameWidth = 0, frameHeight = 0;  // of the whole image ("Frame size", "512x512")
   std::string spectral;                 // the spectral channels' description, "" for RGB ("Spectral channels")
+  std::string observer;                 // the cone channels' description, "" for none ("Observer")
   bool complete = true;                 // "Status": "complete" or "interrupted"
   double seconds = 0.0;                 // "Render time"
   // Set for pieces only:

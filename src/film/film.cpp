@@ -11,6 +11,8 @@ Mitsuba 3: the same size and crop parameters and defaults; only OpenEXR is writt
 | file_format | string | `openexr` | `openexr` or `exr`; anything else is an error | also `rgbe`, `pfm` and others |
 | pixel_format | string | `rgb` | the EXR's channels: `rgb`, `luminance` (Y) or `xyz` (CIE XYZ); `rgba`, `luminance_alpha` and `xyza` are written without alpha, with a warning naming the line, as no coverage is computed. The pieces of a split render and their merge stay RGB | alpha formats write coverage |
 | component_format | string | `float16` | `float16` or `float32`, accepted; the values are always written as float32 | chooses the stored precision |
+| observer | string | `cie1931` | the visual system the image is seen by: `cie1931` (the human observer; RGB only) or a bird's (`rockdove`, `bluetit`, ...: docs/vision.md). A bird's film records each cone's quantum catch beside RGB, as EXR channels named after the cones (`VS`, `SWS`, `MWS`, `LWS`, ...), draws wavelengths over 300-830 nm in proportion to the cones' sensitivities, and writes a false-colour PNG (red LWS, green MWS, blue SWS, the UV/violet cone as magenta) | not in Mitsuba 3 |
+| adaptation | string | `d65` | with a bird's `observer`: the white the catches are relative to (von Kries): `d65` (a white diffuse surface under a white Columba emitter catches 1 in every cone) or `none` (absolute catches, also the adaptation to an equal-quantum white) | not in Mitsuba 3 |
 */
 #include "film/film.h"
 
@@ -27,6 +29,10 @@ Image Film::makeImage() const {
   try {
     Image image(crop_.width(), crop_.height());
     image.exrColour = colour_;
+    if (observer_) {
+      image.cones.names = observer_->channels();
+      image.cones.values.assign(image.rgb.size() / 3 * image.cones.count(), 0.0f);
+    }
     return image;
   } catch (const std::bad_alloc&) {
     double gib = double(crop_.width()) * double(crop_.height()) * 3 * sizeof(float) / double(1 << 30);
@@ -93,11 +99,31 @@ std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
   std::string componentFormat = props.getString("component_format", "float16");
   if (componentFormat != "float16" && componentFormat != "float32")
     throw props.error("component_format", "only 'float16' and 'float32' are supported, not '" + componentFormat + "'");
+  std::shared_ptr<const ObserverResponse> observer;
+  const std::string observerName = props.getString("observer", "cie1931");
+  if (observerName != "cie1931") {
+    Adaptation adaptation;
+    try {
+      adaptation = adaptationNamed(props.getString("adaptation", "d65"));
+    } catch (const std::invalid_argument& e) {
+      throw props.error("adaptation", e.what());
+    }
+    try {
+      observer = std::make_shared<ObserverResponse>(namedObserver(observerName), adaptation);
+    } catch (const std::invalid_argument& e) {
+      throw props.error("observer", std::string(e.what()) + " or cie1931 (the human observer)");
+    }
+  } else if (props.has("adaptation")) {
+    warn(props.locationOf("adaptation"),
+         "adaptation '" + props.getString("adaptation", "") +
+             "' has no effect: the film's observer is cie1931, whose RGB has no cone catches to adapt");
+  }
   auto filter = props.child<ReconstructionFilter>();
   if (!filter)
     filter = makeDefaultPlugin<ReconstructionFilter>(makeGaussianFilter, "rfilter", "gaussian", props.location);
   return std::make_shared<Film>(width, height, std::move(filter),
-                                PixelRect{offsetX, offsetY, offsetX + cropWidth, offsetY + cropHeight}, colour);
+                                PixelRect{offsetX, offsetY, offsetX + cropWidth, offsetY + cropHeight}, colour,
+                                std::move(observer));
 }
 
 }  // namespace columba

@@ -1,10 +1,11 @@
 #pragma once
-// `hdrfilm`: the image size, the crop window rendered and the reconstruction filter. Pixels are
-// accumulated by the renderer.
+// `hdrfilm`: the image size, the crop window rendered, the reconstruction filter and the visual
+// system whose cone catches the image records beside RGB. Pixels are accumulated by the renderer.
 #include <memory>
 #include "core/properties.h"
 #include "film/reconstruction_filter.h"
 #include "io/image.h"
+#include "vision/observer_response.h"
 
 namespace columba {
 
@@ -12,12 +13,13 @@ class Film : public Object {
  public:
   // `crop` (empty: the whole film) must lie inside the film.
   Film(int width, int height, std::shared_ptr<ReconstructionFilter> filter, PixelRect crop = {},
-       EXRColour colour = EXRColour::RGB)
+       EXRColour colour = EXRColour::RGB, std::shared_ptr<const ObserverResponse> observer = nullptr)
       : width_(width),
         height_(height),
         crop_(crop.empty() ? PixelRect{0, 0, width, height} : crop),
         colour_(colour),
-        filter_(std::move(filter)) {}
+        filter_(std::move(filter)),
+        observer_(std::move(observer)) {}
   // The full film, which the sensor's field of view spans.
   int width() const { return width_; }
   int height() const { return height_; }
@@ -27,12 +29,15 @@ class Film : public Object {
   const ReconstructionFilter& filter() const { return *filter_; }
   // The colour channels of the image's EXR file (hdrfilm's pixel_format).
   EXRColour exrColour() const { return colour_; }
+  // The visual system whose cone catches the image records (hdrfilm's `observer`); null for the
+  // human observer of CIE 1931, whose colour is the RGB every image has.
+  const ObserverResponse* observer() const { return observer_.get(); }
   // A black image of the crop's size, with the film's exrColour; if it cannot be allocated, throws std::runtime_error
   // saying how much memory it needs.
   Image makeImage() const;
   // The same film, uncropped, at another size (fitting a scene to a measured image of that size).
   std::shared_ptr<Film> resized(int width, int height) const {
-    return std::make_shared<Film>(width, height, filter_, PixelRect{}, colour_);
+    return std::make_shared<Film>(width, height, filter_, PixelRect{}, colour_, observer_);
   }
 
  private:
@@ -40,6 +45,7 @@ class Film : public Object {
   PixelRect crop_;
   EXRColour colour_;
   std::shared_ptr<ReconstructionFilter> filter_;
+  std::shared_ptr<const ObserverResponse> observer_;
 };
 
 std::shared_ptr<Object> makeHDRFilm(const Properties& props);

@@ -51,6 +51,9 @@ void checkImage(const std::string& path, const Image& image) {
   if (image.spectral.values.size() != pixels * image.spectral.count())
     throw std::runtime_error("cannot write '" + path + "': its " + std::to_string(image.spectral.count()) +
                              " spectral bands hold " + std::to_string(image.spectral.values.size()) + " values");
+  if (image.cones.values.size() != pixels * image.cones.count())
+    throw std::runtime_error("cannot write '" + path + "': its " + std::to_string(image.cones.count()) +
+                             " cone channels hold " + std::to_string(image.cones.values.size()) + " values");
 }
 
 // Metadata with Columba's own entry first.
@@ -99,6 +102,12 @@ void writeEXRFile(const std::string& file, const Image& image, const ImageMetada
     std::string name = spectralChannelName(bands.centres[b]);
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     frame.insert(name, slice(bands.values.data() + b, bandStride, bandStride * size_t(image.width)));
+  }
+  const NamedChannels& cones = image.cones;
+  const size_t coneStride = cones.count() * sizeof(float);
+  for (size_t c = 0; c < cones.count(); ++c) {
+    header.channels().insert(cones.names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(cones.names[c], slice(cones.values.data() + c, coneStride, coneStride * size_t(image.width)));
   }
 
   // OpenEXR finishes the file in its destructor, which swallows errors: the stream's state
@@ -272,7 +281,17 @@ std::optional<float> spectralChannelCentre(const std::string& name) {
   if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
+
+bool isConeChannel(const std::string& name) {
+  const std::vector<std::string>& names = coneChannelNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
 }  // namespace
+
+const std::vector<std::string>& coneChannelNames() {
+  static const std::vector<std::string> names = {"UVS", "VS", "SWS", "MWS", "LWS", "DBL"};
+  return names;
+}
 
 std::string spectralChannelName(float lambdaNm) {
   std::string centre = fmt::format("{:g}", double(lambdaNm));
@@ -312,23 +331,49 @@ std::string metadataValue(const ImageMetadata& metadata, const std::string& name
   return "";
 }
 
+Image falseColour(const Image& image) {
+  Image shown(image.width, image.height);
+  const size_t n = image.cones.count();
+  auto index = [&](const char* name) {
+    for (size_t c = 0; c < n; ++c)
+      if (image.cones.names[c] == name) return int(c);
+    return -1;
+  };
+  const int lws = index("LWS"), mws = index("MWS"), sws = index("SWS");
+  const int shortest = index("UVS") >= 0 ? index("UVS") : index("VS");
+  for (size_t p = 0; p < shown.rgb.size() / 3; ++p) {
+    const float* q = &image.cones.values[p * n];
+    auto at = [&](int c) { return c >= 0 ? q[c] : 0.0f; };
+    shown.rgb[3 * p + 0] = (2.0f * at(lws) + at(shortest)) / 3.0f;
+    shown.rgb[3 * p + 1] = at(mws);
+    shown.rgb[3 * p + 2] = (2.0f * at(sws) + at(shortest)) / 3.0f;
+  }
+  return shown;
+}
+
+namespace {
+// What a PNG of the image shows: its RGB, or the false colour of its cone catches, scaled by 2^exposure.
+Image previewOf(const Image& image, float exposure) {
+  Image preview = image.cones.count() > 0 ? falseColour(image) : image;
+  const float scale = std::exp2(exposure);
+  if (exposure != 0.0f)
+    for (float& v : preview.rgb) v *= scale;
+  return preview;
+}
+}  // namespace
+
 void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
   const ImageMetadata all = withSoftware(metadata);
-  replaceTogether({{path, "PNG", [&](const std::string& file) { writePNGFile(file, image, all); }}});
+  const Image preview = previewOf(image, 0.0f);
+  replaceTogether({{path, "PNG", [&](const std::string& file) { writePNGFile(file, preview, all); }}});
 }
 
 void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
                     const ImageMetadata& metadata, float pngExposure) {
   checkImage(exrPath, image);
   const ImageMetadata all = withSoftware(metadata);
-  Image exposed;
-  if (pngExposure != 0.0f) {
-    exposed = image;
-    const float scale = std::exp2(pngExposure);
-    for (float& v : exposed.rgb) v *= scale;
-  }
-  const Image& preview = pngExposure != 0.0f ? exposed : image;
+  const Image preview = previewOf(image, pngExposure);
   replaceTogether({{exrPath, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }},
                    {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, preview, all); }}});
 }
@@ -358,7 +403,7 @@ ImageFormat checkOutputImagePath(const std::string& path, bool directoryMayBeMad
 struct EXRDeclaredSize {
   int64_t width = 0, height = 0;
   double storedBytesPerPixel = 0;  // of every channel, at its sampling
-  int64_t spectralBands = 0;
+  int64_t spectralBands = 0;       // and cone channels: one float a pixel each
   int compression = 0;
 };
 
@@ -384,7 +429,8 @@ static size_t addEXRChannels(const std::string& list, EXRDeclaredSize& size) {
     std::memcpy(fields, list.data() + end + 1, sizeof fields);
     size.storedBytesPerPixel +=
         double(exrSampleBytes(fields[0])) / std::max(1.0, double(fields[2])) / std::max(1.0, double(fields[3]));
-    if (spectralChannelCentre(list.substr(at, end - at))) ++size.spectralBands;
+    if (spectralChannelCentre(list.substr(at, end - at)) || isConeChannel(list.substr(at, end - at)))
+      ++size.spectralBands;
     at = end + 17;
   }
   return 0;
@@ -513,7 +559,7 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
     for (auto c = channels.begin(); c != channels.end(); ++c) {
       size.storedBytesPerPixel += double(exrSampleBytes(c.channel().type)) / std::max(1, c.channel().xSampling) /
                                   std::max(1, c.channel().ySampling);
-      if (spectralChannelCentre(c.name())) ++size.spectralBands;
+      if (spectralChannelCentre(c.name()) || isConeChannel(c.name())) ++size.spectralBands;
     }
     checkEXRDeclaredSize(path, size);
     if (!pixels) return result;
@@ -540,6 +586,13 @@ EXRImageFile readEXRFile(const std::string& path, bool pixels) {
       frame.insert(bands[b].second, Imf::Slice::Make(Imf::FLOAT, image.spectral.values.data() + b, window, bandStride,
                                                      bandStride * size_t(image.width)));
     }
+    for (const std::string& name : coneChannelNames())
+      if (channels.findChannel(name)) image.cones.names.push_back(name);
+    image.cones.values.assign(size_t(image.width) * image.height * image.cones.count(), 0.0f);
+    const size_t coneStride = image.cones.count() * sizeof(float);
+    for (size_t c = 0; c < image.cones.count(); ++c)
+      frame.insert(image.cones.names[c], Imf::Slice::Make(Imf::FLOAT, image.cones.values.data() + c, window, coneStride,
+                                                          coneStride * size_t(image.width)));
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     image.exrColour = rgb ? EXRColour::RGB : xyz ? EXRColour::XYZ : EXRColour::Luminance;

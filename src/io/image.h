@@ -18,6 +18,16 @@ struct SpectralBands {
 // The EXR channel name of a bin centred at `lambdaNm`.
 std::string spectralChannelName(float lambdaNm);
 
+// Per-pixel values of named channels beside RGB: the cone catches a film with an observer records
+// (docs/vision.md). EXR files hold them as channels of those names.
+struct NamedChannels {
+  std::vector<std::string> names;
+  std::vector<float> values;  // row-major, names.size() floats per pixel
+  size_t count() const { return names.size(); }
+};
+// The cone channels, in the order an image holds those it has: UVS, VS, SWS, MWS, LWS, DBL.
+const std::vector<std::string>& coneChannelNames();
+
 // The colour channels of an image's EXR file, as Mitsuba's hdrfilm `pixel_format` chooses them:
 // linear Rec.709 R, G, B; their luminance Y; or CIE 1931 X, Y, Z of those primaries.
 enum class EXRColour { RGB, Luminance, XYZ };
@@ -26,6 +36,7 @@ struct Image {
   int width = 0, height = 0;
   std::vector<float> rgb;  // row-major, 3 floats per pixel, linear Rec.709
   SpectralBands spectral;  // empty for RGB images
+  NamedChannels cones;     // empty unless a film with an observer rendered it
   // What writeEXR and writeEXRAndPNG write the colour as (the PNG is RGB whatever it is). The
   // pieces of a split render (writeEXRWindow) are RGB, so that merging them is exact.
   EXRColour exrColour = EXRColour::RGB;
@@ -34,6 +45,11 @@ struct Image {
   float* pixel(int x, int y) { return &rgb[(size_t(y) * width + x) * 3]; }
   const float* pixel(int x, int y) const { return &rgb[(size_t(y) * width + x) * 3]; }
 };
+
+// How a PNG shows an image with cone channels, for human eyes: red (2 LWS + S) / 3, green MWS,
+// blue (2 SWS + S) / 3, where S is the UVS or VS cone, so that what only the shortest cone catches
+// is magenta and a white that every cone catches alike is white. Missing cones count 0.
+Image falseColour(const Image& image);
 
 // Text recorded in an image file: EXR string attributes, PNG text chunks (name, text). Every
 // file written also records "Software" (Columba and its version).
@@ -67,7 +83,9 @@ void setImageWriterThreads(int threads);
 // Writers go through a temporary file renamed into place, so a failed or interrupted write
 // never replaces a good file. They throw std::runtime_error naming the path on failure.
 void writeEXR(const std::string& path, const Image& image, const ImageMetadata& metadata = {});  // float32 RGB
-void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata = {});  // 8-bit sRGB, clamped
+// 8-bit sRGB, clamped; an image with cone channels as their false colour (falseColour), here and in
+// writeEXRAndPNG's PNG.
+void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata = {});
 // An EXR and its PNG preview, replaced together or not at all: both are written to temporary
 // files, then renamed into place; if a rename fails, the file already replaced is put back.
 // Writers of the same pair in other processes wait for each other's renames (a lock on the
@@ -89,8 +107,8 @@ ImageFormat checkOutputImagePath(const std::string& path, bool directoryMayBeMad
 void writeEXRWindow(const std::string& path, const Image& image, const PixelRect& window, int frameWidth,
                     int frameHeight, const ImageMetadata& metadata = {});
 
-// RGB (from R, G, B, X, Y, Z, or Y alone as grey, `exrColour` saying which) and any spectral
-// bands; throws InputError naming the path if it cannot be read.
+// RGB (from R, G, B, X, Y, Z, or Y alone as grey, `exrColour` saying which), any spectral
+// bands and any cone channels; throws InputError naming the path if it cannot be read.
 Image readEXR(const std::string& path);
 // The same with the header's windows and string attributes; with `pixels` false, only the header
 // is read (the image stays empty).

@@ -22,7 +22,7 @@ constexpr uint64_t kMinSamplesPerBlock = 4096;
 constexpr size_t kBufferBudgetBytes = size_t(256) << 20;
 constexpr size_t kMaxBuffers = 32;
 
-void refuseUnsupportedSettings(const RenderSettings& settings, int spp) {
+void refuseUnsupportedSettings(const RenderSettings& settings, const Film& film, int spp) {
   auto refuse = [](const char* what) {
     throw std::runtime_error(fmt::format("ptracer renders whole images: {} cannot be used with light tracing", what));
   };
@@ -31,6 +31,7 @@ void refuseUnsupportedSettings(const RenderSettings& settings, int spp) {
     refuse("a range of sample indices (a pass of a split render)");
   if (settings.adaptive) refuse("adaptive sampling");
   if (settings.spectralBins > 0) refuse("spectral output");
+  if (film.observer()) refuse("a film with a bird's observer (cone catches)");
 }
 
 // Turns a light sample's splats into RGB in a block's buffer, leaving out (and counting)
@@ -59,7 +60,7 @@ Image renderLightPaths(const Scene& scene, const ParticleTracerIntegrator& trace
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
   const int spp = settings.samplesPerPixel > 0 ? settings.samplesPerPixel : sensor.sampler().sampleCount();
-  refuseUnsupportedSettings(settings, spp);
+  refuseUnsupportedSettings(settings, film, spp);
   const PixelRect window = film.crop();
   const uint64_t pixels = uint64_t(window.width()) * uint64_t(window.height());
   const uint64_t total = pixels * uint64_t(spp);

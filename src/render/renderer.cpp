@@ -38,10 +38,12 @@ struct WavelengthBins {
   }
 };
 
-// Wavelengths follow what the image records: the RGB matching functions, or, where spectral bins
-// are written too, the visible density, which keeps more of the range's ends for the outer bins.
-WavelengthDensity wavelengthDensity(const RenderSettings& settings) {
-  return settings.spectralBins > 0 ? WavelengthDensity::Visible : WavelengthDensity::RGBMatching;
+// Wavelengths follow what the image records: a bird observer's cones, the RGB matching functions,
+// or, where spectral bins are written too, the visible density, which keeps more of the range's
+// ends for the outer bins.
+const WavelengthTable& wavelengthTable(const RenderSettings& settings, const Film& film) {
+  if (const ObserverResponse* observer = film.observer()) return observer->wavelengths();
+  return wavelengthTable(settings.spectralBins > 0 ? WavelengthDensity::Visible : WavelengthDensity::RGBMatching);
 }
 
 // A camera sample of pixel (x, y): a film position uniform in the pixel, as Mitsuba draws it (the
@@ -64,7 +66,8 @@ struct PixelSampler {
   const Scene& scene;
   const Sensor& sensor;
   const Integrator& integrator;
-  WavelengthDensity wavelengths;
+  const WavelengthTable& wavelengths;
+  const ObserverResponse* observer;  // null: RGB (and spectral bins) only
   uint64_t seed;
   bool lens;  // the sensor draws an aperture sample
 
@@ -115,7 +118,8 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
                             const SampleEnd& sampleEnd, int progressBase, int progressTotal, Image& image,
                             RenderStats& stats, std::atomic<bool>& cancelled) {
   const PixelRect& window = tiles.window();
-  const int channels = 3 + bins.count;
+  const int cones = pixels.observer ? int(pixels.observer->channels().size()) : 0;
+  const int channels = 3 + bins.count + cones;
   std::atomic<uint64_t> rays{0}, nonFinite{0}, samples{0};
   std::atomic<int> tilesDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles.tileCount(), 1), [&](const tbb::blocked_range<int>& range) {
@@ -148,6 +152,10 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
               std::fill(values.begin() + 3, values.end(), 0.0f);
               bins.accumulate(L, wl, weight, values.data() + 3);
             }
+            if (cones > 0) {
+              std::fill(values.begin() + 3 + bins.count, values.end(), 0.0f);
+              pixels.observer->accumulate(L, wl, weight, values.data() + 3 + bins.count);
+            }
             buffer.add(filmPosition, values.data());
           };
           finished = pixels.draw(*sampler, x, y, sampleBegin, end, tileRays, tileNonFinite, taken, take, stop);
@@ -174,6 +182,9 @@ uint64_t splatCameraSamples(const PixelSampler& pixels, const RenderSettings& se
       for (int b = 0; b < bins.count; ++b)
         image.spectral.values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(bins.count) + size_t(b)] =
             float(v[3 + b]);
+      for (int c = 0; c < cones; ++c)
+        image.cones.values[(size_t(iy) * size_t(window.width()) + size_t(ix)) * size_t(cones) + size_t(c)] =
+            float(v[3 + bins.count + c]);
     }
   });
   stats.rays += rays;
@@ -278,9 +289,10 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   // The scene's sampler with a pattern of this render's sample count.
   const std::unique_ptr<Sampler> pattern = sensor.sampler().withSampleCount(spp);
   const PixelSampler pixels{
-      scene, sensor, scene.integrator(), wavelengthDensity(settings), settings.seed, sensor.needsApertureSample()};
+      scene,           sensor,        scene.integrator(),          wavelengthTable(settings, film),
+      film.observer(), settings.seed, sensor.needsApertureSample()};
   const FilterFootprint footprint(film.filter());
-  TiledSplats tiles(window, film.width(), film.height(), footprint, 3 + bins.count);
+  TiledSplats tiles(window, film.width(), film.height(), footprint, 3 + bins.count + int(image.cones.count()));
   std::atomic<bool> cancelled{false};
   stats.rays = 0;
   stats.nonFiniteSamples = 0;
@@ -352,7 +364,7 @@ std::vector<uint64_t> estimateRowCosts(const Scene& scene, const RenderSettings&
         }
         uint64_t rays = 0;
         sampler->startPixelSample(x, y, 0, settings.seed);
-        Wavelengths wl = Wavelengths::sample(sampler->get1D(), wavelengthDensity(settings));
+        Wavelengths wl = Wavelengths::sample(sampler->get1D(), wavelengthTable(settings, film));
         if (const CameraSample sample = cameraSample(sensor, lens, x, y, *sampler); sample.ray)
           integrator.radiance(scene, *sample.ray, *sampler, wl, rays);
         cost += 20 * (rays + 2);  // the rays, and the camera sample's own work as two more

@@ -464,3 +464,30 @@ TEST(SpectralImageFiles, BandsRoundTripThroughEXRWithTheirWavelengths) {
   image.spectral.values.pop_back();
   EXPECT_THROW(writeEXR(dir + "/bad_bands.exr", image), std::runtime_error);
 }
+
+TEST(ConeImageFiles, ConeChannelsRoundTripThroughEXRAndShowInFalseColour) {
+  const std::string dir = ::testing::TempDir();
+  Image image(2, 1);
+  image.cones.names = {"VS", "SWS", "MWS", "LWS"};
+  // Pixel 0 catches alike in every cone; pixel 1 only in the violet cone.
+  image.cones.values = {0.5f, 0.5f, 0.5f, 0.5f, 0.9f, 0.0f, 0.0f, 0.0f};
+  const std::string path = dir + "/cones.exr";
+  writeEXR(path, image);
+  const Image back = readEXR(path);
+  EXPECT_EQ(back.cones.names, image.cones.names);
+  EXPECT_EQ(back.cones.values, image.cones.values);
+  const Image shown = falseColour(back);
+  EXPECT_EQ(std::vector<float>(shown.rgb.begin(), shown.rgb.begin() + 3), (std::vector<float>{0.5f, 0.5f, 0.5f}));
+  EXPECT_FLOAT_EQ(shown.rgb[3], 0.3f);  // magenta: (2 LWS + VS) / 3, MWS, (2 SWS + VS) / 3
+  EXPECT_FLOAT_EQ(shown.rgb[4], 0.0f);
+  EXPECT_FLOAT_EQ(shown.rgb[5], 0.3f);
+  // The PNG beside the EXR shows the false colour, not the (black) RGB.
+  writeEXRAndPNG(dir + "/cones2.exr", dir + "/cones2.png", image);
+  const Image png = readPNG(dir + "/cones2.png");
+  EXPECT_NEAR(png.rgb[0], 0.5f, 0.01f);
+  EXPECT_NEAR(png.rgb[3], 0.3f, 0.01f);
+  EXPECT_NEAR(png.rgb[4], 0.0f, 0.01f);
+  // A channel count that does not match the pixels is refused.
+  image.cones.values.pop_back();
+  EXPECT_THROW(writeEXR(dir + "/bad_cones.exr", image), std::runtime_error);
+}
