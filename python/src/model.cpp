@@ -159,9 +159,9 @@ void requireRange(const float* values, py::ssize_t count, float lo, float hi, bo
         fmt::format("{} must lie in [{:g}, {:g}{}, not {:g} (element {})", what, lo, hi, openAbove ? ")" : "]", v, i));
   }
 }
-// The wavelengths the BSDF is evaluated at: the renderer's range.
+// The wavelengths the BSDF is evaluated at: the renderer's range, birds' ultraviolet included.
 void requireVisible(const float* lambdas, py::ssize_t count) {
-  requireRange(lambdas, count, kLambdaMin, kLambdaMax, false, "wavelengths (nm)");
+  requireRange(lambdas, count, kSpectralMin, kLambdaMax, false, "wavelengths (nm)");
 }
 
 // Wavelengths (nm), N (one per direction, in all four lanes) or N x 4 (a path's four).
@@ -327,7 +327,7 @@ py::array_t<float> passThroughArray(const PyBarbule& self, const py::array& wiIn
 }
 
 std::vector<float> lambdaList(const py::object& lambdas) {
-  if (lambdas.is_none()) return visibleWavelengthGrid(1.0f);
+  if (lambdas.is_none()) return wavelengthGrid(kSpectralMin, 1.0f);
   FloatArray a = FloatArray::ensure(lambdas);
   if (!a || a.ndim() != 1 || a.size() == 0) throw py::value_error("wavelengths must be a non-empty 1-D array (nm)");
   requireVisible(a.data(), a.size());

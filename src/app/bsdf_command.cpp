@@ -9,6 +9,7 @@
 
 #include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
+#include "core/illuminant.h"
 #include "core/version.h"
 #include "io/data_files.h"
 #include "io/output_directory.h"
@@ -16,6 +17,7 @@
 #include "plot/hemisphere_chart.h"
 #include "plot/line_plot.h"
 #include "scene/xml_values.h"
+#include "vision/colour_distance.h"
 
 namespace columba {
 
@@ -35,6 +37,7 @@ struct BSDFOptions {
   int bins = 16;
   int resolution = 256;
   std::string outputDir = ".";
+  std::string observer;  // a bird's: the specular spectra's cone catches and colour distances
 };
 
 const Vec3 kSeriesColours[] = {srgbColour(0.10f, 0.35f, 0.80f), srgbColour(0.10f, 0.60f, 0.30f),
@@ -124,7 +127,7 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
       fmt::format("light theta {} deg, phi {:g} deg | {}", angleList(o.angles), o.phiDegrees, describeParameters(o));
   f.plot.xLabel = "wavelength (nm)";
   f.plot.yLabel = yLabel;
-  f.plot.xMin = kLambdaMin;
+  f.plot.xMin = kSpectralMin;
   f.plot.xMax = kLambdaMax;
   f.table = {{quantity, describeParameters(o)}, {"wavelength_nm"}, std::vector<std::vector<double>>(lambdas.size())};
   for (size_t i = 0; i < lambdas.size(); ++i) f.table.rows[i].push_back(lambdas[i]);
@@ -134,7 +137,7 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
 // Directional reflectance (albedo) of R and TRT per light angle.
 void measureAlbedo(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                    std::vector<std::string>& written) {
-  const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
+  const std::vector<float> lambdas = wavelengthGrid(kSpectralMin, 1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Directional reflectance of the barbule lobes",
                                       "directional reflectance (R solid, TRT dashed)",
                                       "directional reflectance (albedo) of the R and TRT lobes: the integral over "
@@ -176,15 +179,68 @@ void measureAlbedo(const BarbuleModel& model, const BSDFOptions& o, const fs::pa
   writeTable(dir / "bsdf_spectra.csv", table, written);
 }
 
+// The total specular spectra in the layout R's pavo reads (as.rspec of read.csv): a `wl` column of
+// 1 nm steps over 300-700 nm, then one column a light angle; no comment lines.
+CsvTable pavoTable(const BSDFOptions& o, const std::vector<float>& lambdas,
+                   const std::vector<std::vector<float>>& totals) {
+  CsvTable table{{}, {"wl"}, {}};
+  for (float angle : o.angles) table.columns.push_back(fmt::format("total_theta{:g}", angle));
+  for (size_t i = 0; i < lambdas.size() && lambdas[i] <= 700.0f; ++i) {
+    table.rows.push_back({lambdas[i]});
+    for (const std::vector<float>& total : totals) table.rows.back().push_back(total[i]);
+  }
+  return table;
+}
+
+// Each light angle's specular spectrum as a bird sees it lit by D65: its cones' quantum catches
+// adapted to a white under D65 (pavo's vismodel with illum = "D65", vonkries = TRUE), their
+// relative catches, and the receptor-noise-limited distance (JND) from the first angle's colour.
+void measureConeCatches(const BSDFOptions& o, const std::vector<float>& lambdas,
+                        const std::vector<std::vector<float>>& totals, const fs::path& dir, nlohmann::json& record,
+                        std::vector<std::string>& written) {
+  const Observer observer = namedObserver(o.observer);
+  const std::vector<float> illuminant = tabulateOnGrid(observer.grid, [](double l) { return d65(float(l)); });
+  CsvTable table{{fmt::format("cone catches of the specular spectra (total) for the {} observer, lit by D65 and "
+                              "adapted to a white under it (von Kries); relative catches sum to 1; dS: "
+                              "receptor-noise-limited distance from the first light angle, in JND",
+                              observer.name)},
+                 {"light_theta_deg"},
+                 {}};
+  for (const std::string& c : observer.channels) table.columns.push_back(c);
+  for (const std::string& c : observer.channels) table.columns.push_back("relative_" + c);
+  table.columns.push_back("dS_jnd");
+  fmt::print("cone catches ({}, D65, von Kries): light theta (deg), {}, dS from {:g} deg (JND)\n", observer.name,
+             fmt::join(observer.channels, ", "), o.angles.front());
+  std::vector<ConeCatches> catches;
+  for (size_t a = 0; a < totals.size(); ++a) {
+    std::vector<float> reflectance = tabulateOnGrid(observer.grid, [&](double l) {
+      const size_t i = size_t(std::lround(l - double(lambdas.front())));
+      return i < lambdas.size() ? double(totals[a][i]) : 0.0;
+    });
+    catches.push_back(adaptedQuantumCatches(observer, reflectance, illuminant));
+    const std::vector<double>& q = catches.back().chromatic;
+    const std::vector<double> relative = relativeCatches(q);
+    const double dS = chromaticDistance(observer, catches.front(), catches.back());
+    table.rows.push_back({o.angles[a]});
+    table.rows.back().insert(table.rows.back().end(), q.begin(), q.end());
+    table.rows.back().insert(table.rows.back().end(), relative.begin(), relative.end());
+    table.rows.back().push_back(dS);
+    fmt::print("{:17g}  {:.4f}  dS {:.2f}\n", o.angles[a], fmt::join(q, " "), dS);
+    record["cone_catches"].push_back({{"light_theta_deg", o.angles[a]}, {"catches", q}, {"dS_jnd", dS}});
+  }
+  writeTable(dir / "bsdf_specular_catches.csv", table, written);
+}
+
 // Reflectance factor in the mirror direction of each light angle: a microspectrophotometer.
 void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                      std::vector<std::string>& written) {
-  const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
+  const std::vector<float> lambdas = wavelengthGrid(kSpectralMin, 1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Reflectance factor pi f in the mirror direction",
                                       "reflectance factor in the mirror direction (total solid, R dashed)",
                                       "reflectance factor pi f(light, mirror direction) of the R and TRT lobes and "
                                       "their sum, relative to a white diffuse standard (dimensionless)");
   float peak = 0.0f;
+  std::vector<std::vector<float>> totals;  // per light angle
   fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
@@ -203,6 +259,7 @@ void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::
     peak = std::max(peak, largest);
     for (const char* lobe : {"R", "TRT", "total"})
       table.columns.push_back(fmt::format("{}_theta{:g}", lobe, o.angles[a]));
+    totals.push_back(total);
     std::vector<float> totalPeaks = peakWavelengths(lambdas, total), rPeaks = peakWavelengths(lambdas, s.reflection),
                        trtPeaks = peakWavelengths(lambdas, s.trt);
     fmt::print("{:17g}  {:<18} {:<14} {:<16} {:.4f}\n", o.angles[a], fmt::format("{}", fmt::join(totalPeaks, " ")),
@@ -218,13 +275,15 @@ void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::
   plot.yMax = std::max(0.05f, peak * 1.1f);
   writePlot(dir / "bsdf_specular.png", plot, written);
   writeTable(dir / "bsdf_specular.csv", table, written);
+  writeTable(dir / "bsdf_specular_pavo.csv", pavoTable(o, lambdas, totals), written);
+  if (!o.observer.empty()) measureConeCatches(o, lambdas, totals, dir, record, written);
 }
 
 // In-plane slices of the scatterometer quantity at a few wavelengths and as RGB.
 void measurePlane(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir,
                   std::vector<std::string>& written) {
   const std::vector<float> shown = {450.0f, 550.0f, 650.0f};
-  const std::vector<float> lambdas = visibleWavelengthGrid(5.0f);
+  const std::vector<float> lambdas = wavelengthGrid(kLambdaMin, 5.0f);
   std::vector<float> thetaO;
   for (float t = -89.5f; t <= 89.5f; t += 0.5f) thetaO.push_back(degToRad(t));
   CsvTable table{{"in-plane scatterometer quantity f(light, omega_o) |cos theta_o| (1/sr, R + TRT); theta_o signed, "
@@ -393,7 +452,17 @@ void addBSDFCommand(CLI::App& app) {
       ->check(CLI::Range(1, 300));
   cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
   cmd->add_option("-o,--output", o->outputDir, "Output directory, made if missing (default: the working directory)");
+  cmd->add_option("--observer", o->observer,
+                  "A bird's visual system (" + builtinObserverNames() +
+                      "): with --mode specular, each spectrum's cone catches and colour distances "
+                      "(bsdf_specular_catches.csv)")
+      ->check([](const std::string& name) {
+        return findObserverDefinition(name) ? std::string()
+                                            : "unknown observer '" + name + "' (known: " + builtinObserverNames() + ")";
+      });
   cmd->callback([o, given, cmd] {
+    if (!o->observer.empty() && std::find(o->modes.begin(), o->modes.end(), "specular") == o->modes.end())
+      throw CLI::ValidationError("--observer", "measures the specular spectra's cone catches: add --mode specular");
     resolveParameters(*o, *cmd, *given);
     runBSDF(*o);
   });

@@ -49,9 +49,9 @@ std::optional<Vec3> scatterometerDirection(int px, int py, int sx, int sy, int r
 Spectrum total(const BarbuleLobes& lobes) { return lobes.reflection + lobes.trt; }
 }  // namespace
 
-std::vector<float> visibleWavelengthGrid(float step) {
+std::vector<float> wavelengthGrid(float first, float step) {
   std::vector<float> lambdas;
-  for (float l = kLambdaMin; l <= kLambdaMax + 1e-3f; l += step) lambdas.push_back(l);
+  for (float l = first; l <= kLambdaMax + 1e-3f; l += step) lambdas.push_back(l);
   return lambdas;
 }
 
@@ -169,7 +169,7 @@ SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& 
 
 Image scatterometerImage(const BarbuleModel& model, const Vec3& omegaI, int resolution, int supersampling) {
   Image image(resolution, resolution);
-  std::vector<WavelengthGroup> groups = wavelengthGroups(visibleWavelengthGrid(5.0f));
+  std::vector<WavelengthGroup> groups = wavelengthGroups(wavelengthGrid(kLambdaMin, 5.0f));
   const float dLambda = 5.0f;
   tbb::parallel_for(0, resolution, [&](int py) {
     for (int px = 0; px < resolution; ++px) {

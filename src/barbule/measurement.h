@@ -50,8 +50,9 @@ std::vector<Vec3> sliceRGB(const PlaneSlice& slice);
 SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& omegaI, int resolution, int bins,
                                          float lambdaMin, float lambdaMax, int supersampling = 2);
 
-// Wavelengths from 360 to 830 nm every `step` nm.
-std::vector<float> visibleWavelengthGrid(float step);
+// Wavelengths from `first` to 830 nm every `step` nm: from kLambdaMin (360 nm) for human colour,
+// from kSpectralMin (300 nm) for spectra, which birds see from there.
+std::vector<float> wavelengthGrid(float first, float step);
 // Wavelengths of the local maxima of `values` sampled at `lambdas` (interior points only).
 std::vector<float> peakWavelengths(const std::vector<float>& lambdas, const std::vector<float>& values);
 

@@ -64,13 +64,13 @@ std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
   if (!(p.filmIOR.minimumVisible() > p.extIOR))
     return BarbuleParameterProblem{"film_ior",
                                    "the film must be optically denser than the surrounding medium at "
-                                   "every wavelength from 360 to 830 nm"};
+                                   "every wavelength from 300 to 830 nm"};
   if (p.melanin)
-    for (float l = kLambdaMin; l <= kLambdaMax; l += 1.0f)
+    for (float l = kSpectralMin; l <= kLambdaMax; l += 1.0f)
       if (!(p.melanin->eval(l) >= 0.0f && p.melanin->eval(l) <= 1.0f))
         return BarbuleParameterProblem{"melanin",
                                        "the melanin reflectance must lie in [0, 1] at every wavelength "
-                                       "from 360 to 830 nm"};
+                                       "from 300 to 830 nm"};
   return std::nullopt;
 }
 

@@ -81,9 +81,12 @@ const CieTable& cieTable() {
   return table;
 }
 
-// Linear interpolation in a table of values at whole nanometres from kLambdaMin to kLambdaMax.
+// Linear interpolation in a table of values at whole nanometres from kLambdaMin to kLambdaMax,
+// zero outside: the colour matching functions end there, and a bird observer's render draws
+// wavelengths down to kSpectralMin.
 template <typename T>
 T interpolateNanometres(const std::array<T, CieTable::kCount>& table, float lambda) {
+  if (!(lambda >= kLambdaMin && lambda <= kLambdaMax)) return T{};
   float x = clampf(lambda - kLambdaMin, 0.0f, float(CieTable::kCount - 1));
   int i = std::min(int(x), CieTable::kCount - 2);
   float f = x - float(i);

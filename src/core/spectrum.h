@@ -11,6 +11,10 @@ namespace columba {
 inline constexpr int kSpectrumSamples = 4;
 inline constexpr float kLambdaMin = 360.0f;
 inline constexpr float kLambdaMax = 830.0f;
+// The shortest wavelength Columba models: birds see from 300 nm. Human colour (RGB images, the CIE
+// 1931 observer) stays within kLambdaMin-kLambdaMax; spectra, the barbule model, measured spectra
+// and bird observers reach down to here (docs/vision.md, "Below 360 nm").
+inline constexpr float kSpectralMin = 300.0f;
 
 // Values of a quantity at the path's wavelengths, one per SIMD lane: arithmetic on a spectrum is
 // one vector instruction.

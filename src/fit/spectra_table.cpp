@@ -12,6 +12,7 @@
 
 #include "core/byte_order_mark.h"
 #include "core/error.h"
+#include "core/spectrum.h"
 
 namespace columba {
 
@@ -36,8 +37,9 @@ float number(const std::string& path, int line, const std::string& what, const s
 }
 
 void checkSample(const std::string& path, int line, const SpectraSample& s) {
-  if (s.wavelength < 360.0f || s.wavelength > 830.0f)
-    throw InputError({path, line}, fmt::format("wavelength_nm {} lies outside 360..830 nm", s.wavelength));
+  if (s.wavelength < kSpectralMin || s.wavelength > kLambdaMax)
+    throw InputError({path, line}, fmt::format("wavelength_nm {} lies outside {:g}..{:g} nm", s.wavelength,
+                                               kSpectralMin, kLambdaMax));
   if (s.thetaI < 0.0f || s.thetaI >= 90.0f || s.thetaO < 0.0f || s.thetaO >= 90.0f)
     throw InputError({path, line},
                      fmt::format("theta_i {} and theta_o {} must lie in [0, 90) degrees", s.thetaI, s.thetaO));

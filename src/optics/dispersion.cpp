@@ -8,9 +8,9 @@
 namespace columba {
 
 float RefractiveIndex::minimumVisible() const {
-  if (!table) return std::min((*this)(kLambdaMin), (*this)(kLambdaMax));  // monotonic in lambda
-  float n = (*this)(kLambdaMin);
-  for (float l = kLambdaMin + 1.0f; l <= kLambdaMax; l += 1.0f) n = std::min(n, (*this)(l));
+  if (!table) return std::min((*this)(kSpectralMin), (*this)(kLambdaMax));  // monotonic in lambda
+  float n = (*this)(kSpectralMin);
+  for (float l = kSpectralMin + 1.0f; l <= kLambdaMax; l += 1.0f) n = std::min(n, (*this)(l));
   return n;
 }
 

@@ -16,7 +16,7 @@ struct RefractiveIndex {
 
   float operator()(float lambdaNm) const { return table ? table->eval(lambdaNm) : a + b / (lambdaNm * lambdaNm); }
   bool isConstant() const { return !table && b == 0.0f; }
-  // The smallest index over the visible range 360-830 nm (1 nm steps for a table).
+  // The smallest index over 300-830 nm, the range Columba models (1 nm steps for a table).
   float minimumVisible() const;
 
   static RefractiveIndex constant(float n) { return {n, 0.0f, nullptr}; }

@@ -94,11 +94,15 @@ const ObserverDefinition* findObserverDefinition(const std::string& name) {
   return nullptr;
 }
 
-Observer namedObserver(const std::string& name, const SpectralGrid& grid) {
-  if (const ObserverDefinition* d = findObserverDefinition(name)) return makeObserver(*d, grid);
+std::string builtinObserverNames() {
   std::string known;
   for (const ObserverDefinition& d : builtinObserverDefinitions()) known += (known.empty() ? "" : ", ") + d.name;
-  throw std::invalid_argument("unknown observer '" + name + "' (known: " + known + ")");
+  return known;
+}
+
+Observer namedObserver(const std::string& name, const SpectralGrid& grid) {
+  if (const ObserverDefinition* d = findObserverDefinition(name)) return makeObserver(*d, grid);
+  throw std::invalid_argument("unknown observer '" + name + "' (known: " + builtinObserverNames() + ")");
 }
 
 std::vector<Observer> readEndlerMielkeObservers(std::istream& table) {

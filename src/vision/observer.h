@@ -63,6 +63,8 @@ Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& 
 
 // The built-in definitions (docs/vision.md lists each with its sources).
 const std::vector<ObserverDefinition>& builtinObserverDefinitions();
+// Their names, comma-separated, for messages and help.
+std::string builtinObserverNames();
 // The definition of that name, or nullptr.
 const ObserverDefinition* findObserverDefinition(const std::string& name);
 // The built-in observer of that name on the grid; throws std::invalid_argument naming the known ones.

@@ -497,3 +497,56 @@ TEST_F(CliTest, SlurmMakesItsOutputDirectory) {
   EXPECT_NE(refused.status, 0);
   EXPECT_NE(refused.output.find("'" + file + "' is a file, not a directory"), std::string::npos) << refused.output;
 }
+
+namespace {
+// The rows of a CSV file without its comment lines, the header first, each split at commas.
+std::vector<std::vector<std::string>> csvRows(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
+  CommandResult r =
+      run("bsdf --preset dove-green --mode specular --angles 0,30 --observer bluetit -o " + dir_.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  // pavo's layout: wl, then a spectrum a column, 1 nm over 300-700 nm, no comments; the same values as
+  // the full table's total columns.
+  const auto pavo = csvRows(dir_ / "bsdf_specular_pavo.csv");
+  ASSERT_EQ(pavo.size(), 402u);
+  EXPECT_EQ(pavo[0], (std::vector<std::string>{"wl", "total_theta0", "total_theta30"}));
+  EXPECT_EQ(pavo[1][0], "300");
+  EXPECT_EQ(pavo[401][0], "700");
+  const auto full = csvRows(dir_ / "bsdf_specular.csv");
+  ASSERT_EQ(full[0].back(), "total_theta30");
+  EXPECT_EQ(full[1].back(), pavo[1].back());
+  EXPECT_EQ(full[401].back(), pavo[401].back());
+  // Cone catches: relative catches sum to 1, the first angle is 0 JND from itself and the second is not.
+  const auto catches = csvRows(dir_ / "bsdf_specular_catches.csv");
+  ASSERT_EQ(catches.size(), 3u);
+  EXPECT_EQ(catches[0], (std::vector<std::string>{"light_theta_deg", "UVS", "SWS", "MWS", "LWS", "relative_UVS",
+                                                  "relative_SWS", "relative_MWS", "relative_LWS", "dS_jnd"}));
+  for (size_t row = 1; row < 3; ++row) {
+    double sum = 0.0;
+    for (size_t c = 5; c < 9; ++c) sum += std::stod(catches[row][c]);
+    EXPECT_NEAR(sum, 1.0, 1e-5);
+  }
+  EXPECT_EQ(std::stod(catches[1][9]), 0.0);
+  EXPECT_GT(std::stod(catches[2][9]), 1.0);
+  // An unknown observer, or one without the specular spectra it measures, is refused.
+  CommandResult unknown = run("bsdf --mode specular --observer budgie -o " + dir_.string());
+  EXPECT_NE(unknown.status, 0);
+  EXPECT_NE(unknown.output.find("unknown observer 'budgie' (known: bluetit)"), std::string::npos) << unknown.output;
+  CommandResult withoutSpecular = run("bsdf --mode spectra --observer bluetit -o " + dir_.string());
+  EXPECT_NE(withoutSpecular.status, 0);
+  EXPECT_NE(withoutSpecular.output.find("add --mode specular"), std::string::npos) << withoutSpecular.output;
+}

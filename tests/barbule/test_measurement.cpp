@@ -89,7 +89,7 @@ TEST(BarbuleMeasurement, SpecularPeaksAreTheFilmsInterferenceMaxima) {
       BarbuleParameters p;
       p.height = height;
       BarbuleBSDF bsdf(p);
-      const std::vector<float> lambdas = visibleWavelengthGrid(1.0f);
+      const std::vector<float> lambdas = wavelengthGrid(kLambdaMin, 1.0f);
       LobeSpectra s = specularSpectra(bsdf.model(), directionFromAngles(degToRad(thetaDeg), 0.0f), lambdas);
       std::vector<float> found;
       for (float peak : peakWavelengths(lambdas, s.reflection))

@@ -97,3 +97,19 @@ TEST_F(SpectraTable, ARetroDirectionInTheLongLayoutIsWarnedAbout) {
   EXPECT_NE(warnings.find("retro.csv:2: phi_o equals phi_i"), std::string::npos) << warnings;
   EXPECT_EQ(warnings.find("retro.csv:3"), std::string::npos) << "warned once: " << warnings;
 }
+
+TEST_F(SpectraTable, SpectraFromTheUltravioletAreReadAndShorterOnesRefused) {
+  // Biologists measure from 300 nm, where birds' cones begin; below it is an error naming the line.
+  SpectraGeometry mirror;
+  mirror.thetaI = {20.0f};
+  const std::vector<SpectraSample> s = readSpectraCSV(write("uv.csv", "wl,R\n300,0.05\n350,0.1\n700,0.2\n"), mirror);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].wavelength, 300.0f);
+  try {
+    readSpectraCSV(write("deep.csv", "wl,R\n299,0.05\n350,0.1\n"), mirror);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("deep.csv:2: wavelength_nm 299 lies outside 300..830 nm"), std::string::npos)
+        << e.what();
+  }
+}
