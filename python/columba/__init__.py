@@ -114,7 +114,9 @@ def render(scene, spp=None, seed=0, threads=None, stats=False, adaptive=False, t
     adaptive=True (as `columba render --adaptive`) makes spp the mean budget per pixel, spent
     where the pilot's neighbouring samples vary most; target_error (e.g. 0.02, implies adaptive)
     stops at the budget its plan predicts for that relative RMSE. The stats then also hold the
-    pilot, the fewest and most samples per pixel and the predicted relative error.
+    pilot, the fewest and most samples per pixel and the predicted relative error. A scene whose
+    film has a bird's observer (docs/vision.md) adds "cones": its cone catches as a dict of H x W
+    arrays named after the cones.
     """
     if spp is not None and spp < 1:
         raise ValueError(f"spp must be between 1 and {1 << 24}, not {spp}")

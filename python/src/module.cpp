@@ -88,6 +88,19 @@ py::array_t<float> imageArray(Image&& image) {
 
 namespace {
 
+// An image's cone catches as a dict of H x W arrays named after the cones (empty without them).
+py::dict coneArrays(const Image& image) {
+  py::dict cones;
+  const size_t k = image.cones.count();
+  for (size_t c = 0; c < k; ++c) {
+    py::array_t<float> plane({py::ssize_t(image.height), py::ssize_t(image.width)});
+    float* out = plane.mutable_data();
+    for (size_t p = 0; p < size_t(image.width) * size_t(image.height); ++p) out[p] = image.cones.values[p * k + c];
+    cones[py::str(image.cones.names[c])] = plane;
+  }
+  return cones;
+}
+
 // Renders on a worker thread while the calling thread, without the GIL, looks for signals every
 // 50 ms: Ctrl-C (or any Python signal handler that raises) stops the render before its next
 // sample and the exception propagates.
@@ -148,6 +161,7 @@ py::tuple renderScene(const PyScene& s, int spp, uint64_t seed, int threads, boo
     }
   }
   py::dict info;
+  if (image.cones.count() > 0) info["cones"] = coneArrays(image);
   info["seconds"] = stats.seconds;
   info["samples"] = stats.samples;
   info["rays"] = stats.rays;
@@ -242,21 +256,7 @@ PYBIND11_MODULE(_columba, m) {
       },
       py::arg("path"));
   m.def(
-      "_read_cones",
-      [](const std::string& path) {
-        const Image image = readImageFile(path);
-        py::dict cones;
-        const size_t k = image.cones.count();
-        for (size_t c = 0; c < k; ++c) {
-          py::array_t<float> plane({py::ssize_t(image.height), py::ssize_t(image.width)});
-          float* out = plane.mutable_data();
-          for (size_t p = 0; p < size_t(image.width) * size_t(image.height); ++p)
-            out[p] = image.cones.values[p * k + c];
-          cones[py::str(image.cones.names[c])] = plane;
-        }
-        return cones;
-      },
-      py::arg("path"));
+      "_read_cones", [](const std::string& path) { return coneArrays(readImageFile(path)); }, py::arg("path"));
   m.def("to_srgb", py::vectorize(toSRGB8), py::arg("linear"),
         "The 8-bit sRGB encoding of linear values (uint8), as PNGs are written");
   m.def("from_srgb", py::vectorize(srgbToLinear), py::arg("encoded"),

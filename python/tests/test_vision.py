@@ -56,3 +56,28 @@ def test_mistakes_are_errors():
         columba.observer("pigeon")
     with pytest.raises(ValueError, match="one row per wavelength"):
         columba.cone_catches(WL, np.ones(10))
+
+
+def test_a_render_seen_by_a_bird_gives_its_cone_catches():
+    # A grey plate (0.5) under a white (D65) directional light of irradiance pi: every cone, adapted
+    # to D65, catches 0.5, as RGB is 0.5.
+    xml = """<scene version="3.0.0"><integrator type="direct"/>
+      <sensor type="perspective"><float name="fov" value="1"/>
+        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/>
+          <string name="observer" value="bluetit"/></film>
+        <sampler type="ldsampler"><integer name="sample_count" value="256"/></sampler></sensor>
+      <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
+        <bsdf type="diffuse"><float name="reflectance" value="0.5"/></bsdf></shape>
+      <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
+        <float name="irradiance" value="3.14159265"/></emitter></scene>"""
+    image, info = columba.render(columba.load_string(xml), stats=True)
+    assert sorted(info["cones"]) == ["LWS", "MWS", "SWS", "UVS"]
+    for name, catches in info["cones"].items():
+        assert catches.shape == (4, 4)
+        assert catches.mean() == pytest.approx(0.5, rel=0.01), name
+    assert image.mean() == pytest.approx(0.5, rel=0.01)
+    # No observer, no cones.
+    plain, plain_info = columba.render(columba.load_string(xml.replace('<string name="observer" value="bluetit"/>', "")),
+                                       stats=True)
+    assert "cones" not in plain_info

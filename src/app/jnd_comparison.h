@@ -1,0 +1,32 @@
+#pragma once
+// `columba compare --jnd`: how far apart two renders' colours are for a bird, in just noticeable
+// differences (receptor-noise-limited distance of their cone catches; docs/vision.md).
+#include <optional>
+#include <string>
+#include "io/image.h"
+#include "vision/observer.h"
+
+namespace columba {
+
+struct JndOptions {
+  std::string observer;                       // "" : the one image A's Observer attribute names
+  std::optional<PixelRect> regionA, regionB;  // compare these regions' mean catches instead of pixels
+  std::string output;                         // per-pixel dS as an EXR (and its PNG); "" for none
+};
+
+// The observer the comparison uses: `options.observer`, else the one `a`'s metadata names; its
+// chromatic channels must be among both images' cone channels. Throws std::runtime_error saying
+// what is missing.
+Observer jndObserver(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
+                     const std::string& observer);
+
+// Prints the distances (per pixel: how many pixels, their mean, median, 95th percentile and
+// largest dS; per region: dS of the regions' mean catches) and writes the per-pixel map.
+void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
+                    const JndOptions& options);
+
+// "X0,Y0,X1,Y1" as a rectangle of pixels [X0, X1) x [Y0, Y1) inside an image of width x height;
+// throws std::runtime_error naming `what` and the text.
+PixelRect parsePixelRect(const std::string& text, int width, int height, const std::string& what);
+
+}  // namespace columba

@@ -1,0 +1,79 @@
+// columba compare --jnd: the colour distance a bird sees between two renders' cone catches, pixel by
+// pixel and between regions, against the receptor-noise-limited distance of the same catches.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "io/image.h"
+#include "support/cli_test_support.h"
+#include "support/temp_dir_test.h"
+#include "vision/colour_distance.h"
+
+namespace fs = std::filesystem;
+using namespace columba;
+using columba::testing::CommandResult;
+using columba::testing::run;
+
+namespace {
+class JndComparison : public columba::testing::TempDirTest {
+ protected:
+  // A 2 x 1 image of the blue tit's four cones, as a render with that observer records it.
+  std::string coneImage(const std::string& name, std::vector<float> catches) {
+    Image image(2, 1);
+    image.cones.names = {"UVS", "SWS", "MWS", "LWS"};
+    image.cones.values = std::move(catches);
+    const std::string path = (dir_ / name).string();
+    writeEXR(path, image, {{"Observer", "bluetit: quantum catches of UVS, SWS, MWS, LWS"}});
+    return path;
+  }
+};
+}  // namespace
+
+TEST_F(JndComparison, PixelsAndRegionsAreAsFarApartAsTheirCatchesAre) {
+  // Pixel 0 differs only in the LWS cone (e times more), pixel 1 not at all.
+  const std::string a = coneImage("a.exr", {1, 1, 1, 1, 0.2f, 0.4f, 0.6f, 0.8f});
+  const std::string b = coneImage("b.exr", {1, 1, 1, float(std::exp(1.0)), 0.2f, 0.4f, 0.6f, 0.8f});
+  const Observer o = namedObserver("bluetit");
+  const double expected = chromaticDistance(o, {{1, 1, 1, 1}, {}}, {{1, 1, 1, std::exp(1.0)}, {}});
+  ASSERT_GT(expected, 1.0);
+  CommandResult r = run("compare --jnd " + a + " " + b + " -o " + (dir_ / "maps/dS.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("over 2 of 2 pixels")), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("largest {:.3f} JND", expected)), std::string::npos) << r.output;
+  const Image map = readEXR((dir_ / "maps/dS.exr").string());
+  EXPECT_NEAR(map.rgb[0], expected, 1e-4 * expected);
+  EXPECT_EQ(map.rgb[3], 0.0f);
+  EXPECT_TRUE(fs::exists(dir_ / "maps/dS.png"));
+  // Regions: A's pixel 1 against B's pixel 0, from their (here single-pixel) mean catches.
+  const double across = chromaticDistance(o, {{0.2, 0.4, 0.6, 0.8}, {}}, {{1, 1, 1, std::exp(1.0)}, {}});
+  r = run("compare --jnd " + a + " " + b + " --region 1,0,2,1 --region-b 0,0,1,1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("dS = {:.3f} JND", across)), std::string::npos) << r.output;
+}
+
+TEST_F(JndComparison, ImagesWithoutConesAndBadRegionsAreRefused) {
+  const std::string a = coneImage("a.exr", {1, 1, 1, 1, 1, 1, 1, 1});
+  Image rgb(2, 1);
+  const std::string plain = (dir_ / "rgb.exr").string();
+  writeEXR(plain, rgb);
+  CommandResult r = run("compare --jnd " + a + " " + plain);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("has no UVS channel"), std::string::npos) << r.output;
+  r = run("compare --jnd " + plain + " " + plain);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("names no observer"), std::string::npos) << r.output;
+  r = run("compare --jnd " + a + " " + a + " --region 0,0,3,1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--region '0,0,3,1' is not a non-empty rectangle inside the image of 2 x 1"),
+            std::string::npos)
+      << r.output;
+  r = run("compare --jnd " + a + " " + a + " --observer budgie");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("unknown observer 'budgie'"), std::string::npos) << r.output;
+  r = run("compare " + a + " " + a + " --region 0,0,1,1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("add --jnd"), std::string::npos) << r.output;
+}
