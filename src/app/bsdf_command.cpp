@@ -18,6 +18,7 @@
 #include "plot/line_plot.h"
 #include "scene/xml_values.h"
 #include "vision/colour_distance.h"
+#include "vision/observer_table.h"
 
 namespace columba {
 
@@ -198,7 +199,7 @@ CsvTable pavoTable(const BSDFOptions& o, const std::vector<float>& lambdas,
 void measureConeCatches(const BSDFOptions& o, const std::vector<float>& lambdas,
                         const std::vector<std::vector<float>>& totals, const fs::path& dir, nlohmann::json& record,
                         std::vector<std::string>& written) {
-  const Observer observer = namedObserver(o.observer);
+  const Observer observer = observerNamedOrTabulated(o.observer);
   const std::vector<float> illuminant = tabulateOnGrid(observer.grid, [](double l) { return d65(float(l)); });
   CsvTable table{{fmt::format("cone catches of the specular spectra (total) for the {} observer, lit by D65 and "
                               "adapted to a white under it (von Kries); relative catches sum to 1; dS: "
@@ -453,12 +454,13 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
   cmd->add_option("-o,--output", o->outputDir, "Output directory, made if missing (default: the working directory)");
   cmd->add_option("--observer", o->observer,
-                  "A bird's visual system (" + builtinObserverNames() +
+                  "A bird's visual system (" + builtinObserverNames() + ", or a table of sensitivities, FILE.csv" +
                       "): with --mode specular, each spectrum's cone catches and colour distances "
                       "(bsdf_specular_catches.csv)")
       ->check([](const std::string& name) {
-        return findObserverDefinition(name) ? std::string()
-                                            : "unknown observer '" + name + "' (known: " + builtinObserverNames() + ")";
+        return findObserverDefinition(name) || namesObserverTable(name)
+                   ? std::string()
+                   : "unknown observer '" + name + "' (known: " + builtinObserverNames() + "; or a table, FILE.csv)";
       });
   cmd->callback([o, given, cmd] {
     if (!o->observer.empty() && std::find(o->modes.begin(), o->modes.end(), "specular") == o->modes.end())

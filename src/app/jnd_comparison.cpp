@@ -9,6 +9,7 @@
 
 #include "io/output_directory.h"
 #include "vision/colour_distance.h"
+#include "vision/observer_table.h"
 
 namespace columba {
 
@@ -88,9 +89,12 @@ Observer jndObserver(const EXRImageFile& a, const EXRImageFile& b, const std::st
       throw std::runtime_error(
           fmt::format("'{}' names no observer (it has no Observer attribute): give --observer", pathA));
   }
-  if (!findObserverDefinition(name))
-    throw std::runtime_error(fmt::format("unknown observer '{}' (known: {})", name, builtinObserverNames()));
-  Observer o = namedObserver(name);
+  if (!namesObserverTable(name) && !findObserverDefinition(name))
+    throw std::runtime_error(
+        fmt::format("unknown observer '{}' (known: {}; or a table of sensitivities, FILE.csv: "
+                    "give the table the image was rendered with as --observer)",
+                    name, builtinObserverNames()));
+  Observer o = observerNamedOrTabulated(name);
   channelIndices(a.image, o, pathA);
   channelIndices(b.image, o, pathB);
   return o;

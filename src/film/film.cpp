@@ -11,7 +11,7 @@ Mitsuba 3: the same size and crop parameters and defaults; only OpenEXR is writt
 | file_format | string | `openexr` | `openexr` or `exr`; anything else is an error | also `rgbe`, `pfm` and others |
 | pixel_format | string | `rgb` | the EXR's channels: `rgb`, `luminance` (Y) or `xyz` (CIE XYZ); `rgba`, `luminance_alpha` and `xyza` are written without alpha, with a warning naming the line, as no coverage is computed. The pieces of a split render and their merge stay RGB | alpha formats write coverage |
 | component_format | string | `float16` | `float16` or `float32`, accepted; the values are always written as float32 | chooses the stored precision |
-| observer | string | `cie1931` | the visual system the image is seen by: `cie1931` (the human observer; RGB only) or a bird's (`rockdove`, `bluetit`, ...: docs/vision.md). A bird's film records each cone's quantum catch beside RGB, as EXR channels named after the cones (`VS`, `SWS`, `MWS`, `LWS`, ...), draws wavelengths over 300-830 nm in proportion to the cones' sensitivities, and writes a false-colour PNG (red LWS, green MWS, blue SWS, the UV/violet cone as magenta) | not in Mitsuba 3 |
+| observer | string | `cie1931` | the visual system the image is seen by: `cie1931` (the human observer; RGB only), a built-in bird's (`bluetit`: docs/vision.md) or a table of a bird's sensitivities, `FILE.csv` (a `wl` column and columns named after the cones; docs/vision.md, "Observers from a table"). A bird's film records each cone's quantum catch beside RGB, as EXR channels named after the cones (`VS`, `SWS`, `MWS`, `LWS`, ...), draws wavelengths over 300-830 nm in proportion to the cones' sensitivities, and writes a false-colour PNG (red LWS, green MWS, blue SWS, the UV/violet cone as magenta) | not in Mitsuba 3 |
 | adaptation | string | `d65` | with a bird's `observer`: the white the catches are relative to (von Kries): `d65` (a white diffuse surface under a white Columba emitter catches 1 in every cone) or `none` (absolute catches, also the adaptation to an equal-quantum white) | not in Mitsuba 3 |
 */
 #include "film/film.h"
@@ -22,6 +22,7 @@ Mitsuba 3: the same size and crop parameters and defaults; only OpenEXR is writt
 #include <stdexcept>
 
 #include "film/gaussian_filter.h"
+#include "vision/observer_table.h"
 
 namespace columba {
 
@@ -109,9 +110,11 @@ std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
       throw props.error("adaptation", e.what());
     }
     try {
-      observer = std::make_shared<ObserverResponse>(namedObserver(observerName), adaptation);
+      const Observer o = namesObserverTable(observerName) ? readObserverTableFile(props.getPath("observer"))
+                                                          : observerNamedOrTabulated(observerName);
+      observer = std::make_shared<ObserverResponse>(o, adaptation);
     } catch (const std::invalid_argument& e) {
-      throw props.error("observer", std::string(e.what()) + " or cie1931 (the human observer)");
+      throw props.error("observer", std::string(e.what()) + "; cie1931 is the human observer");
     }
   } else if (props.has("adaptation")) {
     warn(props.locationOf("adaptation"),
