@@ -124,8 +124,8 @@ void bindVision(py::module_& m) {
       "observers",
       [] {
         py::list names;
-        for (const ObserverDefinition& d : builtinObserverDefinitions())
-          names.append(py::dict(py::arg("name") = d.name, py::arg("description") = d.description));
+        for (const auto& [name, description] : builtinObservers())
+          names.append(py::dict(py::arg("name") = name, py::arg("description") = description));
         return names;
       },
       "The built-in avian observers: a list of {name, description} (docs/vision.md gives their sources)");

@@ -458,7 +458,7 @@ void addBSDFCommand(CLI::App& app) {
                       "): with --mode specular, each spectrum's cone catches and colour distances "
                       "(bsdf_specular_catches.csv)")
       ->check([](const std::string& name) {
-        return findObserverDefinition(name) || namesObserverTable(name)
+        return isBuiltinObserver(name) || namesObserverTable(name)
                    ? std::string()
                    : "unknown observer '" + name + "' (known: " + builtinObserverNames() + "; or a table, FILE.csv)";
       });

@@ -89,7 +89,7 @@ Observer jndObserver(const EXRImageFile& a, const EXRImageFile& b, const std::st
       throw std::runtime_error(
           fmt::format("'{}' names no observer (it has no Observer attribute): give --observer", pathA));
   }
-  if (!namesObserverTable(name) && !findObserverDefinition(name))
+  if (!namesObserverTable(name) && !isBuiltinObserver(name))
     throw std::runtime_error(
         fmt::format("unknown observer '{}' (known: {}; or a table of sensitivities, FILE.csv: "
                     "give the table the image was rendered with as --observer)",

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "vision/endler_mielke_table.h"
 #include "vision/visual_pigment.h"
 
 namespace columba {
@@ -94,14 +95,56 @@ const ObserverDefinition* findObserverDefinition(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+// pavo's avg.uv and avg.v, read once from the compiled-in table.
+const std::vector<Observer>& endlerMielkeObservers() {
+  static const std::vector<Observer> observers = [] {
+    std::istringstream table(kEndlerMielkeTable);
+    return readEndlerMielkeObservers(table);
+  }();
+  return observers;
+}
+
+const Observer* findTabulatedObserver(const std::string& name) {
+  for (const Observer& o : endlerMielkeObservers())
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+Observer onGrid(const Observer& tabulated, const SpectralGrid& grid) {
+  std::vector<double> x(tabulated.grid.count);
+  for (size_t i = 0; i < x.size(); ++i) x[i] = tabulated.grid.wavelength(i);
+  Observer o = tabulated;
+  o.grid = grid;
+  for (std::vector<float>& s : o.sensitivities) {
+    const std::vector<double> y(s.begin(), s.end());
+    s = tabulateOnGrid(grid, [&](double l) { return interpolateTabulated(x, y, l); });
+  }
+  return o;
+}
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> builtinObservers() {
+  std::vector<std::pair<std::string, std::string>> list;
+  for (const ObserverDefinition& d : builtinObserverDefinitions()) list.emplace_back(d.name, d.description);
+  list.emplace_back("avg.uv", "average ultraviolet-sensitive bird (Endler & Mielke 2005; pavo's avg.uv)");
+  list.emplace_back("avg.v", "average violet-sensitive bird (Endler & Mielke 2005; pavo's avg.v)");
+  return list;
+}
+
+bool isBuiltinObserver(const std::string& name) {
+  return findObserverDefinition(name) != nullptr || findTabulatedObserver(name) != nullptr;
+}
+
 std::string builtinObserverNames() {
   std::string known;
-  for (const ObserverDefinition& d : builtinObserverDefinitions()) known += (known.empty() ? "" : ", ") + d.name;
+  for (const auto& [name, description] : builtinObservers()) known += (known.empty() ? "" : ", ") + name;
   return known;
 }
 
 Observer namedObserver(const std::string& name, const SpectralGrid& grid) {
   if (const ObserverDefinition* d = findObserverDefinition(name)) return makeObserver(*d, grid);
+  if (const Observer* o = findTabulatedObserver(name)) return onGrid(*o, grid);
   throw std::invalid_argument("unknown observer '" + name + "' (known: " + builtinObserverNames() + ")");
 }
 

@@ -5,6 +5,7 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vision/oil_droplet.h"
@@ -63,11 +64,16 @@ Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& 
 
 // The built-in definitions (docs/vision.md lists each with its sources).
 const std::vector<ObserverDefinition>& builtinObserverDefinitions();
+// Every built-in observer, {name, description}: the parametric ones above, then pavo's tabulated
+// averages avg.uv and avg.v (the Endler & Mielke table, compiled in).
+std::vector<std::pair<std::string, std::string>> builtinObservers();
+bool isBuiltinObserver(const std::string& name);
 // Their names, comma-separated, for messages and help.
 std::string builtinObserverNames();
 // The definition of that name, or nullptr.
 const ObserverDefinition* findObserverDefinition(const std::string& name);
-// The built-in observer of that name on the grid; throws std::invalid_argument naming the known ones.
+// The built-in observer of that name on the grid (a tabulated one interpolated onto it, zero beyond
+// its table); throws std::invalid_argument naming the known ones.
 Observer namedObserver(const std::string& name, const SpectralGrid& grid = visionGrid());
 
 // pavo's average ultraviolet- and violet-sensitive avian observers, avg.uv and avg.v, read from the
@@ -76,7 +82,7 @@ Observer namedObserver(const std::string& name, const SpectralGrid& grid = visio
 // eight sensitivities times 100: UVS, SWS, MWS, LWS of the UV eye, then VS, SWS, MWS, LWS of the
 // violet eye, 300-700 nm in 1 nm steps). The sensitivities are divided by 100, as pavo does; each then
 // has area 1. Returns {avg.uv, avg.v}, with pavo's coldist defaults for the noise (densities 1:2:2:4,
-// Weber fraction 0.1 of the LWS cone). Columba does not ship the table.
+// Weber fraction 0.1 of the LWS cone). Columba compiles the table in (data/vision/).
 std::vector<Observer> readEndlerMielkeObservers(std::istream& table);
 
 }  // namespace columba

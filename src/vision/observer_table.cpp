@@ -38,15 +38,6 @@ double number(const std::string& text, const std::string& path, int line, const 
     throw InputError({path, line}, "column '" + column + "': '" + text + "' is not a number");
   return v;
 }
-
-// Linear interpolation of (x, y) at t, 0 outside [x.front(), x.back()].
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
-  if (t < x.front() || t > x.back()) return 0.0;
-  const size_t i = std::min(size_t(std::upper_bound(x.begin(), x.end(), t) - x.begin()), x.size() - 1);
-  if (i == 0) return y.front();
-  const double f = (t - x[i - 1]) / (x[i] - x[i - 1]);
-  return (1.0 - f) * y[i - 1] + f * y[i];
-}
 }  // namespace
 
 Observer readObserverTable(std::istream& table, const std::string& path, const std::string& name) {
@@ -109,7 +100,8 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
     const std::vector<double>& column = columns[size_t(at - header.begin()) - 1];
     std::vector<double> curve(o.grid.count);
     double area = 0.0;
-    for (size_t i = 0; i < o.grid.count; ++i) area += curve[i] = interpolate(wavelengths, column, o.grid.wavelength(i));
+    for (size_t i = 0; i < o.grid.count; ++i)
+      area += curve[i] = interpolateTabulated(wavelengths, column, o.grid.wavelength(i));
     area *= o.grid.stepNm;
     if (!(area > 0.0))
       throw InputError({path, headerLine}, "column '" + cone + "' has no sensitivity between 300 and 830 nm");
@@ -139,7 +131,7 @@ bool namesObserverTable(const std::string& text) {
 
 Observer observerNamedOrTabulated(const std::string& nameOrPath) {
   if (namesObserverTable(nameOrPath)) return readObserverTableFile(nameOrPath);
-  if (!findObserverDefinition(nameOrPath))
+  if (!isBuiltinObserver(nameOrPath))
     throw std::invalid_argument("unknown observer '" + nameOrPath + "' (known: " + builtinObserverNames() +
                                 "; or a table of sensitivities, FILE.csv)");
   return namedObserver(nameOrPath);

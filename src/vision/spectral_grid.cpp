@@ -1,5 +1,7 @@
 #include "vision/spectral_grid.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -32,6 +34,14 @@ std::vector<float> tabulateOnGrid(const SpectralGrid& grid, const std::function<
   std::vector<float> values(grid.count);
   for (std::size_t i = 0; i < grid.count; ++i) values[i] = float(f(grid.wavelength(i)));
   return values;
+}
+
+double interpolateTabulated(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  if (x.empty() || t < x.front() || t > x.back()) return 0.0;
+  const size_t i = std::min(size_t(std::upper_bound(x.begin(), x.end(), t) - x.begin()), x.size() - 1);
+  if (i == 0) return y.front();
+  const double f = (t - x[i - 1]) / (x[i] - x[i - 1]);
+  return (1.0 - f) * y[i - 1] + f * y[i];
 }
 
 }  // namespace columba

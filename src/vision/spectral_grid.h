@@ -26,6 +26,8 @@ SpectralGrid visionGrid();
 // The sum of values times the grid step; throws std::invalid_argument where the sizes differ.
 double integrateOnGrid(const SpectralGrid& grid, const std::vector<float>& values);
 
+// Values given at increasing wavelengths `x` (nm), linear between them and 0 outside, at `t`.
+double interpolateTabulated(const std::vector<double>& x, const std::vector<double>& y, double t);
 // f at each wavelength of the grid.
 std::vector<float> tabulateOnGrid(const SpectralGrid& grid, const std::function<double(double)>& f);
 

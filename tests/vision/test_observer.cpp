@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -117,14 +116,27 @@ TEST(VisionObserver, ReadsEndlerMielkeLayout) {
   EXPECT_THROW(readEndlerMielkeObservers(ragged), std::invalid_argument);
 }
 
-TEST(VisionObserver, EndlerMielkeAveragesHaveAreaOne) {
-  // The published table itself, where it is kept beside the repository (pavo's
-  // data-raw/Endler_Mielke_2005_onlineappendix.txt); Columba does not ship it.
-  std::ifstream file(std::string(COLUMBA_SHARED_DIR) + "/vision/Endler_Mielke_2005_onlineappendix.txt");
-  if (!file) GTEST_SKIP() << "the Endler & Mielke (2005) table is not in " << COLUMBA_SHARED_DIR << "/vision";
-  std::vector<Observer> observers = readEndlerMielkeObservers(file);
-  for (const Observer& o : observers) {
-    EXPECT_EQ(o.grid.count, 401u);
-    for (const std::vector<float>& s : o.sensitivities) EXPECT_NEAR(integrateOnGrid(o.grid, s), 1.0, 1e-5);
+TEST(VisionObserver, PavosAveragesAreBuiltInFromEndlerAndMielke) {
+  // The compiled-in appendix of Endler & Mielke (2005): each curve of area 1 over 300-700 nm, zero
+  // beyond on the 300-830 nm grid; the cones peak in the order their names say, the UV eye's first
+  // cone below 400 nm and the violet eye's above it.
+  for (const char* name : {"avg.uv", "avg.v"}) {
+    ASSERT_TRUE(isBuiltinObserver(name));
+    const Observer o = namedObserver(name);
+    EXPECT_EQ(o.grid.count, 531u);
+    ASSERT_EQ(o.sensitivities.size(), 4u);
+    double previousPeak = 0.0;
+    for (const std::vector<float>& s : o.sensitivities) {
+      EXPECT_NEAR(integrateOnGrid(o.grid, s), 1.0, 1e-5) << name;
+      EXPECT_EQ(s[size_t(750 - 300)], 0.0f) << name;
+      const double peak = o.grid.wavelength(size_t(std::max_element(s.begin(), s.end()) - s.begin()));
+      EXPECT_GT(peak, previousPeak) << name;
+      previousPeak = peak;
+    }
+    const double shortest = o.grid.wavelength(
+        size_t(std::max_element(o.sensitivities[0].begin(), o.sensitivities[0].end()) - o.sensitivities[0].begin()));
+    EXPECT_EQ(shortest < 400.0, std::string(name) == "avg.uv") << name << " " << shortest;
   }
+  EXPECT_EQ(namedObserver("avg.v").channels, (std::vector<std::string>{"VS", "SWS", "MWS", "LWS"}));
+  EXPECT_NE(builtinObserverNames().find("bluetit, avg.uv, avg.v"), std::string::npos) << builtinObserverNames();
 }
