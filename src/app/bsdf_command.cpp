@@ -131,6 +131,11 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
   f.plot.xMin = kSpectralMin;
   f.plot.xMax = kLambdaMax;
   f.table = {{quantity, describeParameters(o)}, {"wavelength_nm"}, std::vector<std::vector<double>>(lambdas.size())};
+  // Spectra start at 300 nm, below the range keratin's index was measured in (docs/vision.md).
+  if (lambdas.front() < 400.0f && o.filmIOR.empty() && std::isnan(o.cauchyA))
+    f.table.comments.push_back(
+        "below 400 nm keratin's index extrapolates the Cauchy fit of Leertouwer, Wilts & Stavenga (2011), "
+        "measured in the visible");
   for (size_t i = 0; i < lambdas.size(); ++i) f.table.rows[i].push_back(lambdas[i]);
   return f;
 }
