@@ -48,7 +48,7 @@ from . import _columba  # noqa: E402
 __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image", "read_cones",
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
-    "fresnel", "fresnel_amplitudes", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
+    "fresnel", "fresnel_amplitudes", "multilayer", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
     "observers", "observer", "cone_catches", "colour_distance",
 ]
@@ -168,6 +168,20 @@ def thin_film(theta_deg, wavelength, thickness, film_ior="keratin", n_outside=1.
     shape = t.shape
     out = _columba._thin_film(t.ravel(), w.ravel(), d.ravel(), film_ior, float(n_outside), substrate_ior)
     return {k: v.reshape(shape) for k, v in out.items()}
+
+
+def multilayer(theta_deg, wavelength, layers, n_outside=1.000277, substrate_ior=1.000277):
+    """Intensity reflectance and transmittance of a stack of plane layers (transfer matrices).
+
+    theta_deg: angle of incidence (degrees) in the outer medium; wavelength in nm; both broadcast.
+    layers: a list of (index, thickness_um) from the outer side; an index is a complex number
+    n + ik (k > 0 absorbs, e.g. melanin), "keratin", a named index, a number or Cauchy's (a, b).
+    substrate_ior: the medium behind the stack (complex allowed). Returns a dict of float64 arrays
+    Rs, Rp, R, Ts, Tp, T and A (absorbed, 1 - R - T).
+    """
+    t, w = _np.broadcast_arrays(_np.asarray(theta_deg, dtype=_np.float64), _np.asarray(wavelength, dtype=_np.float64))
+    out = _columba._multilayer(t.ravel(), w.ravel(), list(layers), n_outside, substrate_ior)
+    return {k: v.reshape(t.shape) for k, v in out.items()}
 
 
 def ior(index, wavelength):

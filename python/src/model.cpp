@@ -1,6 +1,7 @@
 // The barbule BSDF evaluated over numpy arrays, its virtual measurements, the optics it is built
 // from (thin film, Fresnel, dispersion, melanin) and the feather generator.
 #include <fmt/format.h>
+#include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -8,6 +9,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <complex>
+#include <functional>
 #include <string>
 
 #include "barbule/measurement.h"
@@ -20,6 +23,7 @@
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
 #include "optics/melanin.h"
+#include "optics/multilayer.h"
 #include "optics/thin_film.h"
 
 namespace py = pybind11;
@@ -392,6 +396,54 @@ py::dict thinFilm(const DoubleArray& theta, const DoubleArray& lambda, const Dou
   return d;
 }
 
+// A layer's complex index at a wavelength: a complex number (n + ik) taken as it is, otherwise an
+// index as indexFrom reads it (a name, a number, Cauchy's (a, b)).
+std::function<std::complex<double>(double)> complexIndexFrom(const py::object& value, const std::string& what) {
+  if (PyComplex_Check(value.ptr())) {
+    const std::complex<double> n = value.cast<std::complex<double>>();
+    return [n](double) { return n; };
+  }
+  const RefractiveIndex n = indexFrom(value, what);
+  return [n](double lambda) { return std::complex<double>(n(float(lambda)), 0.0); };
+}
+
+// Intensity reflectance and transmittance of a stack of layers (optics/multilayer.h) at each
+// (angle, wavelength) pair.
+py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const py::list& layers,
+                    const py::object& outside, const py::object& substrate) {
+  equalLengths({&theta, &lambda});
+  std::vector<std::function<std::complex<double>(double)>> indices;
+  std::vector<double> thicknesses;
+  for (const py::handle& item : layers) {
+    const py::tuple layer = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+    if (layer.size() != 2) throw py::value_error("a layer is (index, thickness_um)");
+    indices.push_back(complexIndexFrom(layer[0], "layer index"));
+    thicknesses.push_back(layer[1].cast<double>());
+  }
+  const RefractiveIndex outer = indexFrom(outside, "n_outside");
+  const auto inner = complexIndexFrom(substrate, "substrate_ior");
+  const py::ssize_t n = theta.size();
+  const char* names[] = {"Rs", "Rp", "R", "Ts", "Tp", "T", "A"};
+  std::vector<py::array_t<double>> out;
+  for (int k = 0; k < 7; ++k) out.emplace_back(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const double l = lambda.data()[i];
+    LayerStack stack{outer(float(l)), {}, inner(l)};
+    for (size_t j = 0; j < indices.size(); ++j) stack.layers.push_back({indices[j](l), thicknesses[j]});
+    MultilayerResponse r;
+    try {
+      r = multilayerResponse(stack, theta.data()[i] * (M_PI / 180.0), l);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());
+    }
+    const double values[] = {r.rs, r.rp, r.reflectance(), r.ts, r.tp, r.transmittance(), r.absorptance()};
+    for (int k = 0; k < 7; ++k) out[size_t(k)].mutable_data()[i] = values[k];
+  }
+  py::dict d;
+  for (int k = 0; k < 7; ++k) d[names[k]] = out[size_t(k)];
+  return d;
+}
+
 py::dict featherPly(const std::string& path) {
   FeatherPlyData data;
   {
@@ -536,6 +588,8 @@ void bindModel(py::module_& m) {
       py::arg("theta_deg"), py::arg("phi_deg") = 0.0f,
       "Unit direction at polar angle theta_deg from the vane normal and azimuth phi_deg from x (degrees)");
 
+  m.def("_multilayer", &multilayer, py::arg("theta_deg"), py::arg("wavelength"), py::arg("layers"),
+        py::arg("n_outside"), py::arg("substrate_ior"));
   m.def("_thin_film", &thinFilm, py::arg("theta_deg"), py::arg("wavelength"), py::arg("thickness"), py::arg("film_ior"),
         py::arg("n_outside"), py::arg("substrate_ior"));
   m.def("_ior", [](const py::object& index, const FloatArray& lambdas) {

@@ -1,0 +1,88 @@
+#include "optics/multilayer.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace columba {
+
+namespace {
+using Complex = std::complex<double>;
+using Matrix = std::array<Complex, 4>;  // row-major 2 x 2
+
+Matrix multiply(const Matrix& a, const Matrix& b) {
+  return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
+}
+
+// n cos(theta) in a medium of index n for light whose tangential wave-vector component is
+// n0 sin(theta0), on the branch of a wave that travels or decays away from the incident side.
+Complex normalComponent(Complex n, double tangential) {
+  Complex q = std::sqrt(n * n - tangential * tangential);
+  if (q.imag() < 0.0 || (q.imag() == 0.0 && q.real() < 0.0)) q = -q;
+  return q;
+}
+
+// Tilted admittances (in units of free space's) for s and p: n cos(theta) and n / cos(theta) =
+// n^2 / (n cos(theta)).
+struct Admittance {
+  Complex s, p;
+};
+Admittance admittance(Complex n, Complex q) { return {q, n * n / q}; }
+
+// r and t from the stack's [B, C] = M [1, eta_substrate] for one polarisation.
+void responseFor(const LayerStack& stack, const std::vector<Complex>& q, double lambdaNm, bool p, double& R,
+                 double& T) {
+  const double n0 = stack.incidentIndex;
+  auto eta = [&](Complex n, Complex qn) { return p ? admittance(n, qn).p : admittance(n, qn).s; };
+  Matrix m{1.0, 0.0, 0.0, 1.0};
+  for (size_t j = 0; j < stack.layers.size(); ++j) {
+    const Layer& layer = stack.layers[j];
+    const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q[j + 1];
+    const Complex e = eta(layer.index, q[j + 1]);
+    const Complex c = std::cos(delta), s = std::sin(delta);
+    // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
+    // matrix carries -i; Macleod's +i goes with n - ik.
+    m = multiply(m, {c, Complex(0.0, -1.0) * s / e, Complex(0.0, -1.0) * e * s, c});
+  }
+  const Complex eta0 = eta(n0, q.front()), etaS = eta(stack.substrateIndex, q.back());
+  const Complex B = m[0] + m[1] * etaS, C = m[2] + m[3] * etaS;
+  const Complex denominator = eta0 * B + C;
+  R = std::norm((eta0 * B - C) / denominator);
+  T = 4.0 * eta0.real() * etaS.real() / std::norm(denominator);
+}
+}  // namespace
+
+MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncident, double lambdaNm) {
+  auto check = [](Complex n, const char* what) {
+    if (!(n.real() > 0.0) || n.imag() < 0.0 || !std::isfinite(n.real()) || !std::isfinite(n.imag()))
+      throw std::invalid_argument(std::string(what) +
+                                  ": an index needs a positive real and a non-negative imaginary part");
+  };
+  check(stack.incidentIndex, "the incident medium");
+  check(stack.substrateIndex, "the substrate");
+  for (const Layer& layer : stack.layers) {
+    check(layer.index, "a layer");
+    if (!(layer.thicknessUm >= 0.0)) throw std::invalid_argument("a layer's thickness must not be negative");
+  }
+  const double tangential = stack.incidentIndex * std::sin(thetaIncident);
+  std::vector<Complex> q;
+  q.push_back(normalComponent(stack.incidentIndex, tangential));
+  for (const Layer& layer : stack.layers) q.push_back(normalComponent(layer.index, tangential));
+  q.push_back(normalComponent(stack.substrateIndex, tangential));
+  MultilayerResponse r;
+  responseFor(stack, q, lambdaNm, false, r.rs, r.ts);
+  responseFor(stack, q, lambdaNm, true, r.rp, r.tp);
+  return r;
+}
+
+LayerStack reversed(const LayerStack& stack) {
+  if (stack.substrateIndex.imag() != 0.0)
+    throw std::invalid_argument("a stack is seen from its substrate's side only through a transparent substrate");
+  LayerStack back;
+  back.incidentIndex = stack.substrateIndex.real();
+  back.layers.assign(stack.layers.rbegin(), stack.layers.rend());
+  back.substrateIndex = stack.incidentIndex;
+  return back;
+}
+
+}  // namespace columba

@@ -1,0 +1,44 @@
+#pragma once
+// Reflectance and transmittance of a stack of plane-parallel layers by the characteristic-matrix
+// (transfer-matrix) method (Born & Wolf, Principles of Optics, §1.6; Macleod, Thin-Film Optical
+// Filters, ch. 2): keratin, melanin with its complex index, air gaps, melanosome layers as
+// effective media. A single lossless film between equal media is the Airy film of thin_film.h.
+// Derivation and conventions in docs/model.md, "Layered films".
+#include <complex>
+#include <vector>
+
+namespace columba {
+
+// One layer: its complex index n + i k (k >= 0 absorbs) and its thickness in micrometres.
+struct Layer {
+  std::complex<double> index;
+  double thicknessUm = 0.0;
+};
+
+// The stack between an incident medium (real index, where the light comes from) and a substrate
+// (complex index; the light that reaches it is transmitted), layers listed from the incident side.
+struct LayerStack {
+  double incidentIndex = 1.0;
+  std::vector<Layer> layers;
+  std::complex<double> substrateIndex = 1.0;
+};
+
+struct MultilayerResponse {
+  double rs = 0, rp = 0;  // intensity reflectance per polarisation
+  double ts = 0, tp = 0;  // intensity transmittance into the substrate (0 for an evanescent wave there)
+  double reflectance() const { return 0.5 * (rs + rp); }
+  double transmittance() const { return 0.5 * (ts + tp); }
+  // What the layers absorb: 1 - R - T per polarisation, averaged.
+  double absorptance() const { return 1.0 - reflectance() - transmittance(); }
+};
+
+// The stack's response to light of vacuum wavelength `lambdaNm` meeting it at `thetaIncident`
+// (radians from the normal, in the incident medium). Throws std::invalid_argument for a layer of
+// negative thickness or an index with negative real or imaginary part.
+MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncident, double lambdaNm);
+
+// The same stack seen from the substrate's side (the layers in reverse, the substrate as the
+// incident medium; it must be real), for reciprocity checks and light leaving a barbule.
+LayerStack reversed(const LayerStack& stack);
+
+}  // namespace columba

@@ -1,0 +1,131 @@
+// Layered films by transfer matrices: a single film is the Airy film, lossless stacks conserve
+// energy and lossy ones absorb what is missing, a quarter-wave stack reflects as its closed form
+// says, a bare interface is Fresnel's, and transmittance is the same from either side.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+
+#include "core/rng.h"
+#include "optics/multilayer.h"
+#include "optics/thin_film.h"
+
+using namespace columba;
+
+namespace {
+double keratin(double lambdaNm) { return 1.532 + 5890.0 / (lambdaNm * lambdaNm); }
+
+LayerStack randomStack(PCG32& rng, bool lossy) {
+  LayerStack stack;
+  stack.incidentIndex = 1.0 + 0.6 * rng.nextFloat();
+  const int count = 1 + int(rng.nextFloat() * 6.0f);
+  for (int i = 0; i < count; ++i)
+    stack.layers.push_back(
+        {{1.0 + 1.2 * rng.nextFloat(), lossy ? 0.3 * rng.nextFloat() : 0.0}, 0.02 + 0.5 * rng.nextFloat()});
+  stack.substrateIndex = 1.0 + 0.8 * rng.nextFloat();
+  return stack;
+}
+}  // namespace
+
+TEST(Multilayer, ASingleFilmIsTheAiryFilm) {
+  for (double theta : {0.0, 0.3, 0.8, 1.3})
+    for (double d : {0.1, 0.51, 0.6, 2.0})
+      for (double lambda : {300.0, 410.0, 550.0, 700.0, 830.0}) {
+        LayerStack stack{1.000277, {{keratin(lambda), d}}, 1.000277};
+        const MultilayerResponse r = multilayerResponse(stack, theta, lambda);
+        const double c = std::cos(theta);
+        EXPECT_NEAR(r.reflectance(), thinFilmReflectance(c, 1.000277, keratin(lambda), 1.000277, d, lambda), 1e-9)
+            << theta << " " << d << " " << lambda;
+        EXPECT_NEAR(r.transmittance(), thinFilmTransmittance(c, 1.000277, keratin(lambda), 1.000277, d, lambda), 1e-9);
+        // On a substrate of another index too (keratin on melanin's real part).
+        LayerStack onSubstrate{1.0, {{keratin(lambda), d}}, 1.7};
+        EXPECT_NEAR(multilayerResponse(onSubstrate, theta, lambda).reflectance(),
+                    thinFilmReflectance(c, 1.0, keratin(lambda), 1.7, d, lambda), 1e-9);
+      }
+}
+
+TEST(Multilayer, LosslessStacksConserveEnergyAndLossyOnesAbsorbTheRest) {
+  PCG32 rng(5);
+  for (int i = 0; i < 200; ++i) {
+    const bool lossy = i % 2 == 1;
+    const LayerStack stack = randomStack(rng, lossy);
+    const double theta = 1.5 * rng.nextFloat(), lambda = 300.0 + 530.0 * rng.nextFloat();
+    const MultilayerResponse r = multilayerResponse(stack, theta, lambda);
+    if (!lossy) {
+      EXPECT_NEAR(r.rs + r.ts, 1.0, 1e-10) << i;
+      EXPECT_NEAR(r.rp + r.tp, 1.0, 1e-10) << i;
+    } else {
+      EXPECT_GE(r.absorptance(), -1e-12) << i;
+      EXPECT_LE(r.absorptance(), 1.0) << i;
+    }
+  }
+  // A thick absorbing layer (melanin-like, k = 0.2, 5 um) lets nothing through.
+  LayerStack absorber{1.0, {{{1.7, 0.2}, 5.0}}, 1.5};
+  EXPECT_LT(multilayerResponse(absorber, 0.2, 500.0).transmittance(), 1e-9);
+}
+
+TEST(Multilayer, AQuarterWaveStackReflectsAsItsClosedFormSays) {
+  // N pairs of quarter-wave layers (H next to the incident medium) on a substrate: at the design
+  // wavelength and normal incidence the stack's admittance is (nH / nL)^(2N) nS, so
+  // R = ((n0 - Y) / (n0 + Y))^2.
+  const double lambda = 550.0, nH = 1.8, nL = 1.4, n0 = 1.0, nS = 1.52;
+  for (int pairs : {1, 2, 5, 8}) {
+    LayerStack stack{n0, {}, nS};
+    for (int k = 0; k < pairs; ++k) {
+      stack.layers.push_back({nH, lambda / (4.0 * nH) / 1000.0});
+      stack.layers.push_back({nL, lambda / (4.0 * nL) / 1000.0});
+    }
+    const double Y = std::pow(nH / nL, 2 * pairs) * nS;
+    const double expected = std::pow((n0 - Y) / (n0 + Y), 2);
+    const MultilayerResponse r = multilayerResponse(stack, 0.0, lambda);
+    EXPECT_NEAR(r.rs, expected, 1e-12) << pairs;
+    EXPECT_NEAR(r.rp, expected, 1e-12) << pairs;
+    // The design wavelength is the reflection band's peak.
+    EXPECT_GT(r.reflectance(), multilayerResponse(stack, 0.0, 500.0).reflectance());
+    EXPECT_GT(r.reflectance(), multilayerResponse(stack, 0.0, 600.0).reflectance());
+  }
+}
+
+TEST(Multilayer, ABareInterfaceIsFresnels) {
+  const double n1 = 1.0, n2 = 1.56;
+  for (double theta : {0.0, 0.5, 1.0, 1.4}) {
+    const double c1 = std::cos(theta), c2 = std::sqrt(1.0 - std::pow(n1 / n2 * std::sin(theta), 2));
+    const double rs = std::pow((n1 * c1 - n2 * c2) / (n1 * c1 + n2 * c2), 2);
+    const double rp = std::pow((n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2), 2);
+    const MultilayerResponse r = multilayerResponse({n1, {}, n2}, theta, 500.0);
+    EXPECT_NEAR(r.rs, rs, 1e-12) << theta;
+    EXPECT_NEAR(r.rp, rp, 1e-12) << theta;
+  }
+  // Beyond the critical angle, inside the denser medium, everything is reflected.
+  const MultilayerResponse total = multilayerResponse({1.56, {}, 1.0}, 1.0, 500.0);
+  EXPECT_NEAR(total.rs, 1.0, 1e-12);
+  EXPECT_NEAR(total.rp, 1.0, 1e-12);
+  EXPECT_EQ(total.ts, 0.0);
+}
+
+TEST(Multilayer, TransmittanceIsTheSameFromEitherSide) {
+  // Reciprocity: T from the front equals T from the back at the angle that corresponds by Snell's
+  // law, lossy layers included; for lossless stacks R is the same from both sides too.
+  PCG32 rng(9);
+  for (int i = 0; i < 100; ++i) {
+    const bool lossy = i % 2 == 1;
+    const LayerStack stack = randomStack(rng, lossy);
+    const double theta = 0.6 * rng.nextFloat(), lambda = 300.0 + 530.0 * rng.nextFloat();
+    const double sinBack = stack.incidentIndex * std::sin(theta) / stack.substrateIndex.real();
+    if (sinBack >= 1.0) continue;
+    const MultilayerResponse front = multilayerResponse(stack, theta, lambda);
+    const MultilayerResponse back = multilayerResponse(reversed(stack), std::asin(sinBack), lambda);
+    EXPECT_NEAR(front.ts, back.ts, 1e-10) << i;
+    EXPECT_NEAR(front.tp, back.tp, 1e-10) << i;
+    if (!lossy) {
+      EXPECT_NEAR(front.reflectance(), back.reflectance(), 1e-10) << i;
+    }
+  }
+}
+
+TEST(Multilayer, BadLayersAreRefused) {
+  EXPECT_THROW(multilayerResponse({1.0, {{1.5, -0.1}}, 1.0}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(multilayerResponse({1.0, {{{1.5, -0.1}, 0.1}}, 1.0}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(multilayerResponse({1.0, {}, {0.0, 1.0}}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(reversed({1.0, {}, {1.5, 0.1}}), std::invalid_argument);
+}
