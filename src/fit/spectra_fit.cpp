@@ -24,6 +24,15 @@ bool sameDirections(const SpectraSample& a, const SpectraSample& b) {
   return a.thetaI == b.thetaI && a.phiI == b.phiI && a.thetaO == b.thetaO && a.phiO == b.phiO;
 }
 
+// The value the held parameters (a preset, -D values) give the parameter of that name, where it is
+// one of the barbule's numbers.
+std::optional<double> heldValue(const BarbuleParameters& p, const std::string& name) {
+  const std::map<std::string, double> values = {{"b", p.b}, {"phi_0", p.phi0},    {"phi_1", p.phi1},    {"mu", p.mu},
+                                                {"H", p.H}, {"height", p.height}, {"ext_ior", p.extIOR}};
+  const auto it = values.find(name);
+  return it == values.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
 }  // namespace
 
 std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::vector<SpectraSample>& samples,
@@ -104,17 +113,26 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
       if (odd && odd->parameter == p.name)
         throw std::invalid_argument(fmt::format("{}={:g}:{:g}: {}", p.name, p.lower, p.upper, odd->message));
     }
+  // A preset is the starting point of the parameters it sets whose start was not given (where its
+  // value lies within their bounds).
+  std::vector<FitParameter> parameters = settings.parameters;
+  if (settings.fixed.count("preset") > 0) {
+    const BarbuleParameters held = barbuleParametersWith({}, settings.fixed);
+    for (FitParameter& p : parameters)
+      if (const std::optional<double> v = heldValue(held, p.name); !p.start && v && *v >= p.lower && *v <= p.upper)
+        p.start = *v;
+  }
   std::vector<float> target;
   for (const SpectraSample& s : settings.samples) target.push_back(s.reflectance);
   ScaledLoss loss(std::move(target), {}, settings.loss, settings.scale);
   auto parametersAt = [&](const std::vector<double>& values) {
     std::map<std::string, double> named;
-    for (size_t i = 0; i < values.size(); ++i) named[settings.parameters[i].name] = values[i];
+    for (size_t i = 0; i < values.size(); ++i) named[parameters[i].name] = values[i];
     return barbuleParametersWith(named, settings.fixed);
   };
   SpectraFitResult result;
   result.fit = runFit(
-      settings.parameters,
+      parameters,
       [&](const std::vector<double>& values) {
         return loss(modelSpectra(parametersAt(values), settings.samples, settings.aperture));
       },

@@ -373,4 +373,27 @@ TEST(FitReport, RecordsValuesIntervalsAndEveryEvaluation) {
 }
 
 }  // namespace
+TEST(SpectraFit, APresetIsTheStartOfTheParametersItSets) {
+  // A 20-degree mirror spectrum of the purple barbules: with -D preset=dove-purple the fit of
+  // their thickness starts at the preset's 0.51 um, not at the middle of the bounds; a START
+  // given with the bounds still wins, and a preset value outside them is not used.
+  std::vector<SpectraSample> samples;
+  for (float lambda = 400.0f; lambda <= 700.0f; lambda += 10.0f) samples.push_back({20, 0, 20, 180, lambda, 0});
+  const std::vector<float> values = modelSpectra(barbuleParametersWith({}, {{"preset", "dove-purple"}}), samples);
+  for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = values[i];
+  auto startOf = [&](const std::string& vary) {
+    SpectraFitSettings s;
+    s.samples = samples;
+    s.fixed = {{"preset", "dove-purple"}};
+    s.parameters = {parseFitParameter(vary)};
+    s.fit.optimizer.maxEvaluations = 20;
+    const FitResult r = fitSpectra(s).fit;
+    EXPECT_EQ(r.history.front().stage, "start");
+    return r.history.front().values[0];
+  };
+  EXPECT_NEAR(startOf("height=0.4:0.8"), 0.51, 1e-6);
+  EXPECT_NEAR(startOf("height=0.4:0.8:0.7"), 0.7, 1e-12);
+  EXPECT_NEAR(startOf("height=0.55:0.8"), 0.675, 1e-12);
+}
+
 }  // namespace columba
