@@ -122,6 +122,9 @@ py::dict fitSpectraFile(const std::filesystem::path& spectra, const std::vector<
   }
   py::dict d = resultDict(result.fit);
   d["model"] = modelDict(s.samples, result.model);
+  py::list warnings;
+  if (const std::optional<std::string> w = implausibleScaleWarning(result.fit.loss.scale)) warnings.append(*w);
+  d["warnings"] = warnings;
   return d;
 }
 

@@ -123,6 +123,8 @@ int runFitCommand(const FitOptions& o) {
                o.spectraPath);
     SpectraFitResult fitted = fitSpectra(s);
     result = fitted.fit;
+    if (const std::optional<std::string> warning = implausibleScaleWarning(result.loss.scale))
+      fmt::print(stderr, "warning: {}: {}\n", o.spectraPath, *warning);
     settings["spectra"] = o.spectraPath;
     const LinePlot spectra = spectraPlot(s.samples, fitted.model, result.loss.scale);
     for (const char* extension : {".png", ".svg", ".pdf"})

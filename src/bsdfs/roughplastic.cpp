@@ -1,5 +1,5 @@
 /*! plugin bsdf roughplastic
-Rough plastic: a rough dielectric coat (microfacet reflection with the dielectric Fresnel term) over an ideal diffuse base, the base handled as in `plastic` with the coat's transmittance tabulated from its directional albedo. One-sided.
+Rough plastic: a rough dielectric coat (microfacet reflection with the dielectric Fresnel term) over an ideal diffuse base, the base handled as in `plastic` with the coat's transmittance tabulated as Mitsuba 3 tabulates it (light masked after refraction is lost). One-sided.
 Mitsuba 3: the same parameters and defaults; the roughness is isotropic and not a texture, as in Mitsuba 3.
 uses: microfacet
 | parameter | type | default | meaning | Mitsuba 3 |
@@ -12,6 +12,7 @@ uses: microfacet
 #include "bsdfs/roughplastic.h"
 
 #include "bsdfs/bsdf_parameters.h"
+#include "bsdfs/microfacet_interface.h"
 #include "core/sampling.h"
 #include "optics/fresnel.h"
 
@@ -32,6 +33,23 @@ float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distributi
   return float(sum / (kSteps * kSteps));
 }
 
+float RoughPlasticBSDF::coatTransmittance(const MicrofacetDistribution& distribution, float mu, float eta) {
+  // Mean over the visible normals of (1 - F(wi.m)) G1(wt, m), wt refracted through m: what the
+  // microsurface masks after refraction does not reach the base. Midpoints of the unit square.
+  constexpr int kSteps = 32;
+  const Vec3 wi(safeSqrt(1.0f - mu * mu), 0.0f, mu);
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i)
+    for (int j = 0; j < kSteps; ++j) {
+      const Vec3 m = distribution.sampleVisible(wi, Vec2((i + 0.5f) / kSteps, (j + 0.5f) / kSteps));
+      const float cosI = dot(wi, m), sinT2 = (1.0f - cosI * cosI) / (eta * eta);
+      if (cosI <= 0.0f || sinT2 >= 1.0f) continue;  // no refraction: total internal reflection
+      const Vec3 wt = refractThrough(wi, m, cosI, eta, std::sqrt(1.0f - sinT2));
+      if (cosTheta(wt) < 0.0f) sum += (1.0f - fresnelDielectric(cosI, eta)) * distribution.G1(wt, m);
+    }
+  return float(sum / (kSteps * kSteps));
+}
+
 RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta, SpectrumParameter diffuseReflectance,
                                    SpectrumParameter specularReflectance, bool nonlinear)
     : distribution_(distribution),
@@ -44,8 +62,7 @@ RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float et
 
   // Grazing directions are nudged off the horizon, where the sampler is undefined.
   for (int i = 0; i < kTableSize; ++i)
-    externalTransmittance_[i] =
-        1.0f - coatReflectance(distribution_, std::max(float(i) / (kTableSize - 1), 1e-4f), eta_);
+    externalTransmittance_[i] = coatTransmittance(distribution_, std::max(float(i) / (kTableSize - 1), 1e-4f), eta_);
 
   // 2 * integral of R(mu) mu dmu = mean of R(sqrt(s)) over s in [0, 1] (midpoint rule).
   constexpr int kSteps = 32;

@@ -5,9 +5,10 @@
 // The base is handled as in `plastic`, with these approximations:
 // - the coat reflects by single scattering only; light its microfacets send back into them is
 //   lost rather than scattered again;
-// - light enters and leaves the coat with the transmittance T(mu) = 1 - (directional albedo of
-//   the rough reflection), tabulated in mu = cos(theta); what is not reflected counts as
-//   transmitted, and the refracted lobe's shape is ignored (the base sees diffuse light);
+// - light enters and leaves the coat with the transmittance T(mu), the mean over the normals
+//   visible from the light of (1 - F) G1(refracted direction): light the microsurface masks after
+//   refracting is lost, as in Mitsuba 3, so T + R < 1 on a rough coat; tabulated in
+//   mu = cos(theta); the refracted lobe's shape is ignored (the base sees diffuse light);
 // - internal reflections at the coat's underside are summed as a geometric series with the
 //   cosine-weighted average of the rough internal reflectance, and the exiting light is
 //   Lambertian times T(mu_o) / eta^2. Light lost to masking inside the coat is not returned,
@@ -35,6 +36,8 @@ class RoughPlasticBSDF : public BSDF {
   // Directional albedo of the coat's microfacet reflection for light from a direction with
   // cos(theta) = mu; eta is the index ratio across the coat as seen from that side.
   static float coatReflectance(const MicrofacetDistribution& distribution, float mu, float eta);
+  // The fraction of that light the coat lets through into a medium of relative index eta.
+  static float coatTransmittance(const MicrofacetDistribution& distribution, float mu, float eta);
 
  private:
   static constexpr int kTableSize = 64;

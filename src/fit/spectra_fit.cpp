@@ -94,6 +94,21 @@ BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& val
   return p;
 }
 
+std::optional<std::string> implausibleScaleWarning(double scale) {
+  if (scale >= 1.0 / 3.0 && scale <= 3.0) return std::nullopt;
+  const double percent = scale > 1.0 ? scale / 100.0 : scale * 100.0;
+  if (percent > 1.0 / 3.0 && percent < 3.0)
+    return fmt::format(
+        "the fit scaled the model by {:.3g}: the measured spectra are about 100 times {} than the "
+        "model's reflectance factor, a fraction of a white standard's; percent against fractions?",
+        scale, scale > 1.0 ? "larger" : "smaller");
+  return fmt::format(
+      "the fit scaled the model by {:.3g}, far from 1: the measured geometry may not be the model's (is "
+      "omega_o the mirror direction, phi_o = phi_i + 180?), or the spectra are relative to another "
+      "standard; the fitted values may not mean what they seem",
+      scale);
+}
+
 SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   std::vector<std::string> fixedNames;
   for (const auto& value : settings.fixed) fixedNames.push_back(value.first);

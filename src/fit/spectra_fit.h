@@ -49,4 +49,9 @@ struct SpectraFitResult {
 // a varied parameter whose bounds are implausible (a film thickness of hundreds of um: nm given).
 SpectraFitResult fitSpectra(const SpectraFitSettings& settings);
 
+// What a fitted scale far from 1 suggests: the model's reflectance factor is relative to a white
+// standard, so measured spectra within a factor of 3 of it need no comment; a scale near 100 or
+// 1/100 is percent against fractions, others a geometry (or standard) the model does not share.
+std::optional<std::string> implausibleScaleWarning(double scale);
+
 }  // namespace columba

@@ -96,6 +96,29 @@ TEST(RoughPlastic, CoatReflectanceApproachesFresnelWhenSmooth) {
   }
 }
 
+TEST(RoughPlastic, CoatTransmittanceIsOneMinusFresnelWhenSmoothAndLosesMaskedLightWhenRough) {
+  // Smooth: T = 1 - F(mu), Fresnel's closed form. Rough: light masked after refraction is lost,
+  // so T + R < 1, the more so the rougher and the more grazing (Mitsuba 3's roughplastic table).
+  MicrofacetDistribution smooth(MicrofacetType::GGX, 0.005f, 0.005f);
+  for (float theta : {0.0f, 30.0f, 60.0f}) {
+    const float mu = std::cos(degToRad(theta));
+    EXPECT_NEAR(RoughPlasticBSDF::coatTransmittance(smooth, mu, kEta), 1.0f - fresnelDielectric(mu, kEta), 2e-3f)
+        << theta;
+  }
+  float previousLoss = 0.0f;
+  for (float alpha : {0.1f, 0.4f, 1.0f}) {
+    MicrofacetDistribution rough(MicrofacetType::GGX, alpha, alpha);
+    const float loss = 1.0f - RoughPlasticBSDF::coatTransmittance(rough, 1.0f, kEta) -
+                       RoughPlasticBSDF::coatReflectance(rough, 1.0f, kEta);
+    EXPECT_GT(loss, previousLoss) << alpha;
+    previousLoss = loss;
+    EXPECT_LT(RoughPlasticBSDF::coatTransmittance(rough, 0.2f, kEta),
+              RoughPlasticBSDF::coatTransmittance(rough, 1.0f, kEta))
+        << alpha;
+  }
+  EXPECT_GT(previousLoss, 0.05f);  // at alpha 1 a tenth of the light is lost at normal incidence
+}
+
 TEST(RoughPlastic, SmoothLimitMatchesPlastic) {
   PlasticBSDF smooth(kEta, SpectralDistribution::constant(0.5f), SpectralDistribution::constant(1.0f), false);
   RoughPlasticBSDF rough = roughPlastic(MicrofacetType::GGX, 0.01f, SpectralDistribution::constant(0.5f));

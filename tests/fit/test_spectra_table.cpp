@@ -113,3 +113,28 @@ TEST_F(SpectraTable, SpectraFromTheUltravioletAreReadAndShorterOnesRefused) {
         << e.what();
   }
 }
+
+TEST_F(SpectraTable, AFitThatScalesTheModelFarFrom1IsWarnedAbout) {
+  // Spectra in percent fit with a scale near 100; a retro spectrum fits (0.548 um for 0.58) only with
+  // a scale of about 5: both are named. Within a factor of 3 nothing is said.
+  EXPECT_FALSE(implausibleScaleWarning(1.0));
+  EXPECT_FALSE(implausibleScaleWarning(2.5));
+  EXPECT_NE(implausibleScaleWarning(97.0).value_or("").find("100 times larger"), std::string::npos);
+  EXPECT_NE(implausibleScaleWarning(0.011).value_or("").find("100 times smaller"), std::string::npos);
+  EXPECT_NE(implausibleScaleWarning(4.84).value_or("").find("phi_o = phi_i + 180"), std::string::npos);
+  // A model-made spectrum written in percent: the fit recovers the thickness, at a scale of 100.
+  std::vector<SpectraSample> model;
+  for (float lambda = 400.0f; lambda <= 700.0f; lambda += 5.0f) model.push_back({30, 0, 30, 180, lambda, 0});
+  const std::vector<float> values = modelSpectra(barbuleParametersWith({{"height", 0.58}}), model);
+  std::string text = "wl,R\n";
+  for (size_t i = 0; i < model.size(); ++i) text += fmt::format("{},{}\n", model[i].wavelength, 100.0f * values[i]);
+  SpectraGeometry g;
+  g.thetaI = {30.0f};
+  SpectraFitSettings settings;
+  settings.samples = readSpectraCSV(write("percent.csv", text), g);
+  settings.parameters = {parseFitParameter("height=0.5:0.7")};
+  const FitResult r = fitSpectra(settings).fit;
+  EXPECT_NEAR(r.values[0], 0.58, 0.002);
+  EXPECT_NEAR(r.loss.scale, 100.0, 1.0);
+  EXPECT_TRUE(implausibleScaleWarning(r.loss.scale));
+}
