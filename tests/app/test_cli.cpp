@@ -545,7 +545,8 @@ TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   // An unknown observer, or one without the specular spectra it measures, is refused.
   CommandResult unknown = run("bsdf --mode specular --observer budgie -o " + dir_.string());
   EXPECT_NE(unknown.status, 0);
-  EXPECT_NE(unknown.output.find("unknown observer 'budgie' (known: bluetit; or a table, FILE.csv)"), std::string::npos) << unknown.output;
+  EXPECT_NE(unknown.output.find("unknown observer 'budgie' (known: bluetit; or a table, FILE.csv)"), std::string::npos)
+      << unknown.output;
   CommandResult withoutSpecular = run("bsdf --mode spectra --observer bluetit -o " + dir_.string());
   EXPECT_NE(withoutSpecular.status, 0);
   EXPECT_NE(withoutSpecular.output.find("add --mode specular"), std::string::npos) << withoutSpecular.output;
