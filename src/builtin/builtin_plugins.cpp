@@ -31,6 +31,7 @@
 #include "integrators/direct_integrator.h"
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
+#include "integrators/volpath_integrator.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
 #include "samplers/multijitter_sampler.h"
@@ -64,6 +65,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("integrator", "path", makePathIntegrator);
     r.add("integrator", "direct", makeDirectIntegrator);
     r.add("integrator", "ptracer", makeParticleTracerIntegrator);
+    r.add("integrator", "volpath", makeVolumetricPathIntegrator);
+    r.add("integrator", "volpathmis", makeVolumetricPathIntegrator);
     r.add("sensor", "perspective", makePerspectiveSensor);
     r.add("sensor", "thinlens", makeThinLensSensor);
     r.add("sensor", "orthographic", makeOrthographicSensor);

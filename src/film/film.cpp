@@ -11,6 +11,7 @@ Mitsuba 3: the same size and crop parameters and defaults; only OpenEXR is writt
 | file_format | string | `openexr` | `openexr` or `exr`; anything else is an error | also `rgbe`, `pfm` and others |
 | pixel_format | string | `rgb` | the EXR's channels: `rgb`, `luminance` (Y) or `xyz` (CIE XYZ); `rgba`, `luminance_alpha` and `xyza` are written without alpha, with a warning naming the line, as no coverage is computed. The pieces of a split render and their merge stay RGB | alpha formats write coverage |
 | component_format | string | `float16` | `float16` or `float32`, accepted; the values are always written as float32 | chooses the stored precision |
+| sample_border | boolean | `false` | `false` only: a pixel within the filter's reach of the film's edge is filtered from samples on the film (those of the crop window's neighbours too); `true`, which adds samples from outside the film, is not implemented and warns naming the line | `true` also samples a border as wide as the filter outside the crop window |
 | observer | string | `cie1931` | the visual system the image is seen by: `cie1931` (the human observer; RGB only), a built-in bird's (`bluetit`, `avg.uv`, `avg.v`: docs/vision.md) or a table of a bird's sensitivities, `FILE.csv` (a `wl` column and columns named after the cones; docs/vision.md, "Observers from a table"). A bird's film records each cone's quantum catch beside RGB, as EXR channels named after the cones (`VS`, `SWS`, `MWS`, `LWS`, ...), draws wavelengths over 300-830 nm in proportion to the cones' sensitivities, and writes a false-colour PNG (red LWS, green MWS, blue SWS, the UV/violet cone as magenta) | not in Mitsuba 3 |
 | adaptation | string | `d65` | with a bird's `observer`: the white the catches are relative to (von Kries): `d65` (a white diffuse surface under a white Columba emitter catches 1 in every cone) or `none` (absolute catches, also the adaptation to an equal-quantum white) | not in Mitsuba 3 |
 */
@@ -100,6 +101,12 @@ std::shared_ptr<Object> makeHDRFilm(const Properties& props) {
   std::string componentFormat = props.getString("component_format", "float16");
   if (componentFormat != "float16" && componentFormat != "float32")
     throw props.error("component_format", "only 'float16' and 'float32' are supported, not '" + componentFormat + "'");
+  // Columba samples the pixels within the filter's reach of the crop window, but none off the film,
+  // so sample_border true would change the film's edge pixels (with any filter wider than a box).
+  if (props.getBool("sample_border", false))
+    warn(props.locationOf("sample_border"),
+         "sample_border true is not supported: pixels near the film's edge are filtered from samples on the "
+         "film only, as with false");
   std::shared_ptr<const ObserverResponse> observer;
   const std::string observerName = props.getString("observer", "cie1931");
   if (observerName != "cie1931") {

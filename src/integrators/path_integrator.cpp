@@ -178,16 +178,22 @@ Spectrum PathIntegrator::radiance(const Scene& scene, const Ray& cameraRay, Samp
   return L;
 }
 
-std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
+std::shared_ptr<Object> makePathIntegratorWith(const Properties& props, PathIntegrator::Strategy strategy,
+                                               int emitterCandidates) {
   int maxDepth = props.getInt("max_depth", -1), rrDepth = props.getInt("rr_depth", 5);
+  if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
+  if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
+  readMitsubaPassParameters(props);
+  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false), strategy,
+                                          emitterCandidates);
+}
+
+std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   int emitterCandidates = props.getInt("emitter_candidates", PathIntegrator::kAutomatic);
   if (emitterCandidates < 0 || emitterCandidates > kMaxLightDirections)
     throw props.error("emitter_candidates", "emitter_candidates must be 0 (automatic) or a whole number from 1 to " +
                                                 std::to_string(kMaxLightDirections) + ", not " +
                                                 std::to_string(emitterCandidates));
-  if (maxDepth < -1) throw props.error("max_depth", "max_depth must be -1 (unlimited) or non-negative");
-  if (rrDepth < 1) throw props.error("rr_depth", "rr_depth must be at least 1");
-  readMitsubaPassParameters(props);
   std::string strategy = props.getString("strategy", "mis");
   static const std::map<std::string, PathIntegrator::Strategy> kStrategies = {
       {"mis", PathIntegrator::Strategy::MIS},
@@ -196,8 +202,7 @@ std::shared_ptr<Object> makePathIntegrator(const Properties& props) {
   auto found = kStrategies.find(strategy);
   if (found == kStrategies.end())
     throw props.error("strategy", "strategy must be 'mis', 'emitter' or 'bsdf', not '" + strategy + "'");
-  return std::make_shared<PathIntegrator>(maxDepth, rrDepth, props.getBool("hide_emitters", false), found->second,
-                                          emitterCandidates);
+  return makePathIntegratorWith(props, found->second, emitterCandidates);
 }
 
 }  // namespace columba

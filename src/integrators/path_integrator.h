@@ -44,5 +44,9 @@ class PathIntegrator : public Integrator {
 };
 
 std::shared_ptr<Object> makePathIntegrator(const Properties& props);
+// A path integrator of Mitsuba's path parameters (max_depth, rr_depth, hide_emitters and the pass
+// parameters) read from `props`, with that strategy and emitter candidates.
+std::shared_ptr<Object> makePathIntegratorWith(const Properties& props, PathIntegrator::Strategy strategy,
+                                               int emitterCandidates);
 
 }  // namespace columba

@@ -6,7 +6,7 @@
 namespace columba {
 
 namespace {
-const char* kMedia = "participating media are not supported; Columba renders surfaces only";
+const char* kMedia = "participating media are not supported yet; Columba renders surfaces only";
 const char* kTextures =
     "of Mitsuba's textures, Columba has 'bitmap', 'checkerboard', 'mesh_attribute' and 'rawconstant'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
@@ -15,8 +15,6 @@ const char* kPolarisation = "polarised rendering is not supported";
 
 std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, const std::string& type) {
   static const std::map<std::pair<std::string, std::string>, const char*> kReasons = {
-      {{"integrator", "volpath"}, kMedia},
-      {{"integrator", "volpathmis"}, kMedia},
       {{"integrator", "prbvolpath"}, kMedia},
       {{"integrator", "prb"}, kDifferentiable},
       {{"integrator", "prb_basic"}, kDifferentiable},

@@ -29,6 +29,16 @@ bool matchesAt(const PlyElement& e, size_t i, const std::array<std::string, 3>& 
   return true;
 }
 
+// Whether property `i`, named `stem` and a set's first suffix, is a component on its own: the next
+// property is not that set's second one. Mitsuba names such a one-channel attribute by its stem
+// ("weight_0" is "face_weight").
+bool startsLoneComponent(const PlyElement& e, size_t i, const std::string& stem) {
+  const std::string suffix = e.properties[i].name.substr(stem.size());
+  for (const auto& suffixes : kGroupSuffixes)
+    if (suffix == suffixes[0]) return i + 1 == e.properties.size() || e.properties[i + 1].name != stem + suffixes[1];
+  return false;
+}
+
 }  // namespace
 
 std::vector<PlyAttributeGroup> plyAttributeGroups(const PlyElement& e, const std::string& prefix,
@@ -53,6 +63,7 @@ std::vector<PlyAttributeGroup> plyAttributeGroups(const PlyElement& e, const std
           name = p.name.substr(0, underscore);
           break;
         }
+      if (consumed == 0 && startsLoneComponent(e, i, stem)) name = p.name.substr(0, underscore);
     }
     PlyAttributeGroup g;
     if (consumed > 0) {
@@ -60,7 +71,7 @@ std::vector<PlyAttributeGroup> plyAttributeGroups(const PlyElement& e, const std
       g.properties = {int(i), int(i + 1), int(i + 2)};
       i += consumed;
     } else {
-      g.name = prefix + p.name;
+      g.name = prefix + (name.empty() ? p.name : name);
       g.properties = {int(i)};
       ++i;
     }

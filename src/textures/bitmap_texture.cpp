@@ -7,8 +7,11 @@ Mitsuba 3: the same parameters and defaults; PFM files are not read.
 | filter_type | string | `bilinear` | `bilinear` or `nearest` | same |
 | wrap_mode | string | `repeat` | outside [0, 1]: `repeat`, `mirror` or `clamp` | same |
 | to_uv | transform | identity | applied to the uv coordinates before the lookup | same |
+| format | string | `variant` | the texels' storage precision: `variant` keeps them as float32, `fp16` (or `float16`) rounds each (linear, after sRGB decoding) to half precision, as Mitsuba stores it; anything else is an error | same; newer versions add `auto` and `uint8` |
 */
 #include "textures/bitmap_texture.h"
+
+#include <Imath/half.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -32,6 +35,14 @@ TextureWrap readWrap(const Properties& props) {
   if (name == "mirror") return TextureWrap::Mirror;
   if (name == "clamp") return TextureWrap::Clamp;
   throw props.error("wrap_mode", "unknown wrap_mode '" + name + "' (repeat, mirror or clamp)");
+}
+// Whether the texels are stored in half precision, as Mitsuba's `format` fp16 stores them: the
+// values it looks up are rounded so.
+bool readHalfStorage(const Properties& props) {
+  const std::string name = props.getString("format", "variant");
+  if (name == "variant") return false;
+  if (name == "fp16" || name == "float16") return true;
+  throw props.error("format", "unknown format '" + name + "' (variant or fp16)");
 }
 }  // namespace
 
@@ -163,6 +174,8 @@ std::shared_ptr<Object> makeBitmapTexture(const Properties& props) {
   } catch (const InputError& e) {
     throw props.error("filename", e.what());
   }
+  if (readHalfStorage(props))
+    for (float& v : pixels.values) v = float(Imath::half(v));
   return std::make_shared<BitmapTexture>(pixels, raw, readFilter(props), readWrap(props), props.getTransform("to_uv"));
 }
 

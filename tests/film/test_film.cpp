@@ -131,3 +131,20 @@ TEST(FilmFormats, FormatsColumbaCannotWriteAreErrorsNamingFileLineAndValue) {
   expectContains(loadError(sceneWithFilm(R"(<string name="file_format" value="rgbe"/>)")),
                  {"film.xml:6", "file_format", "'rgbe'"});
 }
+
+TEST(FilmBorder, SampleBorderFalseIsTheDefaultAndTrueWarnsNamingTheLine) {
+  RenderSettings settings;
+  settings.seed = 5;
+  const std::string crop = R"(<integer name="crop_width" value="6"/><integer name="crop_height" value="5"/>)";
+  const Image plain = renderSceneString(sceneWithFilm(crop), settings);
+  ::testing::internal::CaptureStderr();
+  const Image off =
+      renderSceneString(sceneWithFilm(crop + R"(<boolean name="sample_border" value="false"/>)"), settings);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_TRUE(samePixels(plain, off));
+  ::testing::internal::CaptureStderr();
+  const Image on = renderSceneString(sceneWithFilm(crop + R"(<boolean name="sample_border" value="true"/>)"), settings);
+  const std::string warning = ::testing::internal::GetCapturedStderr();
+  expectContains(warning, {"<test scene>:6", "sample_border true is not supported"});
+  EXPECT_TRUE(samePixels(plain, on));
+}

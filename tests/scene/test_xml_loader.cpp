@@ -264,10 +264,10 @@ TEST(XmlLoader, UnknownPluginTypeNamesFileLineAndType) {
 
 TEST(XmlLoader, MitsubaPluginsColumbaLacksAreNamedWithWhy) {
   expectContains(errorOf(R"(<scene version="3.0.0">
-  <integrator type="volpath"/>
+  <integrator type="prbvolpath"/>
 </scene>)"),
-                 {"test.xml:2", "<integrator type='volpath'>: a Mitsuba plug-in Columba does not have",
-                  "participating media are not supported"});
+                 {"test.xml:2", "<integrator type='prbvolpath'>: a Mitsuba plug-in Columba does not have",
+                  "participating media are not supported yet"});
   expectContains(errorOf(R"(<scene version="3.0.0">
   <shape type="mesh">
     <bsdf type="diffuse"><texture name="reflectance" type="volume"/></bsdf>

@@ -123,6 +123,35 @@ end_header
   EXPECT_FALSE(mesh.attributes.find(MeshAttributeKey("vertex_alpha")));
 }
 
+TEST_F(MeshAttributeTextures, LoneFirstComponentIsNamedByItsStem) {
+  // Mitsuba writes a one-channel attribute face_weight as the property weight_0 and reads it back
+  // under its stem; a lone _x or _1 is read the same way, a second component keeps both apart.
+  const std::string path = write("lone.ply", R"(ply
+format ascii 1.0
+element vertex 3
+property float x
+property float y
+property float z
+property float height_x
+property float k_1
+property float k_2
+element face 1
+property list uchar int vertex_indices
+property float weight_0
+end_header
+0 0 0 0.25 1 2
+1 0 0 0.25 1 2
+0 1 0 0.25 1 2
+3 0 1 2 0.75
+)");
+  MeshData mesh = readPlyMesh(path);
+  EXPECT_EQ(mesh.attributes.names(), "vertex_height, vertex_k_1, vertex_k_2, face_weight");
+  const MeshAttributes::Attribute* weight = mesh.attributes.find(MeshAttributeKey("face_weight"));
+  ASSERT_TRUE(weight);
+  EXPECT_EQ(weight->channels, 1);
+  EXPECT_FLOAT_EQ(weight->values[0], 0.75f);
+}
+
 TEST(MeshAttributes, VertexValuesAreInterpolatedAndFaceValuesHeld) {
   MeshAttributes attributes;
   attributes.add("vertex_h", 1, {0.0f, 1.0f, 2.0f, 4.0f});

@@ -296,6 +296,33 @@ TEST_F(Textures, MistakesAreNamedWithTheirLine) {
                  {"t.xml:2", "raw numbers, not colours"});
 }
 
+TEST_F(Textures, Fp16FormatRoundsTexelsToHalfPrecision) {
+  writeTwoTexelEXR((dir_ / "tenth.exr").string(), 0.1f, 0.3f);
+  // A mask's pass-through is 1 - the opacity texture, looked up at the left texel's centre.
+  auto passThrough = [&](const std::string& format) {
+    ParsedScene parsed = loadSceneString(R"(<scene version="3.0.0">
+    <bsdf type="mask"><texture type="bitmap" name="opacity"><string name="filename" value="tenth.exr"/>)" +
+                                             format + R"(</texture><bsdf type="diffuse"/></bsdf></scene>)",
+                                         (dir_ / "t.xml").string(), dir_.string(), {}, builtinPlugins());
+    const auto mask = std::dynamic_pointer_cast<BSDF>(parsed.objects.at(0));
+    return mask->passThrough(BSDFContext{Vec2(0.25f, 0.5f), Vec3(), Vec3()}, Vec3(0, 0, 1), someWavelengths())[0];
+  };
+  // The texel as the texture holds it: its luminance, from float or from half-precision channels.
+  auto texel = [](float value) {
+    PixelGrid grid{1, 1, 3, {value, value, value}};
+    return BitmapTexture(grid, false, TextureFilter::Nearest, TextureWrap::Repeat, Transform())
+        .evalFloat(Vec2(0.5f, 0.5f));
+  };
+  const float half = 0.0999755859375f;  // 0.1 in half precision
+  EXPECT_FLOAT_EQ(passThrough(""), 1.0f - texel(0.1f));
+  EXPECT_FLOAT_EQ(passThrough(R"(<string name="format" value="variant"/>)"), 1.0f - texel(0.1f));
+  EXPECT_FLOAT_EQ(passThrough(R"(<string name="format" value="fp16"/>)"), 1.0f - texel(half));
+  EXPECT_NE(texel(half), texel(0.1f));
+  expectContains(errorOfScene(R"(<texture type="bitmap" id="t"><string name="filename" value="tenth.exr"/>
+  <string name="format" value="uint16"/></texture>)"),
+                 {"t.xml:3", "unknown format 'uint16'"});
+}
+
 TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
   // A checkerboard of roughness 0.4 and 0.05: at each point the BSDF equals the one with that
   // roughness everywhere.
