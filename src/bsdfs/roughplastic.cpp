@@ -18,36 +18,38 @@ uses: microfacet
 
 namespace columba {
 
-float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distribution, float mu, float eta) {
-  // Mean over the visible normals of F(wi.m) G1(wo, m): reflection about a visible normal
-  // escapes unless the microsurface masks wo. Midpoints of the sampler's unit square.
+namespace {
+// The mean of f(wi, m) over the normals visible from the direction with cos(theta) = mu: midpoints
+// of the visible-normal sampler's unit square.
+template <typename F>
+float meanOverVisibleNormals(const MicrofacetDistribution& distribution, float mu, const F& f) {
   constexpr int kSteps = 32;
   const Vec3 wi(safeSqrt(1.0f - mu * mu), 0.0f, mu);
   double sum = 0.0;
   for (int i = 0; i < kSteps; ++i)
-    for (int j = 0; j < kSteps; ++j) {
-      Vec3 m = distribution.sampleVisible(wi, Vec2((i + 0.5f) / kSteps, (j + 0.5f) / kSteps));
-      Vec3 wo = reflect(wi, m);
-      if (cosTheta(wo) > 0.0f) sum += fresnelDielectric(dot(wi, m), eta) * distribution.G1(wo, m);
-    }
+    for (int j = 0; j < kSteps; ++j)
+      sum += f(wi, distribution.sampleVisible(wi, Vec2((i + 0.5f) / kSteps, (j + 0.5f) / kSteps)));
   return float(sum / (kSteps * kSteps));
+}
+}  // namespace
+
+float RoughPlasticBSDF::coatReflectance(const MicrofacetDistribution& distribution, float mu, float eta) {
+  // F(wi.m) G1(wo, m): reflection about a visible normal escapes unless the microsurface masks wo.
+  return meanOverVisibleNormals(distribution, mu, [&](const Vec3& wi, const Vec3& m) {
+    const Vec3 wo = reflect(wi, m);
+    return cosTheta(wo) > 0.0f ? fresnelDielectric(dot(wi, m), eta) * distribution.G1(wo, m) : 0.0f;
+  });
 }
 
 float RoughPlasticBSDF::coatTransmittance(const MicrofacetDistribution& distribution, float mu, float eta) {
-  // Mean over the visible normals of (1 - F(wi.m)) G1(wt, m), wt refracted through m: what the
-  // microsurface masks after refraction does not reach the base. Midpoints of the unit square.
-  constexpr int kSteps = 32;
-  const Vec3 wi(safeSqrt(1.0f - mu * mu), 0.0f, mu);
-  double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i)
-    for (int j = 0; j < kSteps; ++j) {
-      const Vec3 m = distribution.sampleVisible(wi, Vec2((i + 0.5f) / kSteps, (j + 0.5f) / kSteps));
-      const float cosI = dot(wi, m), sinT2 = (1.0f - cosI * cosI) / (eta * eta);
-      if (cosI <= 0.0f || sinT2 >= 1.0f) continue;  // no refraction: total internal reflection
-      const Vec3 wt = refractThrough(wi, m, cosI, eta, std::sqrt(1.0f - sinT2));
-      if (cosTheta(wt) < 0.0f) sum += (1.0f - fresnelDielectric(cosI, eta)) * distribution.G1(wt, m);
-    }
-  return float(sum / (kSteps * kSteps));
+  // (1 - F(wi.m)) G1(wt, m), wt refracted through m: what the microsurface masks after refraction
+  // does not reach the base.
+  return meanOverVisibleNormals(distribution, mu, [&](const Vec3& wi, const Vec3& m) {
+    const float cosI = dot(wi, m), sinT2 = (1.0f - cosI * cosI) / (eta * eta);
+    if (cosI <= 0.0f || sinT2 >= 1.0f) return 0.0f;  // no refraction: total internal reflection
+    const Vec3 wt = refractThrough(wi, m, cosI, eta, std::sqrt(1.0f - sinT2));
+    return cosTheta(wt) < 0.0f ? (1.0f - fresnelDielectric(cosI, eta)) * distribution.G1(wt, m) : 0.0f;
+  });
 }
 
 RoughPlasticBSDF::RoughPlasticBSDF(MicrofacetDistribution distribution, float eta, SpectrumParameter diffuseReflectance,
