@@ -354,14 +354,17 @@ TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirDataSlow) {
   for (const char* file : {"bsdf_specular.png", "bsdf_specular.csv", "bsdf_plane_theta0.png", "bsdf_plane_theta30.png",
                            "bsdf_plane.csv", "bsdf_hemisphere_theta0.exr", "bsdf_hemisphere_theta30.png", "bsdf.json"})
     EXPECT_TRUE(fs::exists(dir_ / file)) << file;
-  // The CSV starts with its units and the parameters, then the columns.
+  // The CSV starts with its units, the parameters and what keratin's index is below 400 nm, then
+  // the columns.
   std::ifstream csv(dir_ / "bsdf_specular.csv");
-  std::string units, parameters, columns;
+  std::string units, parameters, extrapolation, columns;
   std::getline(csv, units);
   std::getline(csv, parameters);
+  std::getline(csv, extrapolation);
   std::getline(csv, columns);
   EXPECT_NE(units.find("dimensionless"), std::string::npos) << units;
   EXPECT_NE(parameters.find("height 0.58 um"), std::string::npos) << parameters;
+  EXPECT_NE(extrapolation.find("below 400 nm keratin's index extrapolates"), std::string::npos) << extrapolation;
   EXPECT_EQ(columns, "wavelength_nm,R_theta0,TRT_theta0,total_theta0,R_theta30,TRT_theta30,total_theta30");
   // The run's record: the version, every parameter and the peaks.
   std::stringstream json;
