@@ -555,3 +555,31 @@ TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   EXPECT_NE(withoutSpecular.status, 0);
   EXPECT_NE(withoutSpecular.output.find("add --mode specular"), std::string::npos) << withoutSpecular.output;
 }
+
+TEST_F(CliTest, ConeChannelsOfASplitRenderMergeBitForBit) {
+  // A bird observer's film rendered in two parts and merged: RGB and cone channels as the render in
+  // one piece, and the merged EXR names the observer.
+  const std::string scene = write("bird.xml", R"(<scene version="3.0.0">
+  <sensor type="perspective"><float name="fov" value="30"/>
+    <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+    <film type="hdrfilm"><integer name="width" value="12"/><integer name="height" value="10"/>
+      <string name="observer" value="avg.v"/></film>
+    <sampler type="independent"><integer name="sample_count" value="8"/></sampler></sensor>
+  <emitter type="constant"/>
+  <shape type="rectangle"><transform name="to_world"><scale value="1"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf></shape>
+</scene>)");
+  const std::string whole = (dir_ / "whole.exr").string(), part = (dir_ / "parts/bird.exr").string();
+  ASSERT_EQ(run("render " + scene + " -o " + whole).status, 0);
+  for (const char* k : {"1/2", "2/2"}) ASSERT_EQ(run("render " + scene + " --part " + k + " -o " + part).status, 0);
+  const std::string merged = (dir_ / "merged.exr").string();
+  CommandResult r = run("merge " + (dir_ / "parts/bird.part1of2.exr").string() + " " +
+                        (dir_ / "parts/bird.part2of2.exr").string() + " -o " + merged);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const columba::EXRImageFile a = columba::readEXRFile(whole), b = columba::readEXRFile(merged);
+  EXPECT_EQ(b.image.cones.names, (std::vector<std::string>{"VS", "SWS", "MWS", "LWS"}));
+  EXPECT_EQ(a.image.cones.values, b.image.cones.values);
+  EXPECT_EQ(a.image.rgb, b.image.rgb);
+  EXPECT_EQ(columba::metadataValue(b.metadata, "Observer").rfind("avg.v: quantum catches of VS, SWS, MWS, LWS", 0), 0u)
+      << columba::metadataValue(b.metadata, "Observer");
+}
