@@ -10,6 +10,7 @@
 
 #include "core/spectrum.h"
 #include "vision/colour_distance.h"
+#include "vision/observer_table.h"
 #include "vision/observer.h"
 #include "vision/quantum_catch.h"
 
@@ -21,19 +22,21 @@ namespace {
 
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// An observer by name, or one built from published data given as a dict: {"name": ...,
+// An observer by name or table file (FILE.csv), or one built from published data given as a dict: {"name": ...,
 // "lambda_max": [nm, ...], "oil_droplets": [("C", cut_nm) or None, ...], "beta_band": bool,
 // "densities": [...], "weber": w, "weber_cone": index}.
 Observer observerFrom(const py::object& spec) {
   if (py::isinstance<py::str>(spec)) {
     try {
-      return namedObserver(spec.cast<std::string>());
+      return observerNamedOrTabulated(spec.cast<std::string>());
     } catch (const std::invalid_argument& e) {
       throw py::value_error(e.what());
     }
   }
   if (!py::isinstance<py::dict>(spec))
-    throw py::type_error("an observer is a name (columba.observers()) or a dict of its cones' data");
+    throw py::type_error(
+        "an observer is a name (columba.observers()), a table of sensitivities (FILE.csv) or a dict of its cones' "
+        "data");
   py::dict d = spec.cast<py::dict>();
   ObserverDefinition definition;
   definition.name = d.contains("name") ? d["name"].cast<std::string>() : "custom";

@@ -81,3 +81,21 @@ def test_a_render_seen_by_a_bird_gives_its_cone_catches():
     plain, plain_info = columba.render(columba.load_string(xml.replace('<string name="observer" value="bluetit"/>', "")),
                                        stats=True)
     assert "cones" not in plain_info
+
+
+def test_an_observer_is_read_from_a_table_of_its_sensitivities(tmp_path):
+    # The blue tit's own curves written as a table read back as the blue tit; a bad table names its line.
+    o = columba.observer("bluetit")
+    table = tmp_path / "tit.csv"
+    rows = ["wl,UVS,SWS,MWS,LWS"] + [",".join([f"{w:g}"] + [f"{v:.9g}" for v in o["sensitivities"][:, i]])
+                                      for i, w in enumerate(o["wavelengths"])]
+    table.write_text("\n".join(rows) + "\n")
+    t = columba.observer(str(table))
+    assert t["channels"] == o["channels"]
+    np.testing.assert_allclose(t["sensitivities"], o["sensitivities"], atol=1e-6)
+    grey = np.full_like(WL, 0.5)
+    assert columba.colour_distance(WL, grey, grey, observer=str(table))["dS"] == pytest.approx(0.0, abs=1e-9)
+    bad = tmp_path / "bad.csv"
+    bad.write_text("wl,UVS,green\n300,1,1\n")
+    with pytest.raises(ValueError, match="bad.csv:1"):
+        columba.observer(str(bad))
