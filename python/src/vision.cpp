@@ -10,8 +10,8 @@
 
 #include "core/spectrum.h"
 #include "vision/colour_distance.h"
-#include "vision/observer_table.h"
 #include "vision/observer.h"
+#include "vision/observer_table.h"
 #include "vision/quantum_catch.h"
 
 namespace py = pybind11;

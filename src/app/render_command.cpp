@@ -32,12 +32,13 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output;
   std::string threads;
-  std::string frame;         // --frame I: only frame I of the sweep
-  std::string part, pass;    // --part K/N, --pass K/N
-  std::string manifest;      // --manifest FILE
-  bool adaptive = false;     // --adaptive
-  double targetError = 0.0;  // --target-error E (0: none)
-  float exposure = 0.0f;     // --exposure EV: the PNG's only
+  std::string frame;              // --frame I: only frame I of the sweep
+  std::string part, pass;         // --part K/N, --pass K/N
+  std::string manifest;           // --manifest FILE
+  bool adaptive = false;          // --adaptive
+  double targetError = 0.0;       // --target-error E (0: none)
+  float exposure = 0.0f;          // --exposure EV: the PNG's only
+  std::string toneMap = "clamp";  // --tonemap: the PNG's only
 };
 
 // The EXR and PNG a render writes. -o names one of them; the other is written beside it, so the
@@ -114,6 +115,7 @@ struct RenderPlan {
   RenderSettings settings;  // from the options; each frame adds its sample count and piece
   bool spectral = false;
   float exposure = 0.0f;  // of the PNG, stops
+  ToneMap toneMap = ToneMap::Clamp;
   std::optional<PieceIndex> part, pass;
   FramePlan frames;
   std::vector<int> selected;        // the frames to render (all, or --frame's)
@@ -150,6 +152,7 @@ RenderPlan planRender(const RenderOptions& options) {
   const int bins = parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
   plan.spectral = options.scene.spectral;
   plan.exposure = options.exposure;
+  plan.toneMap = toneMapNamed(options.toneMap);
   if (plan.spectral) settings.spectralBins = bins;
   if (!options.part.empty()) plan.part = parsePieceIndex("--part", options.part, 65536);
   if (!options.pass.empty()) plan.pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
@@ -270,7 +273,7 @@ std::string writeFrame(const RenderPlan& plan, int f, const Scene& scene, const 
     return written;
   }
   const OutputPair pair = stats.complete ? output : output.partial();
-  writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata, plan.exposure);
+  writeEXRAndPNG(pair.exr.string(), pair.png.string(), image, metadata, plan.exposure, plan.toneMap);
   return pair.exr.string() + ", " + pair.png.string();
 }
 
@@ -407,6 +410,10 @@ void addRenderCommand(CLI::App& app) {
                   "Brighten (or, negative, darken) the PNG by this many stops; the EXR keeps the linear values "
                   "(default 0)")
       ->check(CLI::Range(-20.0, 20.0));
+  cmd->add_option("--tonemap", options->toneMap,
+                  "How the PNG maps values above 1: clamp (default) or reinhard (L / (1 + L) on the luminance, "
+                  "highlights roll off); the EXR keeps the linear values")
+      ->check(CLI::IsMember({"clamp", "reinhard"}));
   cmd->add_option("--target-error", options->targetError,
                   "Adaptive sampling that stops at the budget its plan predicts for this relative RMSE (e.g. 0.02), "
                   "at most --spp per pixel on average");

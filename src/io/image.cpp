@@ -288,6 +288,12 @@ bool isConeChannel(const std::string& name) {
 }
 }  // namespace
 
+ToneMap toneMapNamed(const std::string& name) {
+  if (name == "clamp") return ToneMap::Clamp;
+  if (name == "reinhard") return ToneMap::Reinhard;
+  throw std::invalid_argument("unknown tone mapping '" + name + "' (known: clamp, reinhard)");
+}
+
 const std::vector<std::string>& coneChannelNames() {
   static const std::vector<std::string> names = {"UVS", "VS", "SWS", "MWS", "LWS", "DBL"};
   return names;
@@ -352,12 +358,20 @@ Image falseColour(const Image& image) {
 }
 
 namespace {
-// What a PNG of the image shows: its RGB, or the false colour of its cone catches, scaled by 2^exposure.
-Image previewOf(const Image& image, float exposure) {
+// What a PNG of the image shows: its RGB, or the false colour of its cone catches, scaled by
+// 2^exposure and tone mapped (the PNG writer clamps what is left above 1).
+Image previewOf(const Image& image, float exposure, ToneMap toneMap) {
   Image preview = image.cones.count() > 0 ? falseColour(image) : image;
   const float scale = std::exp2(exposure);
   if (exposure != 0.0f)
     for (float& v : preview.rgb) v *= scale;
+  if (toneMap == ToneMap::Reinhard)
+    for (size_t p = 0; p < preview.rgb.size(); p += 3) {
+      float* c = &preview.rgb[p];
+      const float luminance = 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+      if (!(luminance > 0.0f)) continue;
+      for (int k = 0; k < 3; ++k) c[k] /= 1.0f + luminance;
+    }
   return preview;
 }
 }  // namespace
@@ -365,15 +379,15 @@ Image previewOf(const Image& image, float exposure) {
 void writePNG(const std::string& path, const Image& image, const ImageMetadata& metadata) {
   checkImage(path, image);
   const ImageMetadata all = withSoftware(metadata);
-  const Image preview = previewOf(image, 0.0f);
+  const Image preview = previewOf(image, 0.0f, ToneMap::Clamp);
   replaceTogether({{path, "PNG", [&](const std::string& file) { writePNGFile(file, preview, all); }}});
 }
 
 void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
-                    const ImageMetadata& metadata, float pngExposure) {
+                    const ImageMetadata& metadata, float pngExposure, ToneMap toneMap) {
   checkImage(exrPath, image);
   const ImageMetadata all = withSoftware(metadata);
-  const Image preview = previewOf(image, pngExposure);
+  const Image preview = previewOf(image, pngExposure, toneMap);
   replaceTogether({{exrPath, "EXR", [&](const std::string& file) { writeEXRFile(file, image, all); }},
                    {pngPath, "PNG", [&](const std::string& file) { writePNGFile(file, preview, all); }}});
 }

@@ -90,9 +90,19 @@ void writePNG(const std::string& path, const Image& image, const ImageMetadata& 
 // files, then renamed into place; if a rename fails, the file already replaced is put back.
 // Writers of the same pair in other processes wait for each other's renames (a lock on the
 // directory), so the pair never mixes two writers' images.
-// `pngExposure` (stops) brightens or darkens the PNG only: the EXR keeps the linear values.
+// How a PNG maps linear values (after the exposure) to its range:
+//   Clamp:    each channel clamped to [0, 1] (what the EXR holds, cut at white);
+//   Reinhard: the global operator of Reinhard, Stark, Shirley & Ferwerda (2002, "Photographic tone
+//             reproduction for digital images", SIGGRAPH), L / (1 + L) on the luminance L, each
+//             pixel's RGB scaled alike, so highlights roll off instead of clipping and hue is kept.
+enum class ToneMap { Clamp, Reinhard };
+// "clamp" or "reinhard"; throws std::invalid_argument naming the known ones.
+ToneMap toneMapNamed(const std::string& name);
+
+// `pngExposure` (stops) brightens or darkens the PNG only, and `toneMap` maps it to the PNG's range:
+// the EXR keeps the linear values.
 void writeEXRAndPNG(const std::string& exrPath, const std::string& pngPath, const Image& image,
-                    const ImageMetadata& metadata = {}, float pngExposure = 0.0f);
+                    const ImageMetadata& metadata = {}, float pngExposure = 0.0f, ToneMap toneMap = ToneMap::Clamp);
 
 enum class ImageFormat { EXR, PNG };
 // The format a path's extension names (".exr" or ".png", in any letter case). Throws

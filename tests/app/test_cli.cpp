@@ -62,6 +62,26 @@ TEST_F(CliTest, ExposureBrightensThePngAndLeavesTheExrLinear) {
   EXPECT_NE(run("render " + scene + " --exposure 30 -o " + (dir_ / "x.exr").string()).status, 0);
 }
 
+TEST_F(CliTest, ReinhardToneMappingRollsHighlightsOffInThePngOnly) {
+  // Two stops up, the grey sky (about 0.5) is about 2: clamped to white by default, 2 / (1 + 2) with
+  // --tonemap reinhard; the EXR is the same linear image either way.
+  std::string scene = write("tiny.xml", kTinyScene);
+  ASSERT_EQ(run("render " + scene + " --exposure 2 -o " + (dir_ / "clamped.exr").string()).status, 0);
+  CommandResult r = run("render " + scene + " --exposure 2 --tonemap reinhard -o " + (dir_ / "rolled.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const columba::Image exr = columba::readEXR((dir_ / "rolled.exr").string());
+  EXPECT_EQ(exr.rgb, columba::readEXR((dir_ / "clamped.exr").string()).rgb);
+  const columba::Image clamped = columba::readPNG((dir_ / "clamped.png").string());
+  const columba::Image rolled = columba::readPNG((dir_ / "rolled.png").string());
+  const float* c = exr.pixel(4, 4);
+  const float luminance = 4.0f * (0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(clamped.pixel(4, 4)[k], std::min(1.0f, 4.0f * c[k]), 0.01f) << k;
+    EXPECT_NEAR(rolled.pixel(4, 4)[k], 4.0f * c[k] / (1.0f + luminance), 0.01f) << k;
+  }
+  EXPECT_NE(run("render " + scene + " --tonemap aces -o " + (dir_ / "x.exr").string()).status, 0);
+}
+
 TEST_F(CliTest, MalformedScenesFailWithFileLineAndValueSlow) {
   struct Case {
     const char* name;
