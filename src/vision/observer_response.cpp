@@ -8,7 +8,12 @@
 namespace columba {
 
 namespace {
-WavelengthTable observerWavelengths(const Observer& o, const std::vector<const std::vector<float>*>& curves) {
+// Channel c's sensitivity: the chromatic ones in order, then the achromatic one.
+const std::vector<float>& channelCurve(const Observer& o, size_t c) {
+  return c < o.sensitivities.size() ? o.sensitivities[c] : o.achromatic;
+}
+
+WavelengthTable observerWavelengths(const Observer& o, size_t channels) {
   const SpectralGrid& g = o.grid;
   if (g.stepNm != 1.0 || g.firstNm != std::floor(g.firstNm))
     throw std::invalid_argument("observer '" + o.name + "': rendering needs sensitivities at whole nanometres");
@@ -16,17 +21,16 @@ WavelengthTable observerWavelengths(const Observer& o, const std::vector<const s
   std::vector<double> density(g.count);
   for (size_t i = 0; i < g.count; ++i) {
     double mean = 0.0;
-    for (const std::vector<float>* curve : curves) mean += (*curve)[i];
-    density[i] = 0.9 * mean / double(curves.size()) + 0.1 * uniform;
+    for (size_t c = 0; c < channels; ++c) mean += channelCurve(o, c)[i];
+    density[i] = 0.9 * mean / double(channels) + 0.1 * uniform;
   }
   return makeWavelengthTable(float(g.firstNm), density);
 }
 
-std::vector<const std::vector<float>*> channelCurves(const Observer& o) {
-  std::vector<const std::vector<float>*> curves;
-  for (const std::vector<float>& s : o.sensitivities) curves.push_back(&s);
-  if (o.hasAchromatic()) curves.push_back(&o.achromatic);
-  return curves;
+std::vector<std::string> channelNames(const Observer& o) {
+  std::vector<std::string> names = o.channels;
+  if (o.hasAchromatic()) names.push_back(o.achromaticChannel);
+  return names;
 }
 }  // namespace
 
@@ -49,16 +53,15 @@ std::string describeObserver(const ObserverResponse& response) {
 ObserverResponse::ObserverResponse(Observer observer, Adaptation adaptation)
     : observer_(std::move(observer)),
       adaptation_(adaptation),
-      channels_(observer_.channels),
-      curves_(channelCurves(observer_)),
-      wavelengths_(observerWavelengths(observer_, curves_)) {
-  if (observer_.hasAchromatic()) channels_.push_back(observer_.achromaticChannel);
+      channels_(channelNames(observer_)),
+      wavelengths_(observerWavelengths(observer_, channels_.size())) {
   const SpectralGrid& g = observer_.grid;
-  for (const std::vector<float>* curve : curves_) {
+  for (size_t c = 0; c < channels_.size(); ++c) {
+    const std::vector<float>& curve = channelCurve(observer_, c);
     double white = 1.0;
     if (adaptation_ == Adaptation::D65) {
       white = 0.0;
-      for (size_t i = 0; i < g.count; ++i) white += double(d65(float(g.wavelength(i)))) * (*curve)[i] * g.stepNm;
+      for (size_t i = 0; i < g.count; ++i) white += double(d65(float(g.wavelength(i)))) * curve[i] * g.stepNm;
     }
     white_.push_back(white);
   }
@@ -70,12 +73,12 @@ float ObserverResponse::sensitivity(size_t c, float lambda) const {
   if (!(x >= 0.0) || x > double(g.count - 1)) return 0.0f;
   const size_t i = std::min(size_t(x), g.count - 2);
   const double f = x - double(i);
-  const std::vector<float>& s = *curves_[c];
+  const std::vector<float>& s = channelCurve(observer_, c);
   return float((1.0 - f) * s[i] + f * s[i + 1]);
 }
 
 void ObserverResponse::accumulate(const Spectrum& L, const Wavelengths& wl, float scale, float* values) const {
-  for (size_t c = 0; c < curves_.size(); ++c) {
+  for (size_t c = 0; c < channels_.size(); ++c) {
     double sum = 0.0;
     for (int k = 0; k < kSpectrumSamples; ++k)
       if (wl.pdf[k] > 0.0f) sum += double(L[k]) * sensitivity(c, wl[k]) / double(wl.pdf[k]);

@@ -36,9 +36,8 @@ class ObserverResponse {
  private:
   Observer observer_;
   Adaptation adaptation_;
-  std::vector<std::string> channels_;
-  std::vector<const std::vector<float>*> curves_;  // per channel
-  std::vector<double> white_;                      // the adapting white's catch per channel
+  std::vector<std::string> channels_;  // chromatic, then achromatic
+  std::vector<double> white_;          // the adapting white's catch per channel
   WavelengthTable wavelengths_;
 };
 
