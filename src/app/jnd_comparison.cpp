@@ -53,6 +53,24 @@ std::optional<ConeCatches> regionCatches(const Image& image, const std::vector<s
     if (!(q > 0.0) || !std::isfinite(q)) return std::nullopt;
   return c;
 }
+
+// The observer the comparison uses: `observer`, else the one `a`'s metadata names.
+Observer jndObserver(const EXRImageFile& a, const std::string& pathA, const std::string& observer) {
+  std::string name = observer;
+  if (name.empty()) {
+    const std::string recorded = metadataValue(a.metadata, "Observer");
+    name = recorded.substr(0, recorded.find(':'));
+    if (name.empty())
+      throw std::runtime_error(
+          fmt::format("'{}' names no observer (it has no Observer attribute): give --observer", pathA));
+  }
+  if (!namesObserverTable(name) && !isBuiltinObserver(name))
+    throw std::runtime_error(
+        fmt::format("unknown observer '{}' (known: {}; or a table of sensitivities, FILE.csv: "
+                    "give the table the image was rendered with as --observer)",
+                    name, builtinObserverNames()));
+  return observerNamedOrTabulated(name);
+}
 }  // namespace
 
 PixelRect parsePixelRect(const std::string& text, int width, int height, const std::string& what) {
@@ -79,30 +97,9 @@ PixelRect parsePixelRect(const std::string& text, int width, int height, const s
   return r;
 }
 
-Observer jndObserver(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
-                     const std::string& observer) {
-  std::string name = observer;
-  if (name.empty()) {
-    const std::string recorded = metadataValue(a.metadata, "Observer");
-    name = recorded.substr(0, recorded.find(':'));
-    if (name.empty())
-      throw std::runtime_error(
-          fmt::format("'{}' names no observer (it has no Observer attribute): give --observer", pathA));
-  }
-  if (!namesObserverTable(name) && !isBuiltinObserver(name))
-    throw std::runtime_error(
-        fmt::format("unknown observer '{}' (known: {}; or a table of sensitivities, FILE.csv: "
-                    "give the table the image was rendered with as --observer)",
-                    name, builtinObserverNames()));
-  Observer o = observerNamedOrTabulated(name);
-  channelIndices(a.image, o, pathA);
-  channelIndices(b.image, o, pathB);
-  return o;
-}
-
 void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
                     const JndOptions& options) {
-  const Observer observer = jndObserver(a, b, pathA, pathB, options.observer);
+  const Observer observer = jndObserver(a, pathA, options.observer);
   const std::vector<size_t> ia = channelIndices(a.image, observer, pathA),
                             ib = channelIndices(b.image, observer, pathB);
   if (options.regionA) {

@@ -14,12 +14,6 @@ struct JndOptions {
   std::string output;                         // per-pixel dS as an EXR (and its PNG); "" for none
 };
 
-// The observer the comparison uses: `options.observer`, else the one `a`'s metadata names; its
-// chromatic channels must be among both images' cone channels. Throws std::runtime_error saying
-// what is missing.
-Observer jndObserver(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
-                     const std::string& observer);
-
 // Prints the distances (per pixel: how many pixels, their mean, median, 95th percentile and
 // largest dS; per region: dS of the regions' mean catches) and writes the per-pixel map.
 void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
