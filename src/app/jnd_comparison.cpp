@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/number_text.h"
 #include "io/output_directory.h"
 #include "vision/colour_distance.h"
 #include "vision/observer_table.h"
@@ -77,16 +78,11 @@ PixelRect parsePixelRect(const std::string& text, int width, int height, const s
   std::vector<int> v;
   std::stringstream in(text);
   for (std::string part; std::getline(in, part, ',');) {
-    size_t used = 0;
-    int value = 0;
-    try {
-      value = std::stoi(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != part.size())
-      throw std::runtime_error(fmt::format("{} '{}': '{}' is not an integer", what, text, part));
-    v.push_back(value);
+    const size_t first = part.find_first_not_of(' '), last = part.find_last_not_of(' ');
+    const std::optional<int> value =
+        parseNumber<int>(first == std::string::npos ? "" : part.substr(first, last - first + 1));
+    if (!value) throw std::runtime_error(fmt::format("{} '{}': '{}' is not an integer", what, text, part));
+    v.push_back(*value);
   }
   if (v.size() != 4)
     throw std::runtime_error(fmt::format("{} '{}': give X0,Y0,X1,Y1 (pixels [X0, X1) x [Y0, Y1))", what, text));

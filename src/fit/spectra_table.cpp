@@ -12,6 +12,7 @@
 
 #include "core/byte_order_mark.h"
 #include "core/error.h"
+#include "core/number_text.h"
 #include "core/spectrum.h"
 
 namespace columba {
@@ -29,11 +30,9 @@ std::vector<std::string> splitFields(const std::string& line) {
 }
 
 float number(const std::string& path, int line, const std::string& what, const std::string& text) {
-  float v = 0.0f;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-    throw InputError({path, line}, fmt::format("{} '{}' is not a number", what, text));
-  return v;
+  const std::optional<float> v = parseNumber<float>(text);
+  if (!v) throw InputError({path, line}, fmt::format("{} '{}' is not a number", what, text));
+  return *v;
 }
 
 void checkSample(const std::string& path, int line, const SpectraSample& s) {

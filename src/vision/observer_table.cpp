@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_text.h"
 
 namespace columba {
 
@@ -27,16 +28,9 @@ std::vector<std::string> cells(const std::string& line) {
 }
 
 double number(const std::string& text, const std::string& path, int line, const std::string& column) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw InputError({path, line}, "column '" + column + "': '" + text + "' is not a number");
-  return v;
+  const std::optional<double> v = parseNumber<double>(text);
+  if (!v) throw InputError({path, line}, "column '" + column + "': '" + text + "' is not a number");
+  return *v;
 }
 }  // namespace
 
