@@ -26,6 +26,9 @@ def test_fit_recovers_the_film_and_matches_the_cli(cli, repo, tmp_path):
     fitted = {p["name"]: p["value"] for p in record["parameters"]}
     assert fitted["height"] == pytest.approx(result["values"]["height"], abs=1e-9)
     assert record["evaluations"] == result["evaluations"]
+    # Each parameter's loss profile as vector figures too, for papers.
+    assert (tmp_path / "fit" / "profile_height.pdf").read_bytes().startswith(b"%PDF-")
+    assert b"<svg" in (tmp_path / "fit" / "profile_height.svg").read_bytes()
 
 
 def test_fit_errors_are_python_exceptions(repo):

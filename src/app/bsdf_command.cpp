@@ -101,7 +101,6 @@ void measureHemispheres(const BarbuleModel& model, const BSDFOptions& o, const f
         {"Light", fmt::format("theta {:g} deg, phi {:g} deg", angle, o.phiDegrees)},
         {"Parameters", describeParameters(o)}};
     fs::path exr = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".exr");
-    fs::path png = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".png");
     writeEXR(exr.string(), image, metadata);
     // The PNG is the chart a person reads; the EXR holds the data.
     HemisphereChart chart{fmt::format("Scatterometer, light at {:g} deg", angle),
@@ -109,9 +108,13 @@ void measureHemispheres(const BarbuleModel& model, const BSDFOptions& o, const f
                                       o.phiDegrees, describeParameters(o))};
     chart.lightTheta = degToRad(angle);
     chart.lightPhi = degToRad(o.phiDegrees);
-    writePNG(png.string(), drawHemisphereChart(image, chart), metadata);
+    chart.valueLabel = "luminance";
     written.push_back(exr.string());
-    written.push_back(png.string());
+    for (const char* extension : {".png", ".svg", ".pdf"}) {  // PNG to look at, SVG and PDF for papers
+      fs::path file = dir / ("bsdf_hemisphere_" + angleTag(angle) + extension);
+      writeHemisphereChart(file.string(), image, chart, metadata);
+      written.push_back(file.string());
+    }
   }
 }
 

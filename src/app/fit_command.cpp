@@ -8,6 +8,7 @@
 #include "fit/scene_fit.h"
 #include "fit/spectra_fit.h"
 #include "io/data_files.h"
+#include "io/output_directory.h"
 
 namespace columba {
 
@@ -161,6 +162,11 @@ int runFitCommand(const FitOptions& o) {
   writeJSON((dir / "fit.json").string(), fitRecord(result, settings));
   writeCSV((dir / "history.csv").string(), historyTable(result));
   writePNG((dir / "profiles.png").string(), profilesImage(result));
+  const std::vector<LinePlot> profiles = profilePlots(result);
+  for (size_t i = 0; i < profiles.size(); ++i)  // each as vectors too, for papers
+    for (const char* extension : {".svg", ".pdf"})
+      writeLinePlot((dir / ("profile_" + safeForFileName(result.parameters[i].name) + extension)).string(), profiles[i],
+                    1000, 640);
   printSummary(result, dir);
   return 0;
 }

@@ -36,9 +36,18 @@ std::vector<std::string> readLabels(const MontageOptions& options) {
   return labels;
 }
 
+// Whether the sheet is written as vectors: .svg or .pdf, in any letter case.
+bool isVectorPath(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".svg" || extension == ".pdf";
+}
+
 void runMontage(const MontageOptions& options) {
   // Before reading the inputs; a missing directory is made once the sheet is.
-  const ImageFormat format = checkOutputImagePath(options.output, true);
+  const bool vector = isVectorPath(options.output);
+  if (vector) checkOutputDirectory(options.output, directoryOf(options.output));
+  const ImageFormat format = vector ? ImageFormat::PNG : checkOutputImagePath(options.output, true);
   const std::vector<std::string> labels = readLabels(options);
   std::vector<ContactSheetEntry> entries;
   for (const std::string& path : options.inputs) {
@@ -48,11 +57,15 @@ void runMontage(const MontageOptions& options) {
     Image image = extension == ".exr" ? readEXR(path) : readPNG(path);
     entries.push_back({std::move(image), labels.empty() ? p.stem().string() : labels[entries.size()]});
   }
-  Image sheet = makeContactSheet(entries, options.columns, options.tileWidth, options.title);
   std::string inputs;
   for (const std::string& path : options.inputs) inputs += (inputs.empty() ? "" : "\n") + path;
   const ImageMetadata metadata = {{"Images", inputs}};
   makeOutputDirectory(options.output, directoryOf(options.output));
+  if (vector) {
+    writeContactSheet(options.output, entries, options.columns, options.tileWidth, options.title);
+    return;
+  }
+  Image sheet = makeContactSheet(entries, options.columns, options.tileWidth, options.title);
   if (format == ImageFormat::EXR)
     writeEXR(options.output, sheet, metadata);
   else
@@ -63,9 +76,10 @@ void runMontage(const MontageOptions& options) {
 void addMontageCommand(CLI::App& app) {
   auto options = std::make_shared<MontageOptions>();
   CLI::App* cmd =
-      app.add_subcommand("montage", "Arrange images (PNG or EXR) into a labelled contact sheet (PNG or EXR)");
+      app.add_subcommand("montage", "Arrange images (PNG or EXR) into a labelled contact sheet (PNG, EXR, SVG or PDF)");
   cmd->add_option("images", options->inputs, "Images, in order")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", options->output, "Contact sheet, .png or .exr (its directory made if missing)")
+  cmd->add_option("-o,--output", options->output,
+                  "Contact sheet, .png, .exr, .svg or .pdf (its directory made if missing)")
       ->required();
   cmd->add_option("--columns", options->columns, "Tiles per row")->check(CLI::Range(1, 64));
   cmd->add_option("--tile", options->tileWidth, "Tile width in pixels")->check(CLI::Range(16, 4096));

@@ -11,6 +11,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "io/output_directory.h"
+
 namespace columba {
 
 namespace {
@@ -53,13 +55,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
     if (at == std::string::npos) return items;
     start = at + 1;
   }
-}
-
-std::string safeForFileName(const std::string& text) {
-  std::string safe = text;
-  for (char& c : safe)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && std::string(".+-,=").find(c) == std::string::npos) c = '_';
-  return safe;
 }
 
 const std::string& valueOf(const SweepFrame& frame, const std::string& name, const std::string& pattern) {

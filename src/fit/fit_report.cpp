@@ -92,8 +92,8 @@ CsvTable historyTable(const FitResult& result) {
   return table;
 }
 
-Image profilesImage(const FitResult& result) {
-  std::vector<ContactSheetEntry> entries;
+std::vector<LinePlot> profilePlots(const FitResult& result) {
+  std::vector<LinePlot> plots;
   const double threshold = result.loss.loss * (1.0 + result.profileRise);
   for (size_t i = 0; i < result.parameters.size(); ++i) {
     const FitParameter& p = result.parameters[i];
@@ -122,8 +122,16 @@ Image profilesImage(const FitResult& result) {
                         seriesColours()[2],
                         true};
     plot.series = {loss, level, interval};
-    entries.push_back({renderLinePlot(plot, 1000, 640), p.name});
+    plots.push_back(plot);
   }
+  return plots;
+}
+
+Image profilesImage(const FitResult& result) {
+  std::vector<ContactSheetEntry> entries;
+  const std::vector<LinePlot> plots = profilePlots(result);
+  for (size_t i = 0; i < plots.size(); ++i)
+    entries.push_back({renderLinePlot(plots[i], 1000, 640), result.parameters[i].name});
   return makeContactSheet(entries, std::min<int>(2, int(entries.size())), 640, "Loss profiles around the optimum");
 }
 

@@ -18,7 +18,10 @@ namespace columba {
 // `settings` describes the run (loss, scale, input files...), copied into the record.
 nlohmann::json fitRecord(const FitResult& result, const nlohmann::json& settings);
 CsvTable historyTable(const FitResult& result);
-// One loss-against-value chart per parameter, the threshold and interval marked.
+// One loss-against-value chart per parameter, over its whole bounds, the threshold and interval
+// marked.
+std::vector<LinePlot> profilePlots(const FitResult& result);
+// Those charts side by side, two to a row.
 Image profilesImage(const FitResult& result);
 // Target, the render times `scale`, and their signed difference (mean of RGB) in a blue-white-red
 // map with its colour bar; pixels outside the mask are grey in the difference.

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +11,13 @@
 namespace columba {
 
 namespace fs = std::filesystem;
+
+std::string safeForFileName(const std::string& text) {
+  std::string safe = text;
+  for (char& c : safe)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && std::string(".+-,=").find(c) == std::string::npos) c = '_';
+  return safe;
+}
 
 std::string directoryOf(const std::string& path) {
   std::string dir = fs::path(path).parent_path().string();

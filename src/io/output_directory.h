@@ -8,6 +8,9 @@ namespace columba {
 // The directory a file's path names ("." when it names none).
 std::string directoryOf(const std::string& path);
 
+// `text` safe as (part of) a file name: characters other than letters, digits and . + - , = become _.
+std::string safeForFileName(const std::string& text);
+
 // Checks that the directory `dir`, which `path` is written in (or is, for a directory of
 // outputs), exists or can be made: the nearest of its ancestors that exists is a directory one
 // may write in. Throws std::runtime_error naming `path` and what is in the way ("cannot write

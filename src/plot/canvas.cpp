@@ -4,10 +4,15 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "core/math.h"
@@ -58,6 +63,13 @@ cairo_t* measuringContext() {
   return scratch.cr;
 }
 
+// The last four characters of a path in lower case: a figure's format.
+std::string figureExtension(const std::string& path) {
+  std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
 }  // namespace
 
 Vec3 srgbColour(float r, float g, float b) { return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)}; }
@@ -68,16 +80,20 @@ Canvas::Canvas(int width, int height, const Vec3& background) {
   fillRect(0, 0, float(width), float(height), background);
 }
 
-Canvas::Canvas(const std::string& path, int width, int height, const Vec3& background) : path_(path) {
-  const std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+// A vector canvas writes beside its file and renames it into place once complete, so that a
+// failed or interrupted write leaves the file there before untouched.
+Canvas::Canvas(const std::string& path, int width, int height, const Vec3& background)
+    : path_(path), temporary_(path + ".tmp" + std::to_string(::getpid())) {
+  const std::string extension = figureExtension(path);
   if (extension == ".svg")
-    surface_ = cairo_svg_surface_create(path.c_str(), width, height);
+    surface_ = cairo_svg_surface_create(temporary_.c_str(), width, height);
   else if (extension == ".pdf")
-    surface_ = cairo_pdf_surface_create(path.c_str(), width, height);
+    surface_ = cairo_pdf_surface_create(temporary_.c_str(), width, height);
   else
     throw std::runtime_error("cannot write a chart as '" + path + "': give .png, .svg or .pdf");
   if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface_);
+    std::remove(temporary_.c_str());
     throw std::runtime_error("cannot write '" + path + "'");
   }
   cr_ = cairo_create(surface_);
@@ -87,6 +103,7 @@ Canvas::Canvas(const std::string& path, int width, int height, const Vec3& backg
 Canvas::~Canvas() {
   cairo_destroy(cr_);
   cairo_surface_destroy(surface_);
+  if (!temporary_.empty()) std::remove(temporary_.c_str());  // not renamed: unfinished or failed
 }
 
 void Canvas::drawImage(int x0, int y0, const Image& image) {
@@ -212,6 +229,23 @@ void Canvas::finish() {
   cairo_surface_finish(surface_);
   if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS)
     throw std::runtime_error("cannot write '" + path_ + "': " + cairo_status_to_string(cairo_surface_status(surface_)));
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+    throw std::runtime_error("cannot write '" + path_ +
+                             "': cannot rename the temporary file into place: " + std::strerror(errno));
+  temporary_.clear();
+}
+
+void writeFigure(const std::string& path, int width, int height, const Vec3& background,
+                 const std::function<void(Canvas&)>& draw, const ImageMetadata& metadata) {
+  if (figureExtension(path) == ".png") {
+    Canvas canvas(width, height, background);
+    draw(canvas);
+    writePNG(path, canvas.image(), metadata);
+    return;
+  }
+  Canvas canvas(path, width, height, background);
+  draw(canvas);
+  canvas.finish();
 }
 
 std::vector<std::string> wrapText(const std::string& text, float maxWidth, int scale) {

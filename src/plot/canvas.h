@@ -1,9 +1,11 @@
 #pragma once
 // A canvas for charts drawn with Cairo: filled rectangles, anti-aliased lines, markers, images
 // and text in a real font (DejaVu Sans, through fontconfig). A raster canvas gives an Image (in
-// linear RGB, so the usual PNG writer encodes it); a vector one writes an SVG or PDF file whose
-// text stays text. Colours are given in linear RGB.
+// linear RGB, so the usual PNG writer encodes it); a vector one writes an SVG or PDF file (the
+// PDF's text stays text; Cairo 1.16 writes SVG text as glyph outlines). Colours are given in
+// linear RGB.
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,8 +51,15 @@ class Canvas {
  private:
   cairo_surface_t* surface_ = nullptr;
   cairo_t* cr_ = nullptr;
-  std::string path_;  // of a vector canvas
+  std::string path_;       // of a vector canvas
+  std::string temporary_;  // what it is written to until finish() renames it; empty once renamed
 };
+
+// A figure of width x height drawn by `draw`, written to `path`: .png as pixels (with `metadata`),
+// .svg or .pdf as vectors (width and height in points). Throws std::runtime_error for another
+// extension or a file Cairo cannot write.
+void writeFigure(const std::string& path, int width, int height, const Vec3& background,
+                 const std::function<void(Canvas&)>& draw, const ImageMetadata& metadata = {});
 
 // `text` broken into lines no wider than `maxWidth` pixels at `scale`, at " | " separators or
 // else at spaces.

@@ -26,44 +26,76 @@ Image resizeImage(const Image& image, int width, int height) {
   return out;
 }
 
-Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
-                       const std::string& title) {
+namespace {
+
+// Where everything goes, from the entries' sizes and texts.
+struct SheetLayout {
+  int columns = 0, width = 0, height = 0, tileHeight = 0, titleHeight = 0, labelHeight = 0;
+  int titleLineHeight = 0, labelLineHeight = 0;
+  std::vector<std::string> titleLines;
+  std::vector<std::vector<std::string>> labels;
+};
+
+constexpr int kMargin = 12;
+
+SheetLayout layoutSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
+                        const std::string& title) {
   if (entries.empty() || columns < 1 || tileWidth < 8) throw std::invalid_argument("empty contact sheet");
-  columns = std::min(columns, int(entries.size()));  // fewer images than columns: no empty tiles
-  const int margin = 12;
-  int tileHeight = 0;
+  SheetLayout l;
+  l.columns = std::min(columns, int(entries.size()));  // fewer images than columns: no empty tiles
   for (const auto& e : entries)
-    tileHeight = std::max(tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
-  const int rows = (int(entries.size()) + columns - 1) / columns;
-  const int width = margin + columns * (tileWidth + margin);
+    l.tileHeight = std::max(l.tileHeight, int(double(tileWidth) * e.image.height / e.image.width));
+  const int rows = (int(entries.size()) + l.columns - 1) / l.columns;
+  l.width = kMargin + l.columns * (tileWidth + kMargin);
   // Titles and labels wrap to their width; a label keeps at most kLabelLines lines.
   constexpr size_t kLabelLines = 4;
-  const std::vector<std::string> titleLines = wrapText(title, float(width - 2 * margin), 3);
-  const int titleLineHeight = int(Canvas::textHeight(3)) + 8, labelLineHeight = int(Canvas::textHeight(2)) + 4;
-  const int titleHeight = titleLines.empty() ? 0 : 12 + int(titleLines.size()) * titleLineHeight;
-  std::vector<std::vector<std::string>> labels;
+  l.titleLines = wrapText(title, float(l.width - 2 * kMargin), 3);
+  l.titleLineHeight = int(Canvas::textHeight(3)) + 8;
+  l.labelLineHeight = int(Canvas::textHeight(2)) + 4;
+  l.titleHeight = l.titleLines.empty() ? 0 : 12 + int(l.titleLines.size()) * l.titleLineHeight;
   size_t labelLines = 1;
   for (const auto& e : entries) {
-    labels.push_back(wrapText(e.label, float(tileWidth), 2));
-    if (labels.back().size() > kLabelLines) labels.back().resize(kLabelLines);
-    labelLines = std::max(labelLines, labels.back().size());
+    l.labels.push_back(wrapText(e.label, float(tileWidth), 2));
+    if (l.labels.back().size() > kLabelLines) l.labels.back().resize(kLabelLines);
+    labelLines = std::max(labelLines, l.labels.back().size());
   }
-  const int labelHeight = 12 + int(labelLines) * labelLineHeight;
-  const int height = titleHeight + margin + rows * (tileHeight + labelHeight + margin);
-  const Vec3 background = srgbColour(0.12f, 0.12f, 0.12f), ink = srgbColour(0.92f, 0.92f, 0.92f);
-  Canvas canvas(width, height, background);
-  for (size_t l = 0; l < titleLines.size(); ++l)
-    canvas.text(margin, 12 + float(l * titleLineHeight), titleLines[l], ink, 3);
+  l.labelHeight = 12 + int(labelLines) * l.labelLineHeight;
+  l.height = l.titleHeight + kMargin + rows * (l.tileHeight + l.labelHeight + kMargin);
+  return l;
+}
+
+const Vec3 kSheetBackground = srgbColour(0.12f, 0.12f, 0.12f), kSheetInk = srgbColour(0.92f, 0.92f, 0.92f);
+
+void drawSheet(Canvas& canvas, const std::vector<ContactSheetEntry>& entries, int tileWidth, const SheetLayout& l) {
+  for (size_t k = 0; k < l.titleLines.size(); ++k)
+    canvas.text(kMargin, 12 + float(k * l.titleLineHeight), l.titleLines[k], kSheetInk, 3);
   for (size_t i = 0; i < entries.size(); ++i) {
     const Image& src = entries[i].image;
     int h = std::max(1, int(double(tileWidth) * src.height / src.width));
-    int x0 = margin + int(i % columns) * (tileWidth + margin);
-    int y0 = titleHeight + margin + int(i / columns) * (tileHeight + labelHeight + margin);
+    int x0 = kMargin + int(i % l.columns) * (tileWidth + kMargin);
+    int y0 = l.titleHeight + kMargin + int(i / l.columns) * (l.tileHeight + l.labelHeight + kMargin);
     canvas.drawImage(x0, y0, resizeImage(src, tileWidth, h));
-    for (size_t l = 0; l < labels[i].size(); ++l)  // right under its image
-      canvas.text(float(x0), float(y0 + h + 8 + int(l) * labelLineHeight), labels[i][l], ink, 2);
+    for (size_t k = 0; k < l.labels[i].size(); ++k)  // right under its image
+      canvas.text(float(x0), float(y0 + h + 8 + int(k) * l.labelLineHeight), l.labels[i][k], kSheetInk, 2);
   }
+}
+
+}  // namespace
+
+Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
+                       const std::string& title) {
+  const SheetLayout layout = layoutSheet(entries, columns, tileWidth, title);
+  Canvas canvas(layout.width, layout.height, kSheetBackground);
+  drawSheet(canvas, entries, tileWidth, layout);
   return canvas.image();
+}
+
+void writeContactSheet(const std::string& path, const std::vector<ContactSheetEntry>& entries, int columns,
+                       int tileWidth, const std::string& title, const ImageMetadata& metadata) {
+  const SheetLayout layout = layoutSheet(entries, columns, tileWidth, title);
+  writeFigure(
+      path, layout.width, layout.height, kSheetBackground,
+      [&](Canvas& canvas) { drawSheet(canvas, entries, tileWidth, layout); }, metadata);
 }
 
 }  // namespace columba

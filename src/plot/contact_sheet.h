@@ -16,6 +16,11 @@ struct ContactSheetEntry {
 Image makeContactSheet(const std::vector<ContactSheetEntry>& entries, int columns, int tileWidth,
                        const std::string& title);
 
+// The sheet written to `path`: .png (pixels, with `metadata`), .svg or .pdf (vector: the images
+// embedded, the title and labels text).
+void writeContactSheet(const std::string& path, const std::vector<ContactSheetEntry>& entries, int columns,
+                       int tileWidth, const std::string& title, const ImageMetadata& metadata = {});
+
 // `image` resampled to width x height by averaging the source pixels under each target pixel
 // (nearest pixel when enlarging).
 Image resizeImage(const Image& image, int width, int height);

@@ -6,36 +6,61 @@
 #include <cmath>
 #include "core/math.h"
 #include "plot/canvas.h"
+#include "plot/line_plot.h"
 
 namespace columba {
 
 namespace {
 constexpr float kMargin = 60.0f;
-}  // namespace
+constexpr float kBarWidth = 18.0f;
 
-Image drawHemisphereChart(const Image& disk, const HemisphereChart& chart) {
+// Where everything goes for a disk of this size.
+struct Layout {
+  int width = 0, height = 0;
+  float top = 0.0f;   // of the disk
+  float barX = 0.0f;  // left edge of the brightness bar
+  std::vector<std::string> subtitle;
+};
+
+Layout layoutFor(const Image& disk, const HemisphereChart& chart) {
+  Layout l;
   const float size = float(disk.width);
-  const int width = std::max(int(size + 2 * kMargin) + 140, 640);  // room on the right for the axis label
-  const std::vector<std::string> subtitle = wrapText(chart.subtitle, float(width) - 20, 2);
+  // Right of the disk: the axis label (out to 1.1 radii and its text), then the brightness bar
+  // and its tick labels.
+  l.barX = kMargin + 1.05f * size + 110.0f;
+  l.width = std::max(int(l.barX) + 110, 640);
+  l.subtitle = wrapText(chart.subtitle, float(l.width) - 20, 2);
   const float lineHeight = Canvas::textHeight(2) + 6;
-  const float top = 20 + Canvas::textHeight(3) + 10 + lineHeight * subtitle.size() + 20;
-  const int height = int(top + size + kMargin);
-  const Vec3 white(1, 1, 1), black(0, 0, 0), grey = srgbColour(0.55f, 0.55f, 0.55f);
+  l.top = 20 + Canvas::textHeight(3) + 10 + lineHeight * float(l.subtitle.size()) + 20;
+  l.height = int(l.top + size + kMargin);
+  return l;
+}
+
+// Rec. 709 luminance of a linear RGB pixel.
+float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+
+void drawChart(Canvas& canvas, const Image& disk, const HemisphereChart& chart, const Layout& layout) {
+  const float size = float(disk.width);
+  const Vec3 black(0, 0, 0), grey = srgbColour(0.55f, 0.55f, 0.55f);
   const Vec3 lightColour = srgbColour(1.0f, 0.85f, 0.1f), mirrorColour = srgbColour(0.2f, 0.9f, 1.0f);
-  Canvas canvas(width, height, white);
+  const float width = float(layout.width);
   canvas.text(0.5f * (width - Canvas::textWidth(chart.title, 3)), 20, chart.title, black, 3);
-  for (size_t i = 0; i < subtitle.size(); ++i)
-    canvas.text(0.5f * (width - Canvas::textWidth(subtitle[i])), 20 + Canvas::textHeight(3) + 10 + lineHeight * i,
-                subtitle[i], black);
-  const float x0 = kMargin, y0 = top, radius = 0.5f * size;
+  const float lineHeight = Canvas::textHeight(2) + 6;
+  for (size_t i = 0; i < layout.subtitle.size(); ++i)
+    canvas.text(0.5f * (width - Canvas::textWidth(layout.subtitle[i])),
+                20 + Canvas::textHeight(3) + 10 + lineHeight * float(i), layout.subtitle[i], black);
+  const float x0 = kMargin, y0 = layout.top, radius = 0.5f * size;
   const Vec2 centre(x0 + radius, y0 + radius);
   // Only the disk: the corners, which no direction maps to, stay white.
   Image shown = disk;
+  float brightest = 0.0f;
   for (int y = 0; y < disk.height; ++y)
     for (int x = 0; x < disk.width; ++x) {
       float u = 2.0f * (x + 0.5f) / disk.width - 1.0f, v = 2.0f * (y + 0.5f) / disk.height - 1.0f;
       if (u * u + v * v >= 1.0f)
         for (int c = 0; c < 3; ++c) shown.pixel(x, y)[c] = 1.0f;
+      else if (float Y = luminance(disk.pixel(x, y)); std::isfinite(Y))
+        brightest = std::max(brightest, Y);
     }
   canvas.drawImage(int(x0), int(y0), shown);
   // A direction at polar angle theta and azimuth phi, in chart pixels.
@@ -78,7 +103,46 @@ Image drawHemisphereChart(const Image& disk, const HemisphereChart& chart) {
   canvas.text(x0 + 24, ly, "light", black);
   ring(Vec2(x0 + 110, ly + 6), mirrorColour);
   canvas.text(x0 + 124, ly, "mirror direction", black);
+
+  // The brightness bar: a grey of value v (linear, as the disk's pixels are shown) at height v;
+  // values above 1 clip to white, and the disk's largest luminance is written under the bar.
+  const float barTop = y0 + Canvas::textHeight() + 8, barBottom = y0 + size;
+  const float barX = layout.barX;
+  canvas.text(barX + 0.5f * kBarWidth - 0.5f * Canvas::textWidth(chart.valueLabel), y0, chart.valueLabel, black);
+  const int steps = std::max(2, int(barBottom - barTop));
+  for (int k = 0; k < steps; ++k) {
+    const float v = (float(k) + 0.5f) / float(steps);
+    const float yHigh = barBottom - (barBottom - barTop) * float(k + 1) / float(steps);
+    const float yLow = barBottom - (barBottom - barTop) * float(k) / float(steps);
+    canvas.fillRect(barX, yHigh, barX + kBarWidth, yLow + 0.5f, Vec3(v, v, v));
+  }
+  canvas.line(Vec2(barX, barTop), Vec2(barX + kBarWidth, barTop), black, 1.0f);
+  canvas.line(Vec2(barX, barBottom), Vec2(barX + kBarWidth, barBottom), black, 1.0f);
+  canvas.line(Vec2(barX, barTop), Vec2(barX, barBottom), black, 1.0f);
+  canvas.line(Vec2(barX + kBarWidth, barTop), Vec2(barX + kBarWidth, barBottom), black, 1.0f);
+  for (float v : niceTicks(0.0f, 1.0f, 4)) {
+    const float y = barBottom - (barBottom - barTop) * v;
+    canvas.line(Vec2(barX + kBarWidth, y), Vec2(barX + kBarWidth + 5, y), black, 1.0f);
+    canvas.text(barX + kBarWidth + 8, y - 0.5f * Canvas::textHeight(), fmt::format("{:g}", v), black);
+  }
+  canvas.text(barX - 20, barBottom + 8, fmt::format("largest {:.3g}", brightest), black);
+  if (brightest > 1.0f) canvas.text(barX - 20, barBottom + 8 + lineHeight, "(clipped above 1)", black);
+}
+}  // namespace
+
+Image drawHemisphereChart(const Image& disk, const HemisphereChart& chart) {
+  const Layout layout = layoutFor(disk, chart);
+  Canvas canvas(layout.width, layout.height, Vec3(1, 1, 1));
+  drawChart(canvas, disk, chart, layout);
   return canvas.image();
+}
+
+void writeHemisphereChart(const std::string& path, const Image& disk, const HemisphereChart& chart,
+                          const ImageMetadata& metadata) {
+  const Layout layout = layoutFor(disk, chart);
+  writeFigure(
+      path, layout.width, layout.height, Vec3(1, 1, 1), [&](Canvas& canvas) { drawChart(canvas, disk, chart, layout); },
+      metadata);
 }
 
 }  // namespace columba

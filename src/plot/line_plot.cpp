@@ -97,13 +97,8 @@ Image renderLinePlot(const LinePlot& plot, int width, int height) {
 }
 
 void writeLinePlot(const std::string& path, const LinePlot& plot, int width, int height) {
-  if (path.size() >= 4 && path.substr(path.size() - 4) == ".png") {
-    writePNG(path, renderLinePlot(plot, width, height));
-    return;
-  }
-  Canvas canvas(path, width, height, srgbColour(1, 1, 1));
-  drawLinePlot(canvas, plot, width, height);
-  canvas.finish();
+  writeFigure(path, width, height, srgbColour(1, 1, 1),
+              [&](Canvas& canvas) { drawLinePlot(canvas, plot, width, height); });
 }
 
 }  // namespace columba

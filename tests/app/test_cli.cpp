@@ -282,6 +282,14 @@ TEST_F(CliTest, MontageWritesTheFormatItsNameAsksForSlow) {
   CommandResult exr = run("montage -o " + (dir_ / "sheet.EXR").string() + " " + (dir_ / "a.png").string());
   ASSERT_EQ(exr.status, 0) << exr.output;
   EXPECT_GT(columba::readEXR((dir_ / "sheet.EXR").string()).width, 0);
+  // Vector sheets for papers: the images embedded, the labels text.
+  for (const char* name : {"sheet.pdf", "sheet.Svg"}) {
+    CommandResult vector = run("montage -o " + (dir_ / "figures" / name).string() + " " + (dir_ / "a.png").string());
+    ASSERT_EQ(vector.status, 0) << vector.output;
+    std::ifstream in(dir_ / "figures" / name, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find(std::string(name) == "sheet.pdf" ? "%PDF-" : "<svg"), std::string::npos) << name;
+  }
 }
 
 TEST_F(CliTest, CommandLineMistakesGetShortNamedMessagesSlow) {
