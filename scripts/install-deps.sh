@@ -6,7 +6,7 @@ packages=("$@")
 [ ${#packages[@]} -gt 0 ] || packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libpugixml-dev
           libopenexr-dev libpng-dev libstb-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
           libbenchmark-dev libfmt-dev libtinyobjloader-dev libnlopt-dev zlib1g-dev clang-format
-          python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev mkdocs libcairo2-dev
+          python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev mkdocs libcairo2-dev liblcms2-dev
           fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do

@@ -26,6 +26,7 @@ try:
         fit,
         fit_spectra,
         fresnel,
+        human_colour_difference,
         melanin_reflectance,
         observer,
         observers,
@@ -50,7 +51,7 @@ __all__ = [
     "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "multilayer", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
-    "observers", "observer", "cone_catches", "colour_distance",
+    "observers", "observer", "cone_catches", "colour_distance", "human_colour_difference",
 ]
 
 

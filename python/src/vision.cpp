@@ -8,8 +8,10 @@
 #include <cmath>
 #include <string>
 
+#include "core/illuminant.h"
 #include "core/spectrum.h"
 #include "vision/colour_distance.h"
+#include "vision/human_colour_difference.h"
 #include "vision/observer.h"
 #include "vision/observer_table.h"
 #include "vision/quantum_catch.h"
@@ -73,8 +75,8 @@ Observer observerFrom(const py::object& spec) {
 // `values` (one spectrum, or N x k: k spectra in columns, pavo's layout) at `wavelengths`,
 // linearly interpolated onto the observer's grid; a spectrum must cover every wavelength where a
 // cone is sensitive (above 1e-4 of its peak).
-std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArray& wavelengths,
-                                       const DoubleArray& values, const char* what) {
+// The wavelengths checked: a 1-D increasing array, and `values` one row per wavelength.
+void checkSpectra(const DoubleArray& wavelengths, const DoubleArray& values, const char* what) {
   if (wavelengths.ndim() != 1 || wavelengths.shape(0) < 2)
     throw py::value_error("wavelengths must be a 1-D array of at least two values (nm)");
   const py::ssize_t n = wavelengths.shape(0);
@@ -83,7 +85,35 @@ std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArr
     if (!(w[i] > w[i - 1])) throw py::value_error("wavelengths must increase");
   if (!((values.ndim() == 1 && values.shape(0) == n) || (values.ndim() == 2 && values.shape(0) == n)))
     throw py::value_error(std::string(what) + " must have one row per wavelength (N, or N x k for k spectra)");
+}
+
+// Each spectrum piecewise linear through its samples (core/spectrum.h), read on the grid where it
+// was measured and 0 elsewhere.
+std::vector<std::vector<float>> interpolated(const SpectralGrid& grid, const DoubleArray& wavelengths,
+                                             const DoubleArray& values) {
+  const py::ssize_t n = wavelengths.shape(0);
+  const double* w = wavelengths.data();
   const py::ssize_t spectra = values.ndim() == 1 ? 1 : values.shape(1);
+  const std::vector<float> lambdas(w, w + n);
+  const double* v = values.data();
+  std::vector<std::vector<float>> out(size_t(spectra), std::vector<float>(grid.count, 0.0f));
+  for (py::ssize_t k = 0; k < spectra; ++k) {
+    std::vector<float> measured(static_cast<size_t>(n));
+    for (py::ssize_t i = 0; i < n; ++i) measured[size_t(i)] = float(v[i * spectra + k]);
+    const SpectralDistribution spectrum = SpectralDistribution::piecewiseLinear(lambdas, measured);
+    for (size_t g = 0; g < grid.count; ++g) {
+      const double x = grid.wavelength(g);
+      if (x >= w[0] && x <= w[n - 1]) out[size_t(k)][g] = spectrum.eval(float(x));
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArray& wavelengths,
+                                       const DoubleArray& values, const char* what) {
+  checkSpectra(wavelengths, values, what);
+  const py::ssize_t n = wavelengths.shape(0);
+  const double* w = wavelengths.data();
   // The range the cones see.
   double lo = observer.grid.lastNm(), hi = observer.grid.firstNm;
   auto widen = [&](const std::vector<float>& s) {
@@ -98,26 +128,40 @@ std::vector<std::vector<float>> onGrid(const Observer& observer, const DoubleArr
     throw py::value_error(std::string(what) + " must cover " + std::to_string(int(std::floor(lo))) + "-" +
                           std::to_string(int(std::ceil(hi))) + " nm, where observer '" + observer.name +
                           "' is sensitive; it covers " + std::to_string(w[0]) + "-" + std::to_string(w[n - 1]) + " nm");
-  // Each spectrum piecewise linear through its samples (core/spectrum.h), read on the grid where
-  // it was measured; no cone is sensitive elsewhere.
-  const std::vector<float> lambdas(w, w + n);
-  const double* v = values.data();
-  std::vector<std::vector<float>> out(size_t(spectra), std::vector<float>(observer.grid.count, 0.0f));
-  for (py::ssize_t k = 0; k < spectra; ++k) {
-    std::vector<float> measured(static_cast<size_t>(n));
-    for (py::ssize_t i = 0; i < n; ++i) measured[size_t(i)] = float(v[i * spectra + k]);
-    const SpectralDistribution spectrum = SpectralDistribution::piecewiseLinear(lambdas, measured);
-    for (size_t g = 0; g < observer.grid.count; ++g) {
-      const double x = observer.grid.wavelength(g);
-      if (x >= w[0] && x <= w[n - 1]) out[size_t(k)][g] = spectrum.eval(float(x));
-    }
-  }
-  return out;
+  return interpolated(observer.grid, wavelengths, values);  // no cone is sensitive outside
 }
 
 std::vector<float> illuminantFrom(const Observer& observer, const DoubleArray& wavelengths, const py::object& given) {
   if (given.is_none()) return equalQuantumSpectrum(observer.grid);
   return onGrid(observer, wavelengths, given.cast<DoubleArray>(), "illuminant").front();
+}
+
+// A reflectance spectrum's CIELAB colour under `illuminant` (None: D65), a white reflector over the
+// same wavelengths the reference white. Spectra must cover 400-700 nm; the colour-matching
+// functions outside a spectrum's range are left out.
+CIELab humanColour(const DoubleArray& wavelengths, const DoubleArray& reflectance, const py::object& illuminant,
+                   const char* what) {
+  checkSpectra(wavelengths, reflectance, what);
+  if (reflectance.ndim() != 1) throw py::value_error(std::string(what) + " must be one spectrum (N)");
+  const double* w = wavelengths.data();
+  if (w[0] > 400.0 || w[wavelengths.shape(0) - 1] < 700.0)
+    throw py::value_error(std::string(what) + " must cover 400-700 nm for the human observer; it covers " +
+                          std::to_string(w[0]) + "-" + std::to_string(w[wavelengths.shape(0) - 1]) + " nm");
+  const SpectralGrid grid = visionGrid();
+  std::vector<float> light;
+  if (illuminant.is_none()) {
+    light = tabulateOnGrid(grid, [](double l) { return double(d65(float(l))); });
+  } else {
+    const DoubleArray given = illuminant.cast<DoubleArray>();
+    checkSpectra(wavelengths, given, "illuminant");
+    light = interpolated(grid, wavelengths, given).front();
+  }
+  // The reference white reflects 1 over the spectrum's own range, so that 1 there is white.
+  DoubleArray ones(wavelengths.shape(0));
+  std::fill(ones.mutable_data(), ones.mutable_data() + ones.size(), 1.0);
+  const std::vector<float> white = interpolated(grid, wavelengths, ones).front();
+  return labFromXYZ(reflectanceXYZ(grid, interpolated(grid, wavelengths, reflectance).front(), light),
+                    reflectanceXYZ(grid, white, light));
 }
 
 }  // namespace
@@ -192,6 +236,22 @@ void bindVision(py::module_& m) {
       py::arg("illuminant") = py::none(),
       "The receptor-noise-limited distance between two reflectance spectra in JND (dS, chromatic; dL, achromatic "
       "where the observer has double cones), Vorobyev & Osorio 1998");
+  m.def(
+      "human_colour_difference",
+      [](const DoubleArray& wavelengths, const DoubleArray& a, const DoubleArray& b, const py::object& illuminant) {
+        const CIELab la = humanColour(wavelengths, a, illuminant, "a"),
+                     lb = humanColour(wavelengths, b, illuminant, "b");
+        py::dict r;
+        r["lab_a"] = py::make_tuple(la.L, la.a, la.b);
+        r["lab_b"] = py::make_tuple(lb.L, lb.a, lb.b);
+        r["dE2000"] = deltaE2000(la, lb);
+        r["dEab"] = deltaE1976(la, lb);
+        r["jnd"] = deltaE1976(la, lb) / kJustNoticeableDeltaE1976;
+        return r;
+      },
+      py::arg("wavelengths"), py::arg("a"), py::arg("b"), py::arg("illuminant") = py::none(),
+      "How far apart two reflectance spectra look to a human (CIE 1931 observer): their CIELAB colours under the "
+      "illuminant (default D65), CIEDE2000 and CIE 1976 differences, and the latter in JND at 2.3 a JND");
 }
 
 }  // namespace columba::python

@@ -99,3 +99,21 @@ def test_an_observer_is_read_from_a_table_of_its_sensitivities(tmp_path):
     bad.write_text("wl,UVS,green\n300,1,1\n")
     with pytest.raises(ValueError, match="bad.csv:1"):
         columba.observer(str(bad))
+
+
+def test_a_human_sees_greys_by_their_lightness_and_colours_apart():
+    wl = np.arange(380.0, 781.0, 5.0)
+    white, grey = np.ones_like(wl), np.full_like(wl, 0.18)
+    r = columba.human_colour_difference(wl, white, grey)
+    # A flat grey under D65 has the white's chromaticity: L* = 116 * 0.18^(1/3) - 16, a* = b* = 0.
+    assert r["lab_a"] == pytest.approx((100.0, 0.0, 0.0), abs=1e-3)
+    assert r["lab_b"] == pytest.approx((116.0 * 0.18 ** (1 / 3) - 16.0, 0.0, 0.0), abs=1e-3)
+    assert r["dEab"] == pytest.approx(100.0 - r["lab_b"][0], abs=1e-3)
+    assert r["jnd"] == pytest.approx(r["dEab"] / 2.3)
+    assert columba.human_colour_difference(wl, grey, grey)["dE2000"] == 0.0
+    # Long-pass (reddish) against short-pass (bluish): far apart, with a* of opposite sign.
+    red, blue = (wl > 600).astype(float), (wl < 480).astype(float)
+    far = columba.human_colour_difference(wl, red, blue)
+    assert far["lab_a"][1] > 20 and far["dE2000"] > 30
+    with pytest.raises(ValueError, match="cover 400-700 nm"):
+        columba.human_colour_difference(wl[wl > 450], grey[wl > 450], grey[wl > 450])

@@ -19,7 +19,7 @@ struct CompareOptions {
   std::string observer, regionA, regionB, output;
 };
 
-int compareForBird(const CompareOptions& options) {
+int compareColourDistances(const CompareOptions& options) {
   if (!options.output.empty() && checkOutputImagePath(options.output, true) != ImageFormat::EXR)
     throw std::runtime_error("-o '" + options.output + "': the map of distances is written as an .exr (and its .png)");
   const EXRImageFile a = readEXRFile(options.a), b = readEXRFile(options.b);
@@ -34,12 +34,12 @@ int compareForBird(const CompareOptions& options) {
     throw std::runtime_error("--region-b needs --region (the region of the first image)");
   if (jnd.regionA && !jnd.output.empty())
     throw std::runtime_error("-o writes the per-pixel map: it cannot be combined with --region");
-  compareForBird(a, b, options.a, options.b, jnd);
+  compareColours(a, b, options.a, options.b, jnd);
   return 0;
 }
 
 int compareImages(const CompareOptions& options) {
-  if (options.jnd) return compareForBird(options);
+  if (options.jnd) return compareColourDistances(options);
   EXRImageFile a = readEXRFile(options.a), b = readEXRFile(options.b);
   if (a.image.width != b.image.width || a.image.height != b.image.height)
     throw std::runtime_error(fmt::format("'{}' is {} x {} pixels but '{}' is {} x {}", options.a, a.image.width,
@@ -99,29 +99,33 @@ void addCompareCommand(CLI::App& app) {
   auto options = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand(
       "compare",
-      "Compare two EXR images value by value (exit status 0: identical), or their colours as a bird sees them (--jnd)");
+      "Compare two EXR images value by value (exit status 0: identical), or their colours as a bird or a human "
+      "sees them (--jnd)");
   cmd->add_option("a", options->a, "An EXR image")->required();
   cmd->add_option("b", options->b, "Another EXR image of the same size")->required();
   cmd->add_option("--tolerance", options->tolerance,
                   "Largest absolute difference still accepted (default 0: bit-identical only)");
-  cmd->add_flag("--jnd", options->jnd,
-                "Colour distances (dS, JND) between the images' cone catches, pixel by pixel or between regions "
-                "(renders whose film has a bird's observer)");
+  cmd->add_flag(
+      "--jnd", options->jnd,
+      "Colour distances pixel by pixel or between regions: dS (JND) between the cone catches of renders whose "
+      "film has a bird's observer; CIEDE2000 between the RGB of others (observer cie1931)");
   cmd->add_option("--observer", options->observer,
-                  "With --jnd: the observer whose receptor noise is used (default: the one image A records)");
+                  "With --jnd: a bird's observer whose receptor noise is used, or cie1931 (default: the one image A "
+                  "records, else cie1931)");
   cmd->add_option(
       "--region", options->regionA,
       "With --jnd: X0,Y0,X1,Y1, compare the mean catches of these pixels (of A, and of B unless --region-b)");
   cmd->add_option("--region-b", options->regionB, "With --jnd and --region: X0,Y0,X1,Y1, B's region");
   cmd->add_option("-o,--output", options->output,
-                  "With --jnd: write the per-pixel dS as an EXR (and its PNG beside it), made where missing");
+                  "With --jnd: write the per-pixel distance as an EXR (and its PNG beside it), made where missing");
   cmd->callback([options] {
     if (!options->jnd)
       for (const auto& [option, value] : {std::pair{"--observer", options->observer},
                                           {"--region", options->regionA},
                                           {"--region-b", options->regionB},
                                           {"-o", options->output}})
-        if (!value.empty()) throw CLI::ValidationError(option, "compares colours as a bird sees them: add --jnd");
+        if (!value.empty())
+          throw CLI::ValidationError(option, "compares colours as a bird or a human sees them: add --jnd");
     int code = compareImages(*options);
     if (code != 0) throw CLI::RuntimeError(code);
   });

@@ -10,6 +10,7 @@
 #include "core/number_text.h"
 #include "io/output_directory.h"
 #include "vision/colour_distance.h"
+#include "vision/human_colour_difference.h"
 #include "vision/observer_table.h"
 
 namespace columba {
@@ -55,22 +56,85 @@ std::optional<ConeCatches> regionCatches(const Image& image, const std::vector<s
   return c;
 }
 
-// The observer the comparison uses: `observer`, else the one `a`'s metadata names.
-Observer jndObserver(const EXRImageFile& a, const std::string& pathA, const std::string& observer) {
-  std::string name = observer;
-  if (name.empty()) {
-    const std::string recorded = metadataValue(a.metadata, "Observer");
-    name = recorded.substr(0, recorded.find(':'));
-    if (name.empty())
-      throw std::runtime_error(
-          fmt::format("'{}' names no observer (it has no Observer attribute): give --observer", pathA));
-  }
+// The observer the comparison uses: `observer`, else the one `a`'s metadata names, else the CIE 1931
+// observer whose RGB every render records.
+std::string observerName(const EXRImageFile& a, const std::string& observer) {
+  if (!observer.empty()) return observer;
+  const std::string recorded = metadataValue(a.metadata, "Observer");
+  const std::string name = recorded.substr(0, recorded.find(':'));
+  return name.empty() ? "cie1931" : name;
+}
+
+Observer birdObserver(const std::string& name) {
   if (!namesObserverTable(name) && !isBuiltinObserver(name))
     throw std::runtime_error(
-        fmt::format("unknown observer '{}' (known: {}; or a table of sensitivities, FILE.csv: "
+        fmt::format("unknown observer '{}' (known: cie1931, {}; or a table of sensitivities, FILE.csv: "
                     "give the table the image was rendered with as --observer)",
                     name, builtinObserverNames()));
   return observerNamedOrTabulated(name);
+}
+
+Vec3 rgbAt(const Image& image, size_t p) { return {image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]}; }
+
+Vec3 regionMeanRGB(const Image& image, const PixelRect& r) {
+  Vec3 sum(0.0f, 0.0f, 0.0f);
+  const float n = float(r.width()) * float(r.height());
+  for (int y = r.y0; y < r.y1; ++y)
+    for (int x = r.x0; x < r.x1; ++x) sum = sum + rgbAt(image, size_t(y) * size_t(image.width) + size_t(x)) / n;
+  return sum;
+}
+
+bool finite(const Vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
+
+// Per-pixel distances summarised, printed after `what`, and written as a map where asked.
+void reportPerPixel(const std::vector<double>& distances, size_t pixels, const Image& map, const std::string& what,
+                    const std::string& skipped, const std::string& unit, const std::string& quantity,
+                    const std::string& pathA, const std::string& pathB, const JndOptions& options) {
+  std::vector<double> sorted = distances;
+  std::sort(sorted.begin(), sorted.end());
+  double mean = 0.0;
+  for (double d : sorted) mean += d / double(sorted.size());
+  auto quantile = [&](double q) { return sorted[std::min(sorted.size() - 1, size_t(q * double(sorted.size())))]; };
+  fmt::print(
+      "{} per pixel over {} of {} pixels{}: mean {:.3f}, median {:.3f}, 95th percentile {:.3f}, largest {:.3f} {}\n",
+      what, sorted.size(), pixels, skipped, mean, quantile(0.5), quantile(0.95), sorted.back(), unit);
+  if (options.output.empty()) return;
+  const std::string png = options.output.substr(0, options.output.size() - 4) + ".png";
+  makeOutputDirectory(options.output, directoryOf(options.output));
+  writeEXRAndPNG(options.output, png, map, {{"Quantity", quantity}, {"Images", pathA + ", " + pathB}});
+  fmt::print("wrote {}, {}\n", options.output, png);
+}
+
+// The human observer: CIEDE2000 between the images' RGB in CIELAB, RGB (1, 1, 1) the white.
+void compareForHuman(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
+                     const JndOptions& options) {
+  if (options.regionA) {
+    const PixelRect ra = *options.regionA, rb = options.regionB ? *options.regionB : ra;
+    const CIELab la = labFromLinearRGB(regionMeanRGB(a.image, ra)), lb = labFromLinearRGB(regionMeanRGB(b.image, rb));
+    const double dE76 = deltaE1976(la, lb);
+    fmt::print(
+        "cie1931 observer (CIELAB, white RGB 1): dE2000 = {:.3f}, dE*ab = {:.3f} (about {:.2f} JND at 2.3 a JND) "
+        "between the mean colours of [{}, {}) x [{}, {}) of '{}' (L*a*b* {:.1f} {:.1f} {:.1f}) and [{}, {}) x "
+        "[{}, {}) of '{}' (L*a*b* {:.1f} {:.1f} {:.1f})\n",
+        deltaE2000(la, lb), dE76, dE76 / kJustNoticeableDeltaE1976, ra.x0, ra.x1, ra.y0, ra.y1, pathA, la.L, la.a, la.b,
+        rb.x0, rb.x1, rb.y0, rb.y1, pathB, lb.L, lb.a, lb.b);
+    return;
+  }
+  Image map(a.image.width, a.image.height);
+  std::vector<double> distances;
+  const size_t pixels = size_t(a.image.width) * size_t(a.image.height);
+  for (size_t p = 0; p < pixels; ++p) {
+    const Vec3 ca = rgbAt(a.image, p), cb = rgbAt(b.image, p);
+    if (!finite(ca) || !finite(cb)) continue;
+    const double dE = deltaE2000(labFromLinearRGB(ca), labFromLinearRGB(cb));
+    distances.push_back(dE);
+    std::fill(&map.rgb[3 * p], &map.rgb[3 * p] + 3, float(dE));
+  }
+  if (distances.empty()) throw std::runtime_error("no pixel of both images has a finite colour");
+  reportPerPixel(distances, pixels, map, "cie1931 observer (CIELAB, white RGB 1): dE2000", "", "",
+                 "CIEDE2000 colour difference of each pixel's RGB in CIELAB, RGB (1, 1, 1) the white; 0 where a "
+                 "pixel is not finite",
+                 pathA, pathB, options);
 }
 }  // namespace
 
@@ -93,9 +157,14 @@ PixelRect parsePixelRect(const std::string& text, int width, int height, const s
   return r;
 }
 
-void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
+void compareColours(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
                     const JndOptions& options) {
-  const Observer observer = jndObserver(a, pathA, options.observer);
+  if (!options.regionA && (a.image.width != b.image.width || a.image.height != b.image.height))
+    throw std::runtime_error(fmt::format("'{}' is {} x {} pixels but '{}' is {} x {}: compare regions (--region)",
+                                         pathA, a.image.width, a.image.height, pathB, b.image.width, b.image.height));
+  const std::string name = observerName(a, options.observer);
+  if (name == "cie1931") return compareForHuman(a, b, pathA, pathB, options);
+  const Observer observer = birdObserver(name);
   const std::vector<size_t> ia = channelIndices(a.image, observer, pathA),
                             ib = channelIndices(b.image, observer, pathB);
   if (options.regionA) {
@@ -109,9 +178,6 @@ void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::str
         rb.y1, pathB);
     return;
   }
-  if (a.image.width != b.image.width || a.image.height != b.image.height)
-    throw std::runtime_error(fmt::format("'{}' is {} x {} pixels but '{}' is {} x {}: compare regions (--region)",
-                                         pathA, a.image.width, a.image.height, pathB, b.image.width, b.image.height));
   Image map(a.image.width, a.image.height);
   std::vector<double> distances;
   const size_t pixels = size_t(a.image.width) * size_t(a.image.height);
@@ -123,24 +189,11 @@ void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::str
     std::fill(&map.rgb[3 * p], &map.rgb[3 * p] + 3, float(dS));
   }
   if (distances.empty()) throw std::runtime_error("no pixel catches light in every cone of both images");
-  std::vector<double> sorted = distances;
-  std::sort(sorted.begin(), sorted.end());
-  double mean = 0.0;
-  for (double d : sorted) mean += d / double(sorted.size());
-  auto quantile = [&](double q) { return sorted[std::min(sorted.size() - 1, size_t(q * double(sorted.size())))]; };
-  fmt::print(
-      "{} observer: dS per pixel over {} of {} pixels (the others catch no light in some cone): mean {:.3f}, "
-      "median {:.3f}, 95th percentile {:.3f}, largest {:.3f} JND\n",
-      observer.name, sorted.size(), pixels, mean, quantile(0.5), quantile(0.95), sorted.back());
-  if (!options.output.empty()) {
-    const std::string png = options.output.substr(0, options.output.size() - 4) + ".png";
-    makeOutputDirectory(options.output, directoryOf(options.output));
-    writeEXRAndPNG(options.output, png, map,
-                   {{"Quantity", "receptor-noise-limited colour distance dS (JND) of each pixel's cone catches, " +
-                                     observer.name + " observer; 0 where a pixel catches no light in some cone"},
-                    {"Images", pathA + ", " + pathB}});
-    fmt::print("wrote {}, {}\n", options.output, png);
-  }
+  reportPerPixel(distances, pixels, map, observer.name + " observer: dS", " (the others catch no light in some cone)",
+                 "JND",
+                 "receptor-noise-limited colour distance dS (JND) of each pixel's cone catches, " + observer.name +
+                     " observer; 0 where a pixel catches no light in some cone",
+                 pathA, pathB, options);
 }
 
 }  // namespace columba

@@ -1,6 +1,7 @@
 #pragma once
 // `columba compare --jnd`: how far apart two renders' colours are for a bird, in just noticeable
-// differences (receptor-noise-limited distance of their cone catches; docs/vision.md).
+// differences (receptor-noise-limited distance of their cone catches), or for a human (CIEDE2000
+// of their RGB in CIELAB); docs/vision.md.
 #include <optional>
 #include <string>
 #include "io/image.h"
@@ -9,14 +10,15 @@
 namespace columba {
 
 struct JndOptions {
-  std::string observer;                       // "" : the one image A's Observer attribute names
+  std::string observer;                       // "" : the one image A's Observer attribute names, else cie1931
   std::optional<PixelRect> regionA, regionB;  // compare these regions' mean catches instead of pixels
   std::string output;                         // per-pixel dS as an EXR (and its PNG); "" for none
 };
 
 // Prints the distances (per pixel: how many pixels, their mean, median, 95th percentile and
-// largest dS; per region: dS of the regions' mean catches) and writes the per-pixel map.
-void compareForBird(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
+// largest dS or dE2000; per region: the distance of the regions' mean catches or colours) and
+// writes the per-pixel map.
+void compareColours(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
                     const JndOptions& options);
 
 // "X0,Y0,X1,Y1" as a rectangle of pixels [X0, X1) x [Y0, Y1) inside an image of width x height;
