@@ -37,7 +37,8 @@ Observer observerFrom(const py::object& spec) {
   }
   if (!py::isinstance<py::dict>(spec))
     throw py::type_error(
-        "an observer is a name (columba.observers()), a table of sensitivities (FILE.csv) or a dict of its cones' "
+        "an observer is a name (columba.observers()), a table of sensitivities or of cone parameters (FILE.csv) or a "
+        "dict of its cones' "
         "data");
   py::dict d = spec.cast<py::dict>();
   ObserverDefinition definition;

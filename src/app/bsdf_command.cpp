@@ -462,7 +462,8 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
   cmd->add_option("-o,--output", o->outputDir, "Output directory, made if missing (default: the working directory)");
   cmd->add_option("--observer", o->observer,
-                  "A bird's visual system (" + builtinObserverNames() + ", or a table of sensitivities, FILE.csv" +
+                  "A bird's visual system (" + builtinObserverNames() +
+                      ", or a table of sensitivities or of cone parameters, FILE.csv" +
                       "): with --mode specular, each spectrum's cone catches and colour distances "
                       "(bsdf_specular_catches.csv)")
       ->check([](const std::string& name) {

@@ -67,10 +67,10 @@ std::string observerName(const EXRImageFile& a, const std::string& observer) {
 
 Observer birdObserver(const std::string& name) {
   if (!namesObserverTable(name) && !isBuiltinObserver(name))
-    throw std::runtime_error(
-        fmt::format("unknown observer '{}' (known: cie1931, {}; or a table of sensitivities, FILE.csv: "
-                    "give the table the image was rendered with as --observer)",
-                    name, builtinObserverNames()));
+    throw std::runtime_error(fmt::format(
+        "unknown observer '{}' (known: cie1931, {}; or a table of sensitivities or of cone parameters, FILE.csv: "
+        "give the table the image was rendered with as --observer)",
+        name, builtinObserverNames()));
   return observerNamedOrTabulated(name);
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "vision/observer_definition_file.h"
 
 namespace columba {
 
@@ -127,7 +128,7 @@ Observer observerNamedOrTabulated(const std::string& nameOrPath) {
   if (namesObserverTable(nameOrPath)) return readObserverTableFile(nameOrPath);
   if (!isBuiltinObserver(nameOrPath))
     throw std::invalid_argument("unknown observer '" + nameOrPath + "' (known: " + builtinObserverNames() +
-                                "; or a table of sensitivities, FILE.csv)");
+                                "; or a table of sensitivities or of cone parameters, FILE.csv)");
   return namedObserver(nameOrPath);
 }
 
@@ -137,9 +138,23 @@ Observer readObserverTableFile(const std::string& path) {
   if (ec) throw InputError({path, 0}, "cannot read the observer table: " + ec.message());
   if (size > kMostBytes)
     throw InputError({path, 0}, "an observer table of " + std::to_string(size) + " bytes is larger than 16 MiB");
-  std::ifstream in(path);
-  if (!in) throw InputError({path, 0}, "cannot open the observer table");
-  return readObserverTable(in, path, std::filesystem::path(path).stem().string());
+  std::ifstream file(path);
+  if (!file) throw InputError({path, 0}, "cannot open the observer table");
+  std::stringstream in;
+  in << file.rdbuf();
+  const std::string name = std::filesystem::path(path).stem().string();
+  // A definition's header starts with `cone`; a table's with its wavelength column.
+  for (std::string line; std::getline(in, line);) {
+    const std::vector<std::string> row = cells(line);
+    if (row.empty() || row.front()[0] == '#') continue;
+    in.clear();
+    in.seekg(0);
+    if (isObserverDefinitionHeader(row.front())) return makeObserver(readObserverDefinition(in, path, name));
+    break;
+  }
+  in.clear();
+  in.seekg(0);
+  return readObserverTable(in, path, name);
 }
 
 }  // namespace columba

@@ -18,10 +18,11 @@ namespace columba {
 // and the line for anything else.
 Observer readObserverTable(std::istream& table, const std::string& path, const std::string& name);
 
-// The same from a file (at most 16 MiB), named after the file's stem.
+// The same from a file (at most 16 MiB), named after the file's stem; or, where the file's header
+// starts with `cone`, the observer of the cones' parameters it lists (observer_definition_file.h).
 Observer readObserverTableFile(const std::string& path);
 
-// Whether `text` names a table file (it ends in .csv) rather than a built-in observer.
+// Whether `text` names a table or definition file (it ends in .csv) rather than a built-in observer.
 bool namesObserverTable(const std::string& text);
 // A built-in observer by its name, or the observer of a table file; throws std::invalid_argument
 // for an unknown name (naming the known ones) and InputError for a bad table.
