@@ -8,7 +8,7 @@
 */
 /*! parameters conductor
 | parameter | type | default | meaning | Mitsuba 3 |
-| material | string | `none` | measured optical constants, tabulated over 300–1000 nm: `Au`, `Ag`, `Cu` (Johnson & Christy 1972), `Cr` (Johnson & Christy 1974) or `Al` (Rakić 1995); `none` is a perfect mirror. Not together with `eta` and `k` | a longer list of materials; also `none` by default |
+| material | string | `none` | measured optical constants: `Au`, `Ag`, `Cu` (Johnson & Christy 1972), `Cr` (Johnson & Christy 1974) or `Al` (Rakić 1995), over 300–1000 nm; or any other of Mitsuba's names (`W`, `a-C`, `Cu_palik`, `TiO2`, ... : Mitsuba's own tables from Palik's handbooks and the LLNL/CXRO tables, data/ior/README.md); `none` is a perfect mirror. Not together with `eta` and `k` | the same names (`Ag`, `Al`, `Au`, `Cr`, `Cu` from other tables); also `none` by default |
 | eta | spectrum or texture | 0 | the real part of the metal's index of refraction; not negative | same |
 | k | spectrum or texture | 1 | the imaginary part (extinction coefficient); not negative | same |
 */

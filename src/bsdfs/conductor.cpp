@@ -1,6 +1,6 @@
 /*! plugin bsdf conductor
 Smooth metal: a perfect mirror weighted by the metal's Fresnel reflectance at each wavelength. One-sided.
-Mitsuba 3: the same parameters; fewer named materials.
+Mitsuba 3: the same parameters and named materials; five of them (Ag, Al, Au, Cr, Cu) from other published tables.
 uses: conductor
 | parameter | type | default | meaning | Mitsuba 3 |
 | specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |

@@ -1,6 +1,6 @@
 /*! plugin bsdf roughconductor
 Rough metal: microfacet reflection with the conductor's Fresnel term. One-sided.
-Mitsuba 3: the same parameters and defaults; fewer named materials.
+Mitsuba 3: the same parameters, defaults and named materials; five of them (Ag, Al, Au, Cr, Cu) from other published tables.
 uses: microfacet, conductor
 | parameter | type | default | meaning | Mitsuba 3 |
 | specular_reflectance | spectrum or texture | 1 | a factor on the reflection | same |

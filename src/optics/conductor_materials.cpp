@@ -1,7 +1,11 @@
 #include "optics/conductor_materials.h"
 
 #include <map>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
+
+#include "optics/conductor_tables.h"
 
 namespace columba {
 
@@ -70,9 +74,30 @@ ConductorIndex indexOf(const NK (&table)[N]) {
   return {SpectralDistribution::piecewiseLinear(lambdas, n), SpectralDistribution::piecewiseLinear(lambdas, k)};
 }
 
+// A compiled-in .spd table: '#' lines are comments, the others a wavelength (nm) and a value.
+SpectralDistribution spdTable(const char* name, const char* text) {
+  std::vector<float> lambdas, values;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    float lambda = 0.0f, value = 0.0f;
+    // The tables are part of the build; a malformed one is a packaging error.
+    if (!(row >> lambda >> value)) throw std::logic_error(std::string("malformed optical constants of ") + name);
+    lambdas.push_back(lambda);
+    values.push_back(value);
+  }
+  return SpectralDistribution::piecewiseLinear(lambdas, values);
+}
+
 const std::map<std::string, ConductorIndex>& materials() {
-  static const std::map<std::string, ConductorIndex> table = {
-      {"Ag", indexOf(kAg)}, {"Al", indexOf(kAl)}, {"Au", indexOf(kAu)}, {"Cr", indexOf(kCr)}, {"Cu", indexOf(kCu)}};
+  static const std::map<std::string, ConductorIndex> table = [] {
+    std::map<std::string, ConductorIndex> t = {
+        {"Ag", indexOf(kAg)}, {"Al", indexOf(kAl)}, {"Au", indexOf(kAu)}, {"Cr", indexOf(kCr)}, {"Cu", indexOf(kCu)}};
+    for (const ConductorTableText& m : kConductorTables)
+      t.emplace(m.name, ConductorIndex{spdTable(m.name, m.eta), spdTable(m.name, m.k)});
+    return t;
+  }();
   return table;
 }
 
