@@ -71,8 +71,8 @@ class PyBarbule {
  public:
   PyBarbule(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
             const py::object& phi0, const py::object& phi1, const py::object& filmIOR, const py::object& extIOR,
-            const py::object& preset, const py::object& melanin, const std::string& role)
-      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin), roleFrom(role)) {}
+            const py::object& preset, const py::object& melanin, const py::object& layers, const std::string& role)
+      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin, layers), roleFrom(role)) {}
 
   const BarbuleBSDF& bsdf() const { return bsdf_; }
 
@@ -88,7 +88,7 @@ class PyBarbule {
   static BarbuleParameters resolve(const py::object& b, const py::object& H, const py::object& mu,
                                    const py::object& height, const py::object& phi0, const py::object& phi1,
                                    const py::object& filmIOR, const py::object& extIOR, const py::object& preset,
-                                   const py::object& melanin) {
+                                   const py::object& melanin, const py::object& layers) {
     Properties props;
     props.tag = "bsdf";
     props.type = "barbulebsdf";
@@ -117,6 +117,7 @@ class PyBarbule {
         props.setSpectrum("melanin", SpectralDistribution::piecewiseLinear(pair.first, pair.second), lowest);
       }
     }
+    if (!layers.is_none()) props.setString("layers", layers.cast<std::string>());
     std::optional<BarbuleParameterProblem> odd;
     BarbuleParameters p = readBarbuleParameters(props, odd);
     if (odd) {
@@ -517,11 +518,11 @@ void bindModel(py::module_& m) {
                         "N x 4.")
       .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
                     const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
-                    const std::string&>(),
+                    const py::object&, const std::string&>(),
            py::kw_only(), py::arg("b") = py::none(), py::arg("H") = py::none(), py::arg("mu") = py::none(),
            py::arg("height") = py::none(), py::arg("phi_0") = py::none(), py::arg("phi_1") = py::none(),
            py::arg("film_ior") = py::none(), py::arg("ext_ior") = py::none(), py::arg("preset") = py::none(),
-           py::arg("melanin") = py::none(), py::arg("role") = "camera")
+           py::arg("melanin") = py::none(), py::arg("layers") = py::none(), py::arg("role") = "camera")
       .def_property_readonly("parameters",
                              [](const PyBarbule& s) {
                                const BarbuleParameters& p = s.bsdf().parameters();

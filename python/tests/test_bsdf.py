@@ -215,3 +215,15 @@ def test_spectral_hemisphere_reads_back(cli, tmp_path):
     np.testing.assert_array_equal(rgb, columba.BarbuleBSDF().scatterometer_image(20, resolution=16))
     np.testing.assert_allclose(centres, [437.5, 512.5, 587.5, 662.5])
     assert bands.shape == (16, 16, 4) and bands.dtype == np.float32 and bands.max() > 0
+
+
+def test_layers_under_the_cortex_change_the_film_and_an_empty_one_does_not():
+    plain = columba.BarbuleBSDF(preset="dove-green")
+    empty = columba.BarbuleBSDF(preset="dove-green", layers="1.7+0.1i:0")
+    layered = columba.BarbuleBSDF(preset="dove-green", layers="1.7+0.1i:0.12, air:0.1")
+    a, b, c = (x.specular_spectra(20.0) for x in (plain, empty, layered))
+    np.testing.assert_allclose(b["R"], a["R"], rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(b["TRT"], a["TRT"], rtol=1e-4, atol=1e-6)
+    assert np.max(np.abs(c["R"] - a["R"])) > 0.01
+    with pytest.raises(ValueError, match="layers"):
+        columba.BarbuleBSDF(layers="0.1")

@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 // for a list of light polar angles at one azimuth, with every plot's data beside it.
 struct BSDFOptions {
   BarbuleParameters params;
-  std::string preset, filmIOR, melaninFile;
+  std::string preset, filmIOR, melaninFile, layers;
   float cauchyA = std::numeric_limits<float>::quiet_NaN(), cauchyB = 0.0f;  // NaN: not given
   std::vector<float> angles{0.0f, 20.0f, 40.0f, 60.0f};                     // light polar angles, degrees
   float phiDegrees = 0.0f;
@@ -54,10 +54,12 @@ std::string describeParameters(const BSDFOptions& o) {
           ? (std::isnan(o.cauchyA) ? "keratin" : fmt::format("Cauchy {} + {}/lambda^2", o.cauchyA, o.cauchyB))
           : o.filmIOR;
   return fmt::format(
-      "b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
-      "melanin {}{}",
-      p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
-      o.melaninFile.empty() ? "embedded table" : o.melaninFile, o.preset.empty() ? "" : " | preset " + o.preset);
+             "b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
+             "melanin {}{}",
+             p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
+             o.melaninFile.empty() ? "embedded table" : o.melaninFile,
+             o.preset.empty() ? "" : " | preset " + o.preset) +
+         (o.layers.empty() ? "" : " | layers " + o.layers);
 }
 
 std::string angleList(const std::vector<float>& angles) {
@@ -419,6 +421,7 @@ void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParamet
   take("film_cauchy_a", o.cauchyA);
   take("film_cauchy_b", o.cauchyB);
   if (!o.filmIOR.empty()) props.setString("film_ior", o.filmIOR);
+  if (!o.layers.empty()) props.setString("layers", o.layers);
   if (!o.melaninFile.empty()) {
     GivenSpectrum melanin = readSpectrumFile(o.melaninFile, "--melanin", SourceLocation{o.melaninFile, 0});
     props.setSpectrum("melanin", melanin.distribution, melanin.lowest);
@@ -448,6 +451,9 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--film-cauchy-b", o->cauchyB, "Cauchy's b, nm^2 (default 0)");
   cmd->add_option("--ext-ior", given->extIOR, "Index of the surrounding medium (default: air, 1.000277)");
   cmd->add_option("--melanin", o->melaninFile, "Melanin reflectance file: lines of 'wavelength_nm reflectance'");
+  cmd->add_option("--layers", o->layers,
+                  "Layers under the cortex, from it down: 'INDEX:THICKNESS_UM, ...' (INDEX a number, a named index "
+                  "or N+Ki)");
   cmd->add_option("--angles", o->angles, "Light polar angles from the vane normal, degrees (default 0,20,40,60)")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.9));

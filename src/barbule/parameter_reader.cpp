@@ -1,6 +1,9 @@
 #include "barbule/parameter_reader.h"
 
+#include <stdexcept>
+
 #include "optics/dispersion.h"
+#include "optics/layered_film.h"
 
 namespace columba {
 
@@ -53,6 +56,13 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
   p.extIOR = ext.a;
   if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
+  if (props.has("layers")) {
+    try {
+      p.layersBelow = parseFilmLayers(props.getString("layers"));
+    } catch (const std::invalid_argument& e) {
+      throw props.error("layers", e.what());
+    }
+  }
 
   if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
     bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");

@@ -8,6 +8,7 @@
 #include "core/spectrum.h"
 #include "core/surface_attributes.h"
 #include "optics/dispersion.h"
+#include "optics/layered_film.h"
 
 namespace columba {
 
@@ -23,6 +24,9 @@ struct BarbuleParameters {
   // Intensity reflectance of the melanin layer under the film; the embedded measured table
   // (optics/melanin.h) when empty.
   std::optional<SpectralDistribution> melanin;
+  // Layers under the cortex, from the cortex down (docs/model.md, "Layered films"); none: the
+  // cortex alone, the paper's film.
+  std::vector<FilmLayer> layersBelow;
 };
 
 // The parameters a shape may give per point (a feather's per-vertex values), under their names

@@ -1,6 +1,7 @@
 #pragma once
 // The barbule model at one shading point (docs/model.md §3-8): the cross-section with the point's
-// own tilt, spacing and semi-axis, the keratin film with its thickness, and the melanin under it,
+// own tilt, spacing and semi-axis, the keratin film with its thickness (and any layers under it),
+// and the melanin under it,
 // at the path's wavelengths. It answers in the model's own directions (omega_i, whose lit arc,
 // coverage and film entry the lobes are built on, and omega_o); the BSDF plug-in
 // (bsdfs/barbulebsdf.h) decides which of a path's directions is omega_i.
@@ -8,12 +9,12 @@
 #include <optional>
 #include <vector>
 
+#include "barbule/barbule_film.h"
 #include "barbule/cross_section.h"
 #include "barbule/normals.h"
 #include "barbule/parameters.h"
 #include "core/fast_math.h"
 #include "core/spectrum.h"
-#include "optics/thin_film.h"
 
 namespace columba {
 
@@ -159,7 +160,7 @@ class BarbulePointModel {
   std::optional<BarbuleCrossSection> own_;
   const BarbuleCrossSection& geometry_;
   const BarbuleQuadratureRules& rules_;
-  FreeStandingFilm film_;
+  BarbuleFilm film_;
   Spectrum melanin_;
 };
 

@@ -1,0 +1,55 @@
+#pragma once
+// A barbule's keratin cortex over further layers (melanin, air gaps, melanosome layers as
+// effective media), with the surrounding medium above and below, at a path's wavelengths: the
+// general case of the free-standing film (thin_film.h), by transfer matrices (multilayer.h). It
+// answers what FreeStandingFilm answers, so the lobes use either; with no layer below the cortex
+// it is the same film within rounding (FreeStandingFilm stays the fast path for that case).
+// docs/model.md, "Layered films".
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/fast_math.h"
+#include "core/spectrum.h"
+#include "optics/dispersion.h"
+#include "optics/multilayer.h"
+#include "optics/thin_film.h"
+
+namespace columba {
+
+// A layer below the cortex: its index n(lambda) + i k and its thickness.
+struct FilmLayer {
+  RefractiveIndex n;
+  float k = 0.0f;  // extinction coefficient, constant over wavelength
+  float thicknessUm = 0.0f;
+};
+
+// "INDEX:THICKNESS, INDEX:THICKNESS, ...", the layers from the cortex down: INDEX a number, a named
+// index (air, water, ...), `keratin`, or a complex N+Ki (an absorbing layer, K >= 0); THICKNESS in
+// micrometres, not negative. Throws std::invalid_argument naming the piece that is wrong.
+std::vector<FilmLayer> parseFilmLayers(const std::string& text);
+
+class LayeredFilm {
+ public:
+  LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm,
+              const std::vector<FilmLayer>& below, const Wavelengths& wl);
+
+  // As FreeStandingFilm's, per polarisation, at incidence cosine `cosIncidence` (clamped to
+  // [1e-4, 1] as there).
+  FreeStandingFilm::Reflectance reflectance(float cosIncidence) const;
+  // 1/2 (T_s(cos1) T_s(cos2) + T_p(cos1) T_p(cos2)): into the medium below the stack and back.
+  Spectrum transmittanceProduct(float cos1, float cos2) const;
+  // The same for four pairs, one per lane, weighted and summed over the lanes.
+  Spectrum weightedTransmittanceProducts(FloatLanes weight, FloatLanes cos1, FloatLanes cos2) const;
+  // Means over the wavelengths of (R_s + R_p) / 2 and of w (T_s^2 + T_p^2) / 2, one cosine a lane.
+  FreeStandingFilm::Averages averagesOverWavelengths(FloatLanes cosIncidence,
+                                                     const Spectrum& transmittanceWeight) const;
+
+ private:
+  MultilayerResponse at(int k, float cosIncidence) const;
+
+  std::array<LayerStack, kSpectrumSamples> stacks_;  // one a wavelength, the indices evaluated there
+  std::array<float, kSpectrumSamples> lambdas_{};
+};
+
+}  // namespace columba
