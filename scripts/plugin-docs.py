@@ -45,6 +45,9 @@ KIND_TITLES = {
     "bsdf": ("bsdfs", "BSDFs"),
     "shape": ("shapes", "Shapes"),
     "texture": ("textures", "Textures"),
+    "medium": ("media", "Participating media"),
+    "phase": ("phases", "Phase functions"),
+    "volume": ("volumes", "Volumes"),
 }
 KIND_ORDER = list(KIND_TITLES)
 COLUMNS = ["parameter", "type", "default", "meaning", "Mitsuba 3"]

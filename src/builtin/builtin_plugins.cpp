@@ -32,6 +32,12 @@
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "integrators/volpath_integrator.h"
+#include "media/const_volume.h"
+#include "media/grid_volume.h"
+#include "media/heterogeneous_medium.h"
+#include "media/hg_phase.h"
+#include "media/homogeneous_medium.h"
+#include "media/isotropic_phase.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
 #include "samplers/multijitter_sampler.h"
@@ -118,6 +124,12 @@ const PluginRegistry& builtinPlugins() {
     r.add("texture", "checkerboard", makeCheckerboardTexture);
     r.add("texture", "mesh_attribute", makeMeshAttributeTexture);
     r.add("texture", "rawconstant", makeRawConstantTexture);
+    r.add("medium", "homogeneous", makeHomogeneousMedium);
+    r.add("medium", "heterogeneous", makeHeterogeneousMedium);
+    r.add("phase", "isotropic", makeIsotropicPhase);
+    r.add("phase", "hg", makeHenyeyGreensteinPhase);
+    r.add("volume", "constvolume", makeConstVolume);
+    r.add("volume", "gridvolume", makeGridVolume);
     r.add("shape", "shapegroup", makeShapeGroup);
     r.add("shape", "instance", makeInstanceShape);
     return r;

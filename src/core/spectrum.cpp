@@ -339,6 +339,19 @@ float meanOverVisible(const Distribution& spectrum) {
 
 float RGBSpectrum::meanValue() const { return meanOverVisible(*this); }
 
+float RGBSpectrum::maxValue() const {
+  // The sigmoid grows with its argument, so its largest value is at the quadratic's largest: at an
+  // end of the range or at the quadratic's vertex within it.
+  const float lo = normalisedLambda(kSpectralMin), hi = normalisedLambda(kLambdaMax);
+  auto quadratic = [&](float x) { return (coeffs[0] * x + coeffs[1]) * x + coeffs[2]; };
+  float largest = std::max(quadratic(lo), quadratic(hi));
+  if (coeffs[0] != 0.0f) {
+    const float vertex = -coeffs[1] / (2.0f * coeffs[0]);
+    if (vertex > lo && vertex < hi) largest = std::max(largest, quadratic(vertex));
+  }
+  return scale * sigmoid(largest);
+}
+
 float SpectralDistribution::meanValue() const {
   if (kind_ == Kind::Constant && !timesD65_) return value_;
   return meanOverVisible(*this);

@@ -151,6 +151,8 @@ struct RGBSpectrum {
   float eval(float lambda) const;
   // Mean over the visible range, as SpectralDistribution::meanValue.
   float meanValue() const;
+  // The largest value over kSpectralMin-kLambdaMax (a bound a medium's majorant can use).
+  float maxValue() const;
 };
 // The spectrum whose colour under D65 is `rgb`, fitted here. `unbounded` allows values above 1
 // (fitted at half the largest component and scaled back, as pbrt-v4 does); otherwise rgb is clamped

@@ -29,6 +29,9 @@ class PathIntegrator : public Integrator {
         emitterCandidates_(emitterCandidates) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
+  int maxDepth() const { return maxDepth_; }
+  int rrDepth() const { return rrDepth_; }
+  bool hidesEmitters() const { return hideEmitters_; }
 
  private:
   float hitWeight(bool afterDeltaBounce, float bsdfPdf, float lightPdf) const;

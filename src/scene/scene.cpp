@@ -33,6 +33,7 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
     if (auto shape = std::dynamic_pointer_cast<Shape>(object)) {
       shapes_.push_back(shape);
       if (shape->emitter) emitters_.push_back(shape->emitter);
+      if (shape->interior || shape->exterior) hasMedia_ = true;
     } else if (auto emitter = std::dynamic_pointer_cast<Emitter>(object)) {
       emitters_.push_back(emitter);
     } else if (auto sensor = std::dynamic_pointer_cast<Sensor>(object)) {
@@ -61,6 +62,7 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   hasExtendedEmitters_ = anyExtended(allEmitters_);
   hasExtendedEmittersBesideBSDFSamples_ = anyExtended(emittersBesideBSDFSamples_);
   if (!sensor_) sensor_ = makeDefaultPlugin<Sensor>(makePerspectiveSensor, "sensor", "perspective", source);
+  if (sensor_->medium()) hasMedia_ = true;
   if (!integrator_ && !particleTracer_)
     integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
   // Before Embree is set up: it needs the sensor and the emitters only.

@@ -74,6 +74,8 @@ class Scene {
   const SceneSphere& boundingSphere() const { return boundingSphere_; }
 
   const Sensor& sensor() const { return *sensor_; }
+  // Whether a shape bounds a medium or the sensor sits in one: only then do paths track media.
+  bool hasMedia() const { return hasMedia_; }
   // The camera-path integrator; a scene rendered by light tracing (particleTracer()) has none, and
   // asking for it is a std::logic_error.
   const Integrator& integrator() const;
@@ -101,6 +103,7 @@ class Scene {
   std::shared_ptr<Integrator> integrator_;
   std::shared_ptr<ParticleTracerIntegrator> particleTracer_;
   SceneSphere boundingSphere_;
+  bool hasMedia_ = false;
 };
 
 }  // namespace columba

@@ -13,8 +13,8 @@ namespace columba {
 
 namespace {
 
-const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film", "rfilter",
-                                           "sampler", "integrator", "texture", "medium", "phase"};
+const std::set<std::string> kPluginTags = {"bsdf",    "shape",      "emitter", "sensor", "film",  "rfilter",
+                                           "sampler", "integrator", "texture", "medium", "phase", "volume"};
 
 // Plug-ins are built recursively; real scenes nest a handful deep, and a bound keeps a hostile
 // file from exhausting the stack.
@@ -163,9 +163,12 @@ void SceneBuilder::declareIds(const XmlElement& e, int depth) {
 void SceneBuilder::build(ParsedScene& scene) {
   for (const XmlElement& e : topLevel_) {
     NamedObject built = instantiate(e, 0);
-    // As in Mitsuba, a top-level film, sampler or filter is there to be referenced by a sensor, and
-    // a top-level texture by a BSDF.
-    if (built.tag == "film" || built.tag == "sampler" || built.tag == "rfilter" || built.tag == "texture") {
+    // As in Mitsuba, a top-level film, sampler or filter is there to be referenced by a sensor, a
+    // top-level texture by a BSDF, and a top-level medium, phase function or volume by a shape, a
+    // sensor or a medium.
+    static const std::set<std::string> kReferencedOnly = {"film",   "sampler", "rfilter", "texture",
+                                                          "medium", "phase",   "volume"};
+    if (kReferencedOnly.count(built.tag)) {
       if (!e.has("id")) warn(e.location(), "<" + built.tag + "> without an id is never used (a <ref> to it needs one)");
       continue;
     }

@@ -6,7 +6,7 @@
 namespace columba {
 
 namespace {
-const char* kMedia = "participating media are not supported yet; Columba renders surfaces only";
+const char* kPhases = "of Mitsuba's phase functions, Columba has 'isotropic' and 'hg'";
 const char* kTextures =
     "of Mitsuba's textures, Columba has 'bitmap', 'checkerboard', 'mesh_attribute' and 'rawconstant'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
@@ -15,7 +15,7 @@ const char* kPolarisation = "polarised rendering is not supported";
 
 std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, const std::string& type) {
   static const std::map<std::pair<std::string, std::string>, const char*> kReasons = {
-      {{"integrator", "prbvolpath"}, kMedia},
+      {{"integrator", "prbvolpath"}, "differentiable rendering is not supported; use 'volpath'"},
       {{"integrator", "prb"}, kDifferentiable},
       {{"integrator", "prb_basic"}, kDifferentiable},
       {{"integrator", "prb_projective"}, kDifferentiable},
@@ -24,14 +24,10 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"integrator", "aov"}, "arbitrary output variables are not supported"},
       {{"integrator", "moment"}, "the moment integrator is not supported"},
       {{"integrator", "depth"}, "the depth integrator is not supported"},
-      {{"medium", "homogeneous"}, kMedia},
-      {{"medium", "heterogeneous"}, kMedia},
-      {{"phase", "isotropic"}, kMedia},
-      {{"phase", "hg"}, kMedia},
-      {{"phase", "rayleigh"}, kMedia},
-      {{"phase", "sggx"}, kMedia},
-      {{"phase", "tabphase"}, kMedia},
-      {{"phase", "blendphase"}, kMedia},
+      {{"phase", "rayleigh"}, kPhases},
+      {{"phase", "sggx"}, kPhases},
+      {{"phase", "tabphase"}, kPhases},
+      {{"phase", "blendphase"}, kPhases},
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},

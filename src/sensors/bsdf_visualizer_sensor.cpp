@@ -39,7 +39,9 @@ bool BSDFVisualizerSensor::seesAnyOf(Vec2 lo, Vec2 hi) const {
 std::shared_ptr<Object> makeBSDFVisualizerSensor(const Properties& props) {
   float distance = props.getFloat("distance", 0.1f);
   if (!(distance > 0.0f)) throw props.error("distance", "distance must be positive");
-  return std::make_shared<BSDFVisualizerSensor>(sensorFilm(props), sensorSampler(props), distance);
+  auto sensor = std::make_shared<BSDFVisualizerSensor>(sensorFilm(props), sensorSampler(props), distance);
+  sensor->readMedium(props);
+  return sensor;
 }
 
 }  // namespace columba

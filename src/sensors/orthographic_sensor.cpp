@@ -54,8 +54,10 @@ std::optional<ImportanceSample> OrthographicSensor::sampleImportance(const Vec3&
 std::shared_ptr<Object> makeOrthographicSensor(const Properties& props) {
   // Mitsuba reads the focal plane's distance for every projective camera; this one has none.
   if (props.has("focus_distance")) props.getFloat("focus_distance");
-  return std::make_shared<OrthographicSensor>(sensorFilm(props), sensorSampler(props), props.getTransform("to_world"),
-                                              sensorClipRange(props));
+  auto sensor = std::make_shared<OrthographicSensor>(sensorFilm(props), sensorSampler(props),
+                                                     props.getTransform("to_world"), sensorClipRange(props));
+  sensor->readMedium(props);
+  return sensor;
 }
 
 }  // namespace columba

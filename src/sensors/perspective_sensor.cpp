@@ -82,7 +82,9 @@ std::shared_ptr<Object> makePerspectiveSensor(const Properties& props) {
   const PerspectiveParameters view = readPerspectiveParameters(props);
   // Mitsuba reads the focal plane's distance for every projective camera; a pinhole has none.
   if (props.has("focus_distance")) props.getFloat("focus_distance");
-  return std::make_shared<PerspectiveSensor>(sensorFilm(props), sensorSampler(props), view);
+  auto sensor = std::make_shared<PerspectiveSensor>(sensorFilm(props), sensorSampler(props), view);
+  sensor->readMedium(props);
+  return sensor;
 }
 
 }  // namespace columba

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "film/film.h"
+#include "media/medium.h"
 #include "samplers/independent_sampler.h"
 
 namespace columba {
@@ -15,6 +16,8 @@ namespace columba {
 bool Sensor::onFilm(Vec2 p) const {
   return p.x >= 0.0f && p.x < float(film_->width()) && p.y >= 0.0f && p.y < float(film_->height());
 }
+
+void Sensor::readMedium(const Properties& props) { medium_ = props.child<Medium>(); }
 
 std::shared_ptr<Film> sensorFilm(const Properties& props) {
   auto film = props.child<Film>();

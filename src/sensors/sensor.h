@@ -9,6 +9,8 @@
 
 namespace columba {
 
+class Medium;
+
 // A connection of light tracing to the sensor: where light from the reference lands on the film
 // and how much it counts there.
 struct ImportanceSample {
@@ -58,10 +60,15 @@ class Sensor : public Object {
   bool onFilm(Vec2 p) const;
   const Film& film() const { return *film_; }
   const Sampler& sampler() const { return *sampler_; }
+  // The medium the sensor sits in, where its camera rays start (null: none).
+  const Medium* medium() const { return medium_.get(); }
+  // Takes the sensor element's nested <medium> (or <ref> to one), if any.
+  void readMedium(const Properties& props);
 
  private:
   std::shared_ptr<Film> film_;
   std::shared_ptr<Sampler> sampler_;
+  std::shared_ptr<Medium> medium_;
 };
 
 // The nested film and sampler of a sensor element, or the defaults (hdrfilm, independent).

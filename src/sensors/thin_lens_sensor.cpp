@@ -58,7 +58,10 @@ std::shared_ptr<Object> makeThinLensSensor(const Properties& props) {
   const float focusDistance = props.getFloat("focus_distance", view.clip.farClip);
   if (!(focusDistance > 0.0f && std::isfinite(focusDistance)))
     throw props.error("focus_distance", fmt::format("focus_distance must be positive, not {:g}", focusDistance));
-  return std::make_shared<ThinLensSensor>(sensorFilm(props), sensorSampler(props), view, apertureRadius, focusDistance);
+  auto sensor =
+      std::make_shared<ThinLensSensor>(sensorFilm(props), sensorSampler(props), view, apertureRadius, focusDistance);
+  sensor->readMedium(props);
+  return sensor;
 }
 
 }  // namespace columba

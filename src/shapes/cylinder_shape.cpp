@@ -1,6 +1,7 @@
 /*! plugin shape cylinder
 The open tube (no end caps) of `radius` around the segment from `p0` to `p1`, then `to_world`, with uv = (angle / 2π, position along the axis); a nested BSDF (default: `diffuse`) and optionally an `area` emitter, which needs a `to_world` that keeps the tube round (no shear, the same scale across the axis).
 Mitsuba 3: the same parameters and defaults.
+uses: media
 | parameter | type | default | meaning | Mitsuba 3 |
 | p0 | point | (0, 0, 0) | one end of the axis | same |
 | p1 | point | (0, 0, 1) | the other end; not `p0` | same |

@@ -1,6 +1,7 @@
 /*! plugin shape disk
 The unit disk in the local xy plane, facing +z, with polar uv (radius, angle / 2π); a nested BSDF (default: `diffuse`) and optionally an `area` emitter.
 Mitsuba 3: as Mitsuba 3's `disk`.
+uses: media
 | parameter | type | default | meaning | Mitsuba 3 |
 | to_world | transform | identity | places and sizes the disk | same |
 | flip_normals | boolean | false | faces −z instead | same |

@@ -1,7 +1,7 @@
 /*! plugin shape obj
 A triangle mesh read from a Wavefront OBJ file (polygons are split into triangles), with a nested BSDF (default: `diffuse`) and optionally an `area` emitter.
 Mitsuba 3: the same parameters and defaults.
-uses: mesh
+uses: mesh, media
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the OBJ file | same |
 | to_world | transform | identity | places the mesh | same |

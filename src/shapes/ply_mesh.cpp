@@ -1,7 +1,7 @@
 /*! plugin shape ply
 A triangle mesh read from a PLY file (ASCII or binary), with a nested BSDF (default: `diffuse`) and optionally an `area` emitter. A vertex's or face's further properties become mesh attributes named as Mitsuba names them, for `mesh_attribute` textures: consecutive `{p}_x/y/z`, `{p}_r/g/b`, `{p}_0/1/2` or `{p}_1/2/3` make `vertex_{p}` (or `face_{p}`), `r/g/b` and `red/green/blue` make `vertex_color`, a lone first component (`{p}_0` not followed by `{p}_1`, and so on) makes the one-channel `vertex_{p}` (Mitsuba writes `face_weight` as `weight_0`), others `vertex_{name}`; a fourth component is read past, as attributes have 1 or 3 channels; integers are divided by their type's largest value and decoded from sRGB; a polygon's face values go to each of its triangles.
 Mitsuba 3: the same parameters and defaults.
-uses: mesh
+uses: mesh, media
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the PLY file | same |
 | to_world | transform | identity | places the mesh | same |

@@ -1,6 +1,7 @@
 /*! plugin shape rectangle
 The square [−1, 1]² in the local xy plane, facing +z, with uv = ((x + 1) / 2, (y + 1) / 2); a nested BSDF (default: `diffuse`) and optionally an `area` emitter.
 Mitsuba 3: as Mitsuba 3's `rectangle`.
+uses: media
 | parameter | type | default | meaning | Mitsuba 3 |
 | to_world | transform | identity | places and sizes the square | same |
 | flip_normals | boolean | false | faces −z instead | same |

@@ -1,6 +1,7 @@
 /*! plugin shape sdfgrid
 A signed distance field on a grid: a single-channel grid volume `.vol` file of float32 samples, at least 2 per axis, at the corners of the voxels tiling the unit cube that `to_world` places. Each voxel's trilinear interpolant is intersected exactly, at its first zero along the ray. It has no uv, dp/du or dp/dv and cannot carry an area emitter, as in Mitsuba; a nested BSDF defaults to `diffuse`.
 Mitsuba 3: the same parameters and defaults; the `grid` tensor, which Mitsuba 3 takes from Python, cannot be given in a scene file.
+uses: media
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the `.vol` grid file | same |
 | normals | string | `smooth` | `smooth`: the blend of the eight neighbouring voxels' gradients; `analytic`: the interpolant's own gradient | same |

@@ -1,7 +1,7 @@
 /*! plugin shape serialized
 A triangle mesh from a Mitsuba serialized file (zlib-compressed meshes, format versions 3 and 4), with a nested BSDF (default: `diffuse`) and optionally an `area` emitter. A mesh the file marks as face-normal is shaded flat.
 Mitsuba 3: the same parameters and defaults.
-uses: mesh
+uses: mesh, media
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the serialized file | same |
 | shape_index | integer | 0 | which mesh of the file; 0 or more | same |

@@ -12,6 +12,7 @@
 namespace columba {
 
 class Emitter;
+class Medium;
 class Shape;
 
 // What Embree reports for a hit, in the shape's own terms (u, v and primID are whatever the
@@ -106,8 +107,17 @@ class Shape : public Object {
   // Number of Embree primitives (for statistics).
   virtual size_t primitiveCount() const = 0;
 
+  // The medium a ray leaving this surface at a point of geometric normal `ng` toward `d` travels
+  // in: for a shape that bounds media, its exterior on the side `ng` points to and its interior
+  // on the other (null: none); `current` for a shape that bounds none.
+  const Medium* mediumToward(const Vec3& ng, const Vec3& d, const Medium* current) const {
+    if (!interior && !exterior) return current;
+    return dot(ng, d) > 0.0f ? exterior.get() : interior.get();
+  }
+
   std::shared_ptr<BSDF> bsdf;
-  std::shared_ptr<Emitter> emitter;  // area emitter, or null
+  std::shared_ptr<Emitter> emitter;            // area emitter, or null
+  std::shared_ptr<Medium> interior, exterior;  // the media this shape bounds, or null
 };
 
 }  // namespace columba

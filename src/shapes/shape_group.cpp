@@ -1,5 +1,5 @@
 /*! plugin shape shapegroup
-Shapes declared once (feathers included, with their own `to_world` and BSDFs) for `instance`s to place; a group is not rendered by itself. As in Mitsuba, a group holds no emitters (nor shapes with area emitters), no groups and no instances.
+Shapes declared once (feathers included, with their own `to_world` and BSDFs) for `instance`s to place; a group is not rendered by itself. As in Mitsuba, a group holds no emitters (nor shapes with area emitters), no groups and no instances; nor shapes that bound media.
 Mitsuba 3: as Mitsuba 3's `shapegroup`.
 */
 #include "shapes/shape_group.h"
@@ -56,6 +56,8 @@ std::shared_ptr<Object> makeShapeGroup(const Properties& props) {
       throw InputError(props.childLocation(*shape),
                        "a shape in a shapegroup cannot carry an area emitter: Columba, like Mitsuba, does not "
                        "instance emitters");
+    if (shape->interior || shape->exterior)
+      throw InputError(props.childLocation(*shape), "a shape in a shapegroup cannot bound a medium");
   }
   return std::make_shared<ShapeGroup>(std::move(shapes));
 }

@@ -1,6 +1,7 @@
 /*! plugin shape sphere
 A sphere of `radius` around `center`, then `to_world`; a nested BSDF (default: `diffuse`) and optionally an `area` emitter, which needs a `to_world` that keeps the sphere round (its area and area sampling assume so).
 Mitsuba 3: the same parameters and defaults.
+uses: media
 | parameter | type | default | meaning | Mitsuba 3 |
 | center | point | (0, 0, 0) | the centre | same |
 | radius | float | 1 | the radius; positive | same |

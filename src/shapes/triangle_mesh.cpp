@@ -1,3 +1,8 @@
+/*! parameters media
+| parameter | type | default | meaning | Mitsuba 3 |
+| interior | medium | none | the medium inside the shape (behind its normals), a nested `<medium name="interior">` or a `<ref name="interior" id="..."/>`: a ray crossing the surface inward travels in it | same |
+| exterior | medium | none | the medium outside (on the side of its normals); a shape bounding neither leaves a ray in the medium it was in | same |
+*/
 /*! parameters mesh
 | parameter | type | default | meaning | Mitsuba 3 |
 | face_normals | boolean | false | flat shading with each triangle's own normal, ignoring the file's normals; a mesh without normals is otherwise shaded with smooth vertex normals, each face weighted by its angle at the vertex | same |
@@ -6,7 +11,7 @@
 /*! plugin shape cube
 The cube [−1, 1]³ as a mesh of twelve triangles with face normals and per-face uv, placed by `to_world`. Like every shape, it takes a nested BSDF (default: `diffuse`) and may take a nested `area` emitter.
 Mitsuba 3: as Mitsuba 3's `cube`.
-uses: mesh
+uses: mesh, media
 | parameter | type | default | meaning | Mitsuba 3 |
 | to_world | transform | identity | places the cube | same |
 */
@@ -19,6 +24,7 @@ uses: mesh
 #include "bsdfs/diffuse.h"
 #include "core/sampling.h"
 #include "emitters/emitter.h"
+#include "media/medium.h"
 #include "shapes/vertex_normals.h"
 
 namespace columba {
@@ -155,6 +161,8 @@ void attachMaterial(const Properties& props, Shape& shape) {
   shape.bsdf = props.child<BSDF>();
   // Mitsuba's default material: a plain diffuse BSDF with its default reflectance.
   if (!shape.bsdf) shape.bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
+  shape.interior = props.namedChild<Medium>("interior");
+  shape.exterior = props.namedChild<Medium>("exterior");
   shape.emitter = props.child<Emitter>();
   if (shape.emitter) {
     if (!(shape.surfaceArea() > 0.0f))

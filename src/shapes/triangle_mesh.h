@@ -53,7 +53,8 @@ class TriangleMesh : public Shape {
 // are used when `face_normals` is true or the file asks for them (`fileFaceNormals`).
 std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld,
                                         bool fileFaceNormals = false);
-// Attaches a shape's nested BSDF (default: diffuse 0.5, as Mitsuba) and area emitter.
+// Attaches a shape's nested BSDF (default: diffuse 0.5, as Mitsuba), area emitter and the media it
+// bounds (its `interior` and `exterior`).
 void attachMaterial(const Properties& props, Shape& shape);
 
 std::shared_ptr<Object> makeCubeShape(const Properties& props);

@@ -267,7 +267,7 @@ TEST(XmlLoader, MitsubaPluginsColumbaLacksAreNamedWithWhy) {
   <integrator type="prbvolpath"/>
 </scene>)"),
                  {"test.xml:2", "<integrator type='prbvolpath'>: a Mitsuba plug-in Columba does not have",
-                  "participating media are not supported yet"});
+                  "differentiable rendering is not supported; use 'volpath'"});
   expectContains(errorOf(R"(<scene version="3.0.0">
   <shape type="mesh">
     <bsdf type="diffuse"><texture name="reflectance" type="volume"/></bsdf>

@@ -1,0 +1,110 @@
+/*! plugin volume gridvolume
+Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that is upsampled to a smooth spectrum per voxel, unbounded as Mitsuba does), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; outside the centres the grid's edge values hold (clamped). A medium's majorant is the largest value of the grid.
+Mitsuba 3: `wrap_mode` other than `clamp`, `use_grid_bbox` true, `raw` true with three channels and `max_value` are refused; a three-channel grid interpolates the voxels' spectra (Mitsuba interpolates their shapes and scales apart); where `to_world` rotates, the volume is the rotated cube, not the box around it.
+| parameter | type | default | meaning | Mitsuba 3 |
+| filename | string | — | the `.vol` file (float32 values; 1 or 3 channels) | same |
+| filter_type | string | `trilinear` | `trilinear` or `nearest` (the value of the voxel containing the point) | same |
+| to_world | transform | identity | places the unit cube [0, 1]³ in the scene | same |
+| use_grid_bbox | boolean | false | must be false: the file's bounding box is not used | `true` places the grid by the file's bounding box |
+| raw | boolean | false | must be false for three channels (they are always upsampled) | `true` keeps the three channels as given |
+| wrap_mode | string | `clamp` | must be `clamp` | also `repeat` and `mirror` |
+*/
+#include "media/grid_volume.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace columba {
+
+GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, const Transform& toWorld)
+    : Volume(toWorld), xres_(grid.xres), yres_(grid.yres), zres_(grid.zres), filter_(filter) {
+  // Extinctions and albedos are not negative; the first negative value is named.
+  for (size_t i = 0; i < grid.values.size(); ++i)
+    if (grid.values[i] < 0.0f) {
+      const size_t voxel = i / size_t(grid.channels), x = voxel % size_t(xres_),
+                   y = voxel / size_t(xres_) % size_t(yres_), z = voxel / size_t(xres_) / size_t(yres_);
+      throw std::invalid_argument("the value at x " + std::to_string(x) + ", y " + std::to_string(y) + ", z " +
+                                  std::to_string(z) + ", channel " + std::to_string(i % size_t(grid.channels)) +
+                                  " is " + std::to_string(grid.values[i]) + "; a volume's values must not be negative");
+    }
+  if (grid.channels == 1) {
+    values_ = grid.values;
+    for (float v : values_) max_ = std::max(max_, v);
+  } else if (grid.channels == 3) {
+    spectra_.reserve(grid.values.size() / 3);
+    for (size_t i = 0; i < grid.values.size(); i += 3) {
+      spectra_.push_back(fitRGBSpectrum(Vec3(grid.values[i], grid.values[i + 1], grid.values[i + 2]), true));
+      max_ = std::max(max_, spectra_.back().maxValue());
+    }
+  } else {
+    throw std::invalid_argument("the grid has " + std::to_string(grid.channels) +
+                                " channels; a volume takes 1 (a value) or 3 (an RGB colour)");
+  }
+}
+
+Spectrum GridVolume::voxel(int x, int y, int z, const Wavelengths& wl) const {
+  const size_t i = (size_t(z) * size_t(yres_) + size_t(y)) * size_t(xres_) + size_t(x);
+  if (spectra_.empty()) return Spectrum(values_[i]);
+  Spectrum s;
+  for (int k = 0; k < kSpectrumSamples; ++k) s[k] = spectra_[i].eval(wl[k]);
+  return s;
+}
+
+Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
+  const int res[3] = {xres_, yres_, zres_};
+  if (filter_ == Filter::Nearest) {
+    int cell[3];
+    for (int a = 0; a < 3; ++a) cell[a] = std::clamp(int(std::floor(p[a] * float(res[a]))), 0, res[a] - 1);
+    return voxel(cell[0], cell[1], cell[2], wl);
+  }
+  // Voxel values sit at the voxels' centres: the point in units of voxels, half a voxel back.
+  int lo[3], hi[3];
+  float w[3];
+  for (int a = 0; a < 3; ++a) {
+    const float x = std::clamp(p[a] * float(res[a]) - 0.5f, 0.0f, float(res[a] - 1));
+    lo[a] = std::min(int(x), res[a] - 1);
+    hi[a] = std::min(lo[a] + 1, res[a] - 1);
+    w[a] = x - float(lo[a]);
+  }
+  Spectrum sum(0.0f);
+  for (int corner = 0; corner < 8; ++corner) {
+    float weight = 1.0f;
+    int at[3];
+    for (int a = 0; a < 3; ++a) {
+      const bool upper = corner >> a & 1;
+      at[a] = upper ? hi[a] : lo[a];
+      weight *= upper ? w[a] : 1.0f - w[a];
+    }
+    if (weight > 0.0f) sum += voxel(at[0], at[1], at[2], wl) * weight;
+  }
+  return sum;
+}
+
+std::shared_ptr<Object> makeGridVolume(const Properties& props) {
+  const std::string filterName = props.getString("filter_type", "trilinear");
+  if (filterName != "trilinear" && filterName != "nearest")
+    throw props.error("filter_type", "filter_type must be 'trilinear' or 'nearest', not '" + filterName + "'");
+  const std::string wrap = props.getString("wrap_mode", "clamp");
+  if (wrap != "clamp") throw props.error("wrap_mode", "wrap_mode '" + wrap + "' is not supported; only 'clamp' is");
+  if (props.getBool("use_grid_bbox", false))
+    throw props.error("use_grid_bbox", "use_grid_bbox is not supported: place the grid with to_world");
+  const bool raw = props.getBool("raw", false);
+  const std::string path = props.getPath("filename");
+  VolumeGrid grid;
+  try {
+    grid = readVolumeGrid(path);
+  } catch (const InputError& e) {
+    throw props.error("filename", e.what());
+  }
+  if (raw && grid.channels == 3)
+    throw props.error("raw", path + ": raw three-channel grids are not supported (a spectral renderer upsamples them)");
+  try {
+    return std::make_shared<GridVolume>(
+        grid, filterName == "nearest" ? GridVolume::Filter::Nearest : GridVolume::Filter::Trilinear,
+        props.getTransform("to_world"));
+  } catch (const std::invalid_argument& e) {
+    throw props.error("filename", path + ": " + e.what());
+  }
+}
+
+}  // namespace columba

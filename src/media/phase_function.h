@@ -1,0 +1,28 @@
+#pragma once
+// The phase function interface: the angular distribution of light scattered in a medium.
+// Directions point away from the scattering point: `wi` toward where the light comes from (the
+// previous vertex, -ray.d) and `wo` toward where it goes, so forward scattering is wo = -wi.
+// Phase functions are normalised over the sphere and do not depend on the wavelength, so one value
+// serves every lane of a path.
+#include <optional>
+#include "core/object.h"
+#include "core/vector.h"
+
+namespace columba {
+
+struct PhaseSample {
+  Vec3 wo;
+  float pdf = 0.0f;  // solid-angle density of wo; for the phase functions here also their value
+};
+
+class PhaseFunction : public Object {
+ public:
+  // The phase function's value (per steradian) for light arriving from wi and leaving toward wo.
+  virtual float eval(const Vec3& wi, const Vec3& wo) const = 0;
+  // The density sample() draws wo with; equal to eval for phase functions sampled exactly.
+  virtual float pdf(const Vec3& wi, const Vec3& wo) const { return eval(wi, wo); }
+  // A direction drawn in proportion to eval from `u` in [0, 1)^2; nullopt where none can be drawn.
+  virtual std::optional<PhaseSample> sample(const Vec3& wi, Vec2 u) const = 0;
+};
+
+}  // namespace columba
