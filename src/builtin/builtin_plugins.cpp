@@ -29,6 +29,7 @@
 #include "film/gaussian_filter.h"
 #include "film/tent_filter.h"
 #include "integrators/direct_integrator.h"
+#include "integrators/moment_integrator.h"
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "integrators/volpath_integrator.h"
@@ -71,6 +72,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("integrator", "path", makePathIntegrator);
     r.add("integrator", "direct", makeDirectIntegrator);
     r.add("integrator", "ptracer", makeParticleTracerIntegrator);
+    r.add("integrator", "moment", makeMomentIntegrator);
     r.add("integrator", "volpath", makeVolumetricPathIntegrator);
     r.add("integrator", "volpathmis", makeVolumetricPathIntegrator);
     r.add("sensor", "perspective", makePerspectiveSensor);

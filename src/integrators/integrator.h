@@ -14,6 +14,8 @@ class Integrator : public Object {
   // `rays` counts the rays traced (for statistics).
   virtual Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                             uint64_t& rays) const = 0;
+  // Whether it follows light through participating media; the others render surfaces only.
+  virtual bool tracesMedia() const { return false; }
 };
 
 // Reads the pass parameters Mitsuba's sampling integrators take. `samples_per_pass` only splits

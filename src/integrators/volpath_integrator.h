@@ -18,6 +18,7 @@ class VolumetricPathIntegrator : public Integrator {
       : surfacesOnly_(std::move(surfacesOnly)) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
+  bool tracesMedia() const override { return true; }
 
  private:
   Spectrum radianceInMedia(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/error.h"
 #include "core/fast_math.h"
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
@@ -65,6 +66,10 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
   if (sensor_->medium()) hasMedia_ = true;
   if (!integrator_ && !particleTracer_)
     integrator_ = makeDefaultPlugin<Integrator>(makePathIntegrator, "integrator", "path", source);
+  if (hasMedia_ && !(integrator_ && integrator_->tracesMedia()))
+    warn(source,
+         "the scene's media have no effect: its integrator renders surfaces only (as Mitsuba's does); "
+         "use volpath or volpathmis");
   // Before Embree is set up: it needs the sensor and the emitters only.
   if (particleTracer_) particleTracer_->checkScene(*this);
 

@@ -22,7 +22,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"integrator", "direct_projective"}, kDifferentiable},
       {{"integrator", "stokes"}, kPolarisation},
       {{"integrator", "aov"}, "arbitrary output variables are not supported"},
-      {{"integrator", "moment"}, "the moment integrator is not supported"},
       {{"integrator", "depth"}, "the depth integrator is not supported"},
       {{"phase", "rayleigh"}, kPhases},
       {{"phase", "sggx"}, kPhases},

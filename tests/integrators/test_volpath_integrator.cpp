@@ -208,3 +208,20 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
       loadError(sphereScene(R"(<integrator type="volpath"><string name="strategy" value="bsdf"/></integrator>)")),
       {"vol.xml:2", "strategy"});
 }
+
+// A scene with media under an integrator that renders surfaces only says so: the media would
+// otherwise be silently ignored.
+TEST(VolumetricPath, MediaUnderASurfaceIntegratorAreWarnedAbout) {
+  const std::string medium = R"(<medium type="homogeneous" name="interior"><float name="sigma_t" value="1"/></medium>)";
+  std::string scene = slabScene(medium, 1.0f, "", 4, 4);
+  ::testing::internal::CaptureStderr();
+  Scene(loadSceneString(scene, "vol.xml", ".", {}, builtinPlugins()), SourceLocation{"vol.xml", 0});
+  EXPECT_EQ(::testing::internal::GetCapturedStderr().find("media have no effect"), std::string::npos);
+  const std::string volpath = R"(<integrator type="volpath"><integer name="max_depth" value="4"/></integrator>)";
+  scene.replace(scene.find(volpath), volpath.size(), R"(<integrator type="path"/>)");
+  ::testing::internal::CaptureStderr();
+  Scene(loadSceneString(scene, "vol.xml", ".", {}, builtinPlugins()), SourceLocation{"vol.xml", 0});
+  const std::string warned = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(warned.find("vol.xml"), std::string::npos) << warned;
+  EXPECT_NE(warned.find("media have no effect"), std::string::npos) << warned;
+}
