@@ -35,7 +35,7 @@ PrincipledBSDF::Material PrincipledBSDF::materialAt(const BSDFContext& ctx, cons
   const Spectrum base = p_.baseColor.eval(at, wl);
   const float metallic = p_.metallic.eval(at), specTrans = p_.specTrans.eval(at), roughness = p_.roughness.eval(at);
   return Material{base,
-                  tintColour(base, p_.baseColor.evalFloat(at)),
+                  tintColour(base, p_.baseColor.evalLuminance(at)),
                   roughness,
                   metallic,
                   p_.specTint.eval(at),

@@ -52,7 +52,7 @@ PrincipledThinBSDF::Material PrincipledThinBSDF::materialAt(const BSDFContext& c
   const Spectrum base = p_.baseColor.eval(at, wl);
   const float roughness = p_.roughness.eval(at), anisotropic = p_.anisotropic.eval(at), eta = p_.eta.eval(at);
   return Material{base,
-                  tintColour(base, p_.baseColor.evalFloat(at)),
+                  tintColour(base, p_.baseColor.evalLuminance(at)),
                   roughness,
                   p_.specTrans.eval(at),
                   0.5f * p_.diffTrans.eval(at),

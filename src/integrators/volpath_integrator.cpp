@@ -109,8 +109,7 @@ Spectrum VolumetricPathIntegrator::radianceInMedia(const Scene& scene, const Ray
               scatterAt = p;
               return false;
             }
-            Spectrum sigmaN = sigmaMaj - c.sigmaT;
-            for (int k = 0; k < kSpectrumSamples; ++k) sigmaN[k] = std::max(sigmaN[k], 0.0f);
+            const Spectrum sigmaN = nullCoefficient(sigmaMaj, c.sigmaT);
             const float pdf = tMaj[0] * sigmaN[0];
             path.beta *= tMaj * sigmaN / pdf;
             path.rU *= tMaj * sigmaN / pdf;

@@ -26,8 +26,7 @@ void ratioTrack(const Medium& medium, const Ray& ray, const Wavelengths& wl, PCG
   const Spectrum tMaj =
       trackMajorant(medium, ray, wl, rng,
                     [&](const Vec3&, const MediumCoefficients& c, const Spectrum& sigmaMaj, const Spectrum& tMaj) {
-                      Spectrum sigmaN = sigmaMaj - c.sigmaT;
-                      for (int k = 0; k < kSpectrumSamples; ++k) sigmaN[k] = std::max(sigmaN[k], 0.0f);
+                      const Spectrum sigmaN = nullCoefficient(sigmaMaj, c.sigmaT);
                       // The hero drew this collision with density tMaj[0] sigmaMaj[0]; a lane following the path
                       // would have passed it as null with sigma_n / sigma_maj of that.
                       const float pdf = tMaj[0] * sigmaMaj[0];

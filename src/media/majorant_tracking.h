@@ -3,6 +3,7 @@
 // the rate sigma_maj of the path's hero wavelength (lane 0), and at each the caller decides what
 // happens (a real collision, a null one, absorption). Delta tracking and ratio tracking are both
 // built on it (integrators/volume_transport.h).
+#include <algorithm>
 #include <cmath>
 #include "core/rng.h"
 #include "media/medium.h"
@@ -14,6 +15,14 @@ inline Spectrum majorantTransmittance(const Spectrum& sigma, float distance) {
   Spectrum t;
   for (int k = 0; k < kSpectrumSamples; ++k) t[k] = sigma[k] > 0.0f ? std::exp(-sigma[k] * distance) : 1.0f;
   return t;
+}
+
+// The null-collision coefficient sigma_n = sigma_maj - sigma_t per lane, 0 where rounding puts
+// sigma_t above the majorant.
+inline Spectrum nullCoefficient(const Spectrum& sigmaMaj, const Spectrum& sigmaT) {
+  Spectrum sigmaN = sigmaMaj - sigmaT;
+  for (int k = 0; k < kSpectrumSamples; ++k) sigmaN[k] = std::max(sigmaN[k], 0.0f);
+  return sigmaN;
 }
 
 // Walks `ray` (from ray.tmin to ray.tmax; d need not be unit length) through `medium`. At each

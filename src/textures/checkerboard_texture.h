@@ -11,7 +11,10 @@ class CheckerboardTexture : public Texture {
   CheckerboardTexture(SpectrumParameter color0, SpectrumParameter color1, Transform toUV)
       : color0_(std::move(color0)), color1_(std::move(color1)), toUV_(toUV) {}
   Spectrum evalSpectrum(const TexturePoint& p, const Wavelengths& wl) const override;
+  // A single value: color1 where inFirstColour, color0 elsewhere (Mitsuba's eval_1).
   float evalFloat(const TexturePoint& p) const override;
+  // The luminance of evalSpectrum's colour, color0's where inFirstColour.
+  float evalLuminance(const TexturePoint& p) const override;
   float mean() const override;
 
   // Whether `uv` (after to_uv) lies in a square of color0: the fractional parts of u and v are

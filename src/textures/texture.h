@@ -17,6 +17,10 @@ class Texture : public Object {
   // The value at `p` as a single number (roughness, opacity, a blend weight): a grey texture's
   // value, a colour texture's luminance.
   virtual float evalFloat(const TexturePoint& p) const = 0;
+  // The luminance of evalSpectrum's colour at `p` (the principled BSDFs' tint divides by it, as
+  // Mitsuba's does by the luminance of its colour): evalFloat's value for every texture but the
+  // checkerboard, whose single values take its colours the other way round.
+  virtual float evalLuminance(const TexturePoint& p) const { return evalFloat(p); }
   // The derivatives of evalFloat in u and in v (a bump map's slopes); zero where it is piecewise
   // constant.
   virtual Vec2 evalFloatGradient(const TexturePoint& /*p*/) const { return Vec2(0, 0); }

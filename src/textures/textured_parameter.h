@@ -28,6 +28,10 @@ class SpectrumParameter {
   }
   // As a single number: the constant's luminance, or the texture's value as a number.
   float evalFloat(const TexturePoint& p) const { return texture_ ? texture_->evalFloat(p) : constantLuminance_; }
+  // The luminance of eval's colour (Texture::evalLuminance).
+  float evalLuminance(const TexturePoint& p) const {
+    return texture_ ? texture_->evalLuminance(p) : constantLuminance_;
+  }
   // Mean over the visible range (constant) or over the texture (its mean as a number).
   float meanValue() const { return texture_ ? texture_->mean() : constant_.meanValue(); }
   bool isTextured() const { return texture_ != nullptr; }

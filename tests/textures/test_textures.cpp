@@ -76,21 +76,24 @@ class Textures : public TempDirTest {
 TEST(Checkerboard, AlternatesInHalfUnitSquaresAsMitsubas) {
   CheckerboardTexture checks(SpectralDistribution::constant(0.4f), SpectralDistribution::constant(0.2f), Transform());
   const Wavelengths wl = someWavelengths();
-  // color0 where the fractional parts of u and v are on the same side of 1/2.
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(0.25f, 0.25f)), 0.4f);
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(0.75f, 0.75f)), 0.4f);
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(0.75f, 0.25f)), 0.2f);
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(0.25f, 0.75f)), 0.2f);
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(-0.25f, 0.25f)), 0.2f);  // fractional part of -0.25 is 0.75
-  EXPECT_FLOAT_EQ(checks.evalFloat(Vec2(3.25f, -1.75f)), 0.4f);
-  EXPECT_FLOAT_EQ(checks.evalSpectrum(Vec2(0.75f, 0.25f), wl)[2], 0.2f);
+  // Colours: color0 where the fractional parts of u and v are on the same side of 1/2 (Mitsuba's
+  // eval). Single values the other way round (Mitsuba's eval_1 tests mask.x != mask.y).
+  for (const auto& [uv, same] : {std::pair{Vec2(0.25f, 0.25f), true},
+                                 {Vec2(0.75f, 0.75f), true},
+                                 {Vec2(0.75f, 0.25f), false},
+                                 {Vec2(0.25f, 0.75f), false},
+                                 {Vec2(-0.25f, 0.25f), false},  // fractional part of -0.25 is 0.75
+                                 {Vec2(3.25f, -1.75f), true}}) {
+    EXPECT_FLOAT_EQ(checks.evalSpectrum(uv, wl)[2], same ? 0.4f : 0.2f) << uv.x << " " << uv.y;
+    EXPECT_FLOAT_EQ(checks.evalFloat(uv), same ? 0.2f : 0.4f) << uv.x << " " << uv.y;
+  }
   EXPECT_FLOAT_EQ(checks.mean(), 0.3f);
 
   // to_uv scales before the lookup: (0.3, 0.1) becomes (0.6, 0.2).
   CheckerboardTexture scaled(SpectralDistribution::constant(0.4f), SpectralDistribution::constant(0.2f),
                              Transform::scale(Vec3(2, 2, 1)));
-  EXPECT_FLOAT_EQ(scaled.evalFloat(Vec2(0.3f, 0.1f)), 0.2f);
-  EXPECT_FLOAT_EQ(scaled.evalFloat(Vec2(0.1f, 0.1f)), 0.4f);
+  EXPECT_FLOAT_EQ(scaled.evalSpectrum(Vec2(0.3f, 0.1f), wl)[0], 0.2f);
+  EXPECT_FLOAT_EQ(scaled.evalSpectrum(Vec2(0.1f, 0.1f), wl)[0], 0.4f);
 }
 
 TEST(BitmapTexture, WrapModesIndexAsDefined) {
@@ -341,7 +344,9 @@ TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
     auto rough = bsdfOf(type, "<float name=\"alpha\" value=\"0.4\"/>");
     auto smooth = bsdfOf(type, "<float name=\"alpha\" value=\"0.05\"/>");
     ASSERT_TRUE(textured && rough && smooth) << type;
-    const BSDFContext inColor0{Vec2(0.25f, 0.25f), Vec3(), Vec3()}, inColor1{Vec2(0.75f, 0.25f), Vec3(), Vec3()};
+    // A single value takes color0 where the fractional parts of u and v lie on opposite sides of
+    // 1/2 (Mitsuba's eval_1; the Checkerboard test below).
+    const BSDFContext inColor0{Vec2(0.75f, 0.25f), Vec3(), Vec3()}, inColor1{Vec2(0.25f, 0.25f), Vec3(), Vec3()};
     for (const Vec3& out : {wo, below}) {
       EXPECT_FLOAT_EQ(textured->eval(inColor0, wi, out, wl)[0], rough->eval(inColor0, wi, out, wl)[0]) << type;
       EXPECT_FLOAT_EQ(textured->eval(inColor1, wi, out, wl)[0], smooth->eval(inColor1, wi, out, wl)[0]) << type;
