@@ -25,11 +25,17 @@ inline Spectrum nullCoefficient(const Spectrum& sigmaMaj, const Spectrum& sigmaT
   return sigmaN;
 }
 
+// At most this many tentative collisions along one ray: a grid whose largest value is huge beside
+// the rest (a hostile or broken file) would otherwise walk through ~sigma_maj x length null
+// collisions, which can be forever. Past it the light is taken as absorbed: a walk that long has a
+// majorant optical depth of about a million, where nothing gets through anyway.
+inline constexpr int kMostTentativeCollisions = 1 << 20;
+
 // Walks `ray` (from ray.tmin to ray.tmax; d need not be unit length) through `medium`. At each
 // tentative collision calls visit(p, coefficients at p, sigma_maj, T_maj), T_maj being the
 // majorant transmittance since the previous collision (or the start); visit returns false to stop
-// the walk. Returns the majorant transmittance from the last collision to ray.tmax, or 1 when
-// visit stopped the walk.
+// the walk. Returns the majorant transmittance from the last collision to ray.tmax, 1 when visit
+// stopped the walk, or 0 after kMostTentativeCollisions.
 template <typename Visit>
 Spectrum trackMajorant(const Medium& medium, const Ray& ray, const Wavelengths& wl, PCG32& rng, Visit&& visit) {
   const std::optional<MajorantSegment> segment = medium.majorant(ray, wl);
@@ -39,7 +45,8 @@ Spectrum trackMajorant(const Medium& medium, const Ray& ray, const Wavelengths& 
   const Spectrum sigmaMaj = segment->sigmaMaj;
   if (!(sigmaMaj[0] > 0.0f)) return majorantTransmittance(sigmaMaj, (segment->tmax - segment->tmin) * speed);
   float t = segment->tmin;
-  while (true) {
+  for (int collisions = 0;; ++collisions) {
+    if (collisions == kMostTentativeCollisions) return Spectrum(0.0f);
     const float step = -std::log(1.0f - rng.nextFloat()) / (sigmaMaj[0] * speed);
     if (!(t + step < segment->tmax)) return majorantTransmittance(sigmaMaj, (segment->tmax - t) * speed);
     t += step;
