@@ -1,6 +1,6 @@
 /*! plugin volume gridvolume
 Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that is upsampled to a smooth spectrum per voxel, unbounded as Mitsuba does), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; outside the centres the grid's edge values hold (clamped). A medium's majorant is the largest value of the grid.
-Mitsuba 3: `wrap_mode` other than `clamp`, `use_grid_bbox` true, `raw` true with three channels and `max_value` are refused; a three-channel grid interpolates the voxels' spectra (Mitsuba interpolates their shapes and scales apart); where `to_world` rotates, the volume is the rotated cube, not the box around it.
+Mitsuba 3: `wrap_mode` other than `clamp`, `use_grid_bbox` true, `raw` true with three channels and `max_value` are refused; where `to_world` rotates, the volume is the rotated cube, not the box around it.
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | — | the `.vol` file (float32 values; 1 or 3 channels) | same |
 | filter_type | string | `trilinear` | `trilinear` or `nearest` (the value of the voxel containing the point) | same |
@@ -34,7 +34,8 @@ GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, const Transform& t
     spectra_.reserve(grid.values.size() / 3);
     for (size_t i = 0; i < grid.values.size(); i += 3) {
       spectra_.push_back(fitRGBSpectrum(Vec3(grid.values[i], grid.values[i + 1], grid.values[i + 2]), true));
-      max_ = std::max(max_, spectra_.back().maxValue());
+      // The interpolated shape stays within [0, 1], so the largest scale bounds every value.
+      max_ = std::max(max_, spectra_.back().scale);
     }
   } else {
     throw std::invalid_argument("the grid has " + std::to_string(grid.channels) +
@@ -66,7 +67,11 @@ Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
     hi[a] = std::min(lo[a] + 1, res[a] - 1);
     w[a] = x - float(lo[a]);
   }
+  // One channel: the values interpolated. Three: each voxel's spectrum is a shape (the smooth
+  // spectrum of its colour over twice its largest component, within [0, 1]) times that scale;
+  // shapes and scales are interpolated apart and multiplied, as Mitsuba's grid does.
   Spectrum sum(0.0f);
+  float scale = 0.0f;
   for (int corner = 0; corner < 8; ++corner) {
     float weight = 1.0f;
     int at[3];
@@ -75,9 +80,17 @@ Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
       at[a] = upper ? hi[a] : lo[a];
       weight *= upper ? w[a] : 1.0f - w[a];
     }
-    if (weight > 0.0f) sum += voxel(at[0], at[1], at[2], wl) * weight;
+    if (!(weight > 0.0f)) continue;
+    if (spectra_.empty()) {
+      sum += voxel(at[0], at[1], at[2], wl) * weight;
+      continue;
+    }
+    const float voxelScale =
+        spectra_[(size_t(at[2]) * size_t(yres_) + size_t(at[1])) * size_t(xres_) + size_t(at[0])].scale;
+    scale += weight * voxelScale;
+    if (voxelScale > 0.0f) sum += voxel(at[0], at[1], at[2], wl) * (weight / voxelScale);
   }
-  return sum;
+  return spectra_.empty() ? sum : sum * scale;
 }
 
 std::shared_ptr<Object> makeGridVolume(const Properties& props) {
