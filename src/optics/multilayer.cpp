@@ -29,26 +29,31 @@ struct Admittance {
 };
 Admittance admittance(Complex n, Complex q) { return {q, n * n / q}; }
 
-// r and t from the stack's [B, C] = M [1, eta_substrate] for one polarisation.
-void responseFor(const LayerStack& stack, const std::vector<Complex>& q, double lambdaNm, bool p, double& R,
-                 double& T) {
+// R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate]. A layer's phase
+// thickness, and so its cosine and sine, is the same for s and p: computed once for both.
+void response(const LayerStack& stack, const std::vector<Complex>& q, double lambdaNm, MultilayerResponse& r) {
   const double n0 = stack.incidentIndex;
-  auto eta = [&](Complex n, Complex qn) { return p ? admittance(n, qn).p : admittance(n, qn).s; };
-  Matrix m{1.0, 0.0, 0.0, 1.0};
+  Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
+  const Complex minusI(0.0, -1.0);
   for (size_t j = 0; j < stack.layers.size(); ++j) {
     const Layer& layer = stack.layers[j];
     const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q[j + 1];
-    const Complex e = eta(layer.index, q[j + 1]);
-    const Complex c = std::cos(delta), s = std::sin(delta);
+    const Admittance e = admittance(layer.index, q[j + 1]);
+    const Complex c = std::cos(delta), sn = std::sin(delta);
     // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
     // matrix carries -i; Macleod's +i goes with n - ik.
-    m = multiply(m, {c, Complex(0.0, -1.0) * s / e, Complex(0.0, -1.0) * e * s, c});
+    ms = multiply(ms, {c, minusI * sn / e.s, minusI * e.s * sn, c});
+    mp = multiply(mp, {c, minusI * sn / e.p, minusI * e.p * sn, c});
   }
-  const Complex eta0 = eta(n0, q.front()), etaS = eta(stack.substrateIndex, q.back());
-  const Complex B = m[0] + m[1] * etaS, C = m[2] + m[3] * etaS;
-  const Complex denominator = eta0 * B + C;
-  R = std::norm((eta0 * B - C) / denominator);
-  T = 4.0 * eta0.real() * etaS.real() / std::norm(denominator);
+  const Admittance eta0 = admittance(n0, q.front()), etaS = admittance(stack.substrateIndex, q.back());
+  auto finish = [](const Matrix& m, Complex incident, Complex substrate, double& R, double& T) {
+    const Complex B = m[0] + m[1] * substrate, C = m[2] + m[3] * substrate;
+    const Complex denominator = incident * B + C;
+    R = std::norm((incident * B - C) / denominator);
+    T = 4.0 * incident.real() * substrate.real() / std::norm(denominator);
+  };
+  finish(ms, eta0.s, etaS.s, r.rs, r.ts);
+  finish(mp, eta0.p, etaS.p, r.rp, r.tp);
 }
 }  // namespace
 
@@ -70,8 +75,7 @@ MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncid
   for (const Layer& layer : stack.layers) q.push_back(normalComponent(layer.index, tangential));
   q.push_back(normalComponent(stack.substrateIndex, tangential));
   MultilayerResponse r;
-  responseFor(stack, q, lambdaNm, false, r.rs, r.ts);
-  responseFor(stack, q, lambdaNm, true, r.rp, r.tp);
+  response(stack, q, lambdaNm, r);
   return r;
 }
 

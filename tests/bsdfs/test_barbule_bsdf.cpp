@@ -50,6 +50,13 @@ BarbuleParameters custom(float b, float phi0, float phi1, float mu, float H, flo
 }
 
 // The cortex over an absorbing layer and an air gap (test values, not a species): the layered film.
+// The layered film evaluates its stack by transfer matrices, far slower than the Airy film: the
+// slow sweeps take it at one oblique incident direction, the middle one of theirs.
+std::vector<Vec3> fewerForLayered(const ParameterSet& set, const std::vector<Vec3>& directions) {
+  if (set.params.layersBelow.empty()) return directions;
+  return {directions[directions.size() / 2]};
+}
+
 BarbuleParameters layered() {
   BarbuleParameters p = reference(0.4f);
   p.layersBelow = parseFilmLayers("1.7+0.1i:0.12, air:0.1");
@@ -127,7 +134,8 @@ std::optional<bool> reflectedWeight(const BarbuleBSDF& bsdf, const BSDFContext& 
 
 TEST(BarbuleBSDF, SampledDirectionsFollowThePdfSlow) {
   const std::vector<Vec3> incident = incidentDirections();
-  const int tests = int(parameterSets().size() * incident.size());
+  int tests = 0;
+  for (const ParameterSet& set : parameterSets()) tests += int(fewerForLayered(set, incident).size());
   const double threshold = sidak(0.01, tests);
   const BSDFContext ctx;
   std::printf("chi-square of sample() against pdf(), %d tests, per-test threshold %.2e (family alpha 0.01)\n", tests,
@@ -135,7 +143,7 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdfSlow) {
   for (const ParameterSet& set : parameterSets()) {
     BarbuleBSDF bsdf(set.params);
     double minP = 1.0;
-    for (const Vec3& wi : incident) {
+    for (const Vec3& wi : fewerForLayered(set, incident)) {
       int scattered = 0;
       ChiSquareResult result = chiSquareDirectionTest(
           [&](PCG32& rng) -> std::optional<Vec3> {
@@ -408,7 +416,8 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
 
 // The two quadratures (of eval over directions, and of the lobes' means over visible normals)
 // differ from each other by their discretisation: measured over the 80 cases of the single-film
-// sets (with the layered film's 40 added: R -0.00002 over 120, TRT 0.0022 over 100), the ratio
+// sets (with the layered film's 20 at all five directions: R -0.00002 over 120, TRT 0.0022 over
+// 100), the ratio
 // integral / means - 1 is 0.00006 on average (spread 0.0006, at most 0.0044) for R and 0.0021
 // (spread 0.0055, -0.0086 to +0.0207) for TRT. Each case must lie within bounds that hold all of
 // these (with a small absolute floor); the mean over all cases, where the discretisation errors
@@ -423,8 +432,9 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeansSlow) {
   int ratiosR = 0, ratiosTRT = 0;
   for (const ParameterSet& set : parameterSets()) {
     BarbuleBSDF bsdf(set.params);
-    for (const Vec3& wi : {direction(0.0f, 0.0f), direction(30.0f, 20.0f), direction(60.0f, 110.0f),
-                           direction(80.0f, 250.0f), direction(45.0f, 0.0f)}) {
+    for (const Vec3& wi :
+         fewerForLayered(set, {direction(0.0f, 0.0f), direction(30.0f, 20.0f), direction(60.0f, 110.0f),
+                               direction(80.0f, 250.0f), direction(45.0f, 0.0f)})) {
       float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
       EXPECT_NEAR(t, 1.0f - bsdf.coverage(ctx, wi), 1e-6f);
       LobeAlbedo integral = integrateLobes(bsdf, wi), expected = visibleNormalMeans(set.params, wi);
