@@ -29,23 +29,26 @@ struct Admittance {
 };
 Admittance admittance(Complex n, Complex q) { return {q, n * n / q}; }
 
-// R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate]. A layer's phase
-// thickness, and so its cosine and sine, is the same for s and p: computed once for both.
-void response(const LayerStack& stack, const std::vector<Complex>& q, double lambdaNm, MultilayerResponse& r) {
+// R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate], for light whose
+// tangential wave-vector component is `tangential`. A layer's phase thickness, and so its cosine
+// and sine, is the same for s and p: computed once for both. Nothing is allocated: the lobes of a
+// layered barbule film call this at every quadrature node.
+void response(const LayerStack& stack, double tangential, double lambdaNm, MultilayerResponse& r) {
   const double n0 = stack.incidentIndex;
   Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
   const Complex minusI(0.0, -1.0);
-  for (size_t j = 0; j < stack.layers.size(); ++j) {
-    const Layer& layer = stack.layers[j];
-    const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q[j + 1];
-    const Admittance e = admittance(layer.index, q[j + 1]);
+  for (const Layer& layer : stack.layers) {
+    const Complex q = normalComponent(layer.index, tangential);
+    const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q;
+    const Admittance e = admittance(layer.index, q);
     const Complex c = std::cos(delta), sn = std::sin(delta);
     // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
     // matrix carries -i; Macleod's +i goes with n - ik.
     ms = multiply(ms, {c, minusI * sn / e.s, minusI * e.s * sn, c});
     mp = multiply(mp, {c, minusI * sn / e.p, minusI * e.p * sn, c});
   }
-  const Admittance eta0 = admittance(n0, q.front()), etaS = admittance(stack.substrateIndex, q.back());
+  const Admittance eta0 = admittance(n0, normalComponent(n0, tangential));
+  const Admittance etaS = admittance(stack.substrateIndex, normalComponent(stack.substrateIndex, tangential));
   auto finish = [](const Matrix& m, Complex incident, Complex substrate, double& R, double& T) {
     const Complex B = m[0] + m[1] * substrate, C = m[2] + m[3] * substrate;
     const Complex denominator = incident * B + C;
@@ -69,13 +72,8 @@ MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncid
     check(layer.index, "a layer");
     if (!(layer.thicknessUm >= 0.0)) throw std::invalid_argument("a layer's thickness must not be negative");
   }
-  const double tangential = stack.incidentIndex * std::sin(thetaIncident);
-  std::vector<Complex> q;
-  q.push_back(normalComponent(stack.incidentIndex, tangential));
-  for (const Layer& layer : stack.layers) q.push_back(normalComponent(layer.index, tangential));
-  q.push_back(normalComponent(stack.substrateIndex, tangential));
   MultilayerResponse r;
-  response(stack, q, lambdaNm, r);
+  response(stack, stack.incidentIndex * std::sin(thetaIncident), lambdaNm, r);
   return r;
 }
 
