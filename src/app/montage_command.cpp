@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/output_directory.h"
+#include "plot/canvas.h"
 #include "plot/contact_sheet.h"
 
 namespace columba {
@@ -36,16 +37,9 @@ std::vector<std::string> readLabels(const MontageOptions& options) {
   return labels;
 }
 
-// Whether the sheet is written as vectors: .svg or .pdf, in any letter case.
-bool isVectorPath(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".svg" || extension == ".pdf";
-}
-
 void runMontage(const MontageOptions& options) {
   // Before reading the inputs; a missing directory is made once the sheet is.
-  const bool vector = isVectorPath(options.output);
+  const bool vector = isVectorFigurePath(options.output);
   if (vector) checkOutputDirectory(options.output, directoryOf(options.output));
   const ImageFormat format = vector ? ImageFormat::PNG : checkOutputImagePath(options.output, true);
   const std::vector<std::string> labels = readLabels(options);

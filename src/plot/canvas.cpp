@@ -235,6 +235,11 @@ void Canvas::finish() {
   temporary_.clear();
 }
 
+bool isVectorFigurePath(const std::string& path) {
+  const std::string extension = figureExtension(path);
+  return extension == ".svg" || extension == ".pdf";
+}
+
 void writeFigure(const std::string& path, int width, int height, const Vec3& background,
                  const std::function<void(Canvas&)>& draw, const ImageMetadata& metadata) {
   if (figureExtension(path) == ".png") {

@@ -55,6 +55,9 @@ class Canvas {
   std::string temporary_;  // what it is written to until finish() renames it; empty once renamed
 };
 
+// Whether `path` names a vector figure: .svg or .pdf, in any letter case.
+bool isVectorFigurePath(const std::string& path);
+
 // A figure of width x height drawn by `draw`, written to `path`: .png as pixels (with `metadata`),
 // .svg or .pdf as vectors (width and height in points). Throws std::runtime_error for another
 // extension or a file Cairo cannot write.

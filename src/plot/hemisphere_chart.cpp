@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include "core/math.h"
+#include "core/spectrum.h"
 #include "plot/canvas.h"
 #include "plot/line_plot.h"
 
@@ -36,9 +37,6 @@ Layout layoutFor(const Image& disk, const HemisphereChart& chart) {
   return l;
 }
 
-// Rec. 709 luminance of a linear RGB pixel.
-float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
-
 void drawChart(Canvas& canvas, const Image& disk, const HemisphereChart& chart, const Layout& layout) {
   const float size = float(disk.width);
   const Vec3 black(0, 0, 0), grey = srgbColour(0.55f, 0.55f, 0.55f);
@@ -59,7 +57,8 @@ void drawChart(Canvas& canvas, const Image& disk, const HemisphereChart& chart, 
       float u = 2.0f * (x + 0.5f) / disk.width - 1.0f, v = 2.0f * (y + 0.5f) / disk.height - 1.0f;
       if (u * u + v * v >= 1.0f)
         for (int c = 0; c < 3; ++c) shown.pixel(x, y)[c] = 1.0f;
-      else if (float Y = luminance(disk.pixel(x, y)); std::isfinite(Y))
+      else if (float Y = linearRGBToXYZ(Vec3(disk.pixel(x, y)[0], disk.pixel(x, y)[1], disk.pixel(x, y)[2])).y;
+               std::isfinite(Y))
         brightest = std::max(brightest, Y);
     }
   canvas.drawImage(int(x0), int(y0), shown);

@@ -30,7 +30,10 @@ Vec3 reflectanceXYZ(const SpectralGrid& grid, const std::vector<float>& reflecta
   return Vec3(float(x / white), float(y / white), float(z / white));
 }
 
-CIELab labFromLinearRGB(const Vec3& rgb) { return labFromXYZ(linearRGBToXYZ(rgb), linearRGBToXYZ(Vec3(1, 1, 1))); }
+CIELab labFromLinearRGB(const Vec3& rgb) {
+  static const Vec3 white = linearRGBToXYZ(Vec3(1, 1, 1));
+  return labFromXYZ(linearRGBToXYZ(rgb), white);
+}
 
 double deltaE2000(const CIELab& x, const CIELab& y) {
   const cmsCIELab a = toLcms(x), b = toLcms(y);

@@ -10,20 +10,11 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "vision/table_cells.h"
 
 namespace columba {
 
 namespace {
-
-std::vector<std::string> cells(const std::string& line) {
-  std::string text = line;
-  for (char& c : text)
-    if (c == ',' || c == '\t' || c == '\r') c = ' ';
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string cell; in >> cell;) out.push_back(cell);
-  return out;
-}
 
 bool notApplicable(const std::string& cell) { return cell == "NA" || cell == "-"; }
 
@@ -79,7 +70,7 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
   for (std::string line; std::getline(in, line);) {
     ++lineNumber;
     if (lineNumber > 1000) throw InputError({path, lineNumber}, "more than 1000 lines: a definition has a row a cone");
-    const std::vector<std::string> values = cells(line);
+    const std::vector<std::string> values = tableCells(line);
     if (values.empty() || values.front()[0] == '#') continue;
     if (header.empty()) {
       header = values;

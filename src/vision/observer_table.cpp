@@ -10,23 +10,13 @@
 #include "core/error.h"
 #include "core/number_text.h"
 #include "vision/observer_definition_file.h"
+#include "vision/table_cells.h"
 
 namespace columba {
 
 namespace {
 constexpr std::uintmax_t kMostBytes = std::uintmax_t(16) << 20;
 constexpr size_t kMostRows = 100000;
-
-std::vector<std::string> cells(const std::string& line) {
-  std::string text = line;
-  std::replace(text.begin(), text.end(), ',', ' ');
-  std::replace(text.begin(), text.end(), '\t', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string cell; in >> cell;) out.push_back(cell);
-  return out;
-}
 
 double number(const std::string& text, const std::string& path, int line, const std::string& column) {
   const std::optional<double> v = parseNumber<double>(text);
@@ -46,7 +36,7 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
   std::string line;
   while (std::getline(table, line)) {
     ++lineNumber;
-    const std::vector<std::string> row = cells(line);
+    const std::vector<std::string> row = tableCells(line);
     if (row.empty() || row.front()[0] == '#') continue;
     if (header.empty()) {
       header = row;
@@ -145,7 +135,7 @@ Observer readObserverTableFile(const std::string& path) {
   const std::string name = std::filesystem::path(path).stem().string();
   // A definition's header starts with `cone`; a table's with its wavelength column.
   for (std::string line; std::getline(in, line);) {
-    const std::vector<std::string> row = cells(line);
+    const std::vector<std::string> row = tableCells(line);
     if (row.empty() || row.front()[0] == '#') continue;
     in.clear();
     in.seekg(0);
