@@ -157,7 +157,12 @@ SpectralDistribution Properties::getSpectrum(const std::string& name, float def,
   } else if (v->kind != Kind::Spectrum) {
     s = SpectralDistribution::constant(toFloat(*v, name));
   } else if (v->isRGB) {
-    s = SpectralDistribution::fromRGB(v->rgb, use != SpectrumUse::Reflectance);
+    // Emission is fitted at half its largest component and scaled back, as Mitsuba's d65 does; any
+    // other colour within [0, 1] is fitted as it is, as Mitsuba's srgb does even when unbounded (a
+    // medium's extinction (1, 0.2, 1) gets a reflectance's spectrum shape, not pbrt's scaled one).
+    const float largest = std::max({v->rgb.x, v->rgb.y, v->rgb.z});
+    s = SpectralDistribution::fromRGB(
+        v->rgb, use == SpectrumUse::Emission || (use != SpectrumUse::Reflectance && largest > 1.0f));
   } else {
     s = v->spectrum;
   }

@@ -1,5 +1,5 @@
 /*! plugin emitter area
-Radiance leaving the front side of the shape it is nested in: the same everywhere, or a texture looked up at each point of the shape (its uv, or a mesh's attributes there). A texture's colours are illuminants, times D65, as constant colours given to emitters are.
+Radiance leaving the front side of the shape it is nested in: the same everywhere, or a texture looked up at each point of the shape (its uv, or a mesh's attributes there). A texture's spectra are emitted as the texture gives them (a bitmap's white is an equal-energy light, not D65), as in Mitsuba 3, which hands a texture given to an emitter over unchanged; a value or a colour is an illuminant, times D65.
 Mitsuba 3: as Mitsuba 3's `area`.
 | parameter | type | default | meaning | Mitsuba 3 |
 | radiance | spectrum or texture | 1 | the emitted radiance; a single value or an RGB colour is CIE D65 scaled to that luminance; not negative | same |

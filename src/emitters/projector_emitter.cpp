@@ -3,8 +3,8 @@ A projection light: the perspective camera run backwards. From the origin of `to
 Mitsuba 3: the same parameters; `to_world` must be rigid (the density of directions is the camera's).
 uses: fov
 | parameter | type | default | meaning | Mitsuba 3 |
-| irradiance | spectrum or texture | required | the irradiance on the image plane z = 1 | same |
-| scale | spectrum | 1 | a factor on `irradiance`: a single value is D65 of that luminance, as for every emitter | same |
+| irradiance | spectrum or texture | required | the irradiance on the image plane z = 1; a single value or an RGB colour is CIE D65 of that luminance, a texture's spectra are taken as the texture gives them (no D65, as in Mitsuba 3) | same |
+| scale | float | 1 | a factor on `irradiance` | same |
 | to_world | transform | identity | the projector's frame; rotation and translation only | — |
 */
 #include "emitters/projector_emitter.h"
@@ -14,14 +14,13 @@ uses: fov
 
 namespace columba {
 
-ProjectorEmitter::ProjectorEmitter(const Transform& toWorld, SpectrumParameter irradiance, SpectralDistribution scale,
-                                   Vec2 tanHalf)
+ProjectorEmitter::ProjectorEmitter(const Transform& toWorld, SpectrumParameter irradiance, float scale, Vec2 tanHalf)
     : toWorld_(toWorld),
       worldToLocal_(toWorld.inverse()),
       position_(toWorld.point(Vec3(0, 0, 0))),
       axis_(toWorld.vector(Vec3(0, 0, 1))),
       irradiance_(std::move(irradiance)),
-      scale_(std::move(scale)),
+      scale_(scale),
       tanHalf_(tanHalf) {}
 
 std::optional<Vec2> ProjectorEmitter::imageUVAt(const Vec3& local) const {
@@ -42,7 +41,7 @@ std::optional<EmitterSample> ProjectorEmitter::sample(const Vec3& ref, Vec2, con
   s.direction = d / s.distance;
   const float cosTheta = -dot(axis_, s.direction);
   if (!(cosTheta > 0.0f)) return std::nullopt;
-  s.radiance = irradiance_.eval(*uv, wl) * scale_.sample(wl) * (kPi / (local.z * local.z * cosTheta));
+  s.radiance = irradiance_.eval(*uv, wl) * scale_ * (kPi / (local.z * local.z * cosTheta));
   s.pdf = 1.0f;
   return s;
 }
@@ -56,14 +55,14 @@ std::optional<EmitterRaySample> ProjectorEmitter::sampleRay(Vec2, Vec2 uDirectio
   EmitterRaySample s;
   s.ray.o = position_;
   s.ray.d = normalize(toWorld_.vector(local));
-  s.weight = irradiance_.eval(uDirection, wl) * scale_.sample(wl) * (kPi * 4.0f * tanHalf_.x * tanHalf_.y);
+  s.weight = irradiance_.eval(uDirection, wl) * scale_ * (kPi * 4.0f * tanHalf_.x * tanHalf_.y);
   return s;
 }
 
 std::shared_ptr<Object> makeProjectorEmitter(const Properties& props) {
   if (!props.has("irradiance") && !props.namedChild<Texture>("irradiance"))
     throw InputError(props.location, "'projector' needs its 'irradiance' (a texture or a value)");
-  SpectrumParameter irradiance = readSpectrumParameter(props, "irradiance", 1.0f, SpectrumUse::Unbounded);
+  SpectrumParameter irradiance = readSpectrumParameter(props, "irradiance", 1.0f, SpectrumUse::Emission);
   // The image's aspect is the texture's, as Mitsuba takes it from the texture's resolution; a
   // constant or procedural texture is square.
   float aspect = 1.0f;
@@ -72,8 +71,7 @@ std::shared_ptr<Object> makeProjectorEmitter(const Properties& props) {
   const Transform toWorld = props.getTransform("to_world");
   if (!toWorld.isRigid())
     throw props.error("to_world", "a projector's to_world must not scale or shear (rotate and translate it only)");
-  return std::make_shared<ProjectorEmitter>(toWorld, std::move(irradiance),
-                                            props.getSpectrum("scale", 1.0f, SpectrumUse::Emission),
+  return std::make_shared<ProjectorEmitter>(toWorld, std::move(irradiance), props.getFloat("scale", 1.0f),
                                             tanHalfAngles(readFieldOfView(props), aspect));
 }
 

@@ -3,8 +3,8 @@
 // `to_world`, looking along its +z, it projects `irradiance` (a texture, or a constant) through
 // the same field of view and pixel-to-direction mapping as the `perspective` sensor (fov,
 // fov_axis or focal_length; the image's aspect is the texture's). The texture gives the irradiance
-// on the image plane z = 1, scaled by `scale` (CIE D65 of that luminance, as a single value given
-// to any emitter): a point at local (x, y, z) receives, along the direction from the projector,
+// on the image plane z = 1 (a constant value or colour is CIE D65 of that luminance; a texture's
+// spectra are taken as given, as Mitsuba 3 does), times the number `scale`: a point at local (x, y, z) receives, along the direction from the projector,
 //   pi * scale * irradiance(uv) / (z^2 cos theta),
 // theta the angle from the axis, so that a plane facing the projector at z = 1 is lit evenly, as
 // Mitsuba writes it. Its uv is (1/2 - x / (2 z tan_x), 1/2 - y / (2 z tan_y)), with tan_x and
@@ -19,7 +19,7 @@ namespace columba {
 
 class ProjectorEmitter : public Emitter {
  public:
-  ProjectorEmitter(const Transform& toWorld, SpectrumParameter irradiance, SpectralDistribution scale, Vec2 tanHalf);
+  ProjectorEmitter(const Transform& toWorld, SpectrumParameter irradiance, float scale, Vec2 tanHalf);
   std::optional<EmitterSample> sample(const Vec3& ref, Vec2 u, const Wavelengths& wl) const override;
   // A ray through a point of the image chosen uniformly (Mitsuba chooses it by the texture's
   // values): its weight is pi * scale * irradiance * the image's area at z = 1.
@@ -33,7 +33,7 @@ class ProjectorEmitter : public Emitter {
   Transform toWorld_, worldToLocal_;
   Vec3 position_, axis_;
   SpectrumParameter irradiance_;
-  SpectralDistribution scale_;
+  float scale_ = 1.0f;
   Vec2 tanHalf_;
 };
 

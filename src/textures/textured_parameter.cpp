@@ -16,7 +16,7 @@ SpectrumParameter readSpectrumParameter(const Properties& props, const std::stri
       throw props.error(name, "the texture for '" + name +
                                   "' holds raw numbers, not colours (it was read with raw=true): it cannot give a "
                                   "spectrum");
-    return SpectrumParameter(texture, use == SpectrumUse::Emission);
+    return SpectrumParameter(texture);
   }
   return SpectrumParameter(props.getSpectrum(name, def, use));
 }

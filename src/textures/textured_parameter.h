@@ -3,7 +3,6 @@
 // (<float>, <rgb>, <spectrum>) or a texture, evaluated at the shading point.
 #include <memory>
 #include <string>
-#include "core/illuminant.h"
 #include "core/properties.h"
 #include "core/spectrum.h"
 #include "textures/texture.h"
@@ -14,17 +13,12 @@ class SpectrumParameter {
  public:
   SpectrumParameter(SpectralDistribution constant)  // NOLINT: a constant is the common case
       : constant_(std::move(constant)), constantLuminance_(constant_.luminance()) {}
-  // `illuminant`: the texture gives an emitter's colours, each an illuminant: its spectrum times
-  // CIE D65, as Mitsuba reads a textured radiance and as constants given to emitters are read.
-  explicit SpectrumParameter(std::shared_ptr<const Texture> texture, bool illuminant = false)
-      : texture_(std::move(texture)), illuminant_(illuminant) {}
+  // A texture's spectra are taken as it gives them, for emitters too: Mitsuba 3 hands a texture
+  // given to an emitter over unchanged (no D65), unlike a value or a colour.
+  explicit SpectrumParameter(std::shared_ptr<const Texture> texture) : texture_(std::move(texture)) {}
 
   Spectrum eval(const TexturePoint& p, const Wavelengths& wl) const {
-    if (!texture_) return constant_.sample(wl);
-    Spectrum s = texture_->evalSpectrum(p, wl);
-    if (illuminant_)
-      for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= d65(wl[i]);
-    return s;
+    return texture_ ? texture_->evalSpectrum(p, wl) : constant_.sample(wl);
   }
   // As a single number: the constant's luminance, or the texture's value as a number.
   float evalFloat(const TexturePoint& p) const { return texture_ ? texture_->evalFloat(p) : constantLuminance_; }
@@ -40,7 +34,6 @@ class SpectrumParameter {
   SpectralDistribution constant_;
   float constantLuminance_ = 0.0f;
   std::shared_ptr<const Texture> texture_;
-  bool illuminant_ = false;
 };
 
 class FloatParameter {
@@ -59,8 +52,8 @@ class FloatParameter {
 
 // Parameter `name` of `props`: a nested or referenced <texture name="..."> if there is one, else
 // the constant as Properties::getSpectrum / getFloat read it (`def` when absent). InputError when
-// both a value and a texture are given. For SpectrumUse::Emission a texture's colours are
-// illuminants (times D65).
+// both a value and a texture are given. A texture is taken as given whatever `use` says (for an
+// emitter too: no D65, as Mitsuba 3).
 SpectrumParameter readSpectrumParameter(const Properties& props, const std::string& name, float def, SpectrumUse use);
 FloatParameter readFloatParameter(const Properties& props, const std::string& name, float def);
 
