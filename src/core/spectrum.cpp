@@ -103,33 +103,47 @@ Vec3 xyzToRec709(const Vec3& c) {
 float sigmoid(float x) { return 0.5f + x / (2.0f * std::sqrt(1.0f + x * x)); }
 float normalisedLambda(float lambda) { return (lambda - kLambdaMin) / (kLambdaMax - kLambdaMin); }
 
-// The colour of a reflectance spectrum lit by D65, as Jakob & Hanika and Mitsuba define it.
-Vec3 sigmoidPolynomialRGB(const std::array<double, 3>& c) {
-  Vec3 xyz(0, 0, 0);
-  const CieTable& t = cieTable();
-  for (int i = 0; i < CieTable::kCount; ++i) {
-    float lambda = kLambdaMin + float(i);
-    double x = normalisedLambda(lambda);
-    xyz += t.xyz[i] * (d65(lambda) * sigmoid(float((c[0] * x + c[1]) * x + c[2])));
-  }
-  return xyzToLinearRGB(xyz / t.yIntegral);
-}
-
-// Gauss-Newton fit of the sigmoid polynomial's three coefficients to a target colour.
-std::array<float, 3> fitSigmoidPolynomial(const Vec3& target) {
-  std::array<double, 3> c{0.0, 0.0, 0.0};
-  for (int iter = 0; iter < 60; ++iter) {
-    Vec3 rgb = sigmoidPolynomialRGB(c);
-    Vec3 r = rgb - target;
-    if (length(r) < 1e-5f) break;
-    double J[3][3];
-    for (int j = 0; j < 3; ++j) {
-      std::array<double, 3> cp = c;
-      const double h = 1e-3;
-      cp[j] += h;
-      Vec3 d = (sigmoidPolynomialRGB(cp) - rgb) / float(h);
-      for (int i = 0; i < 3; ++i) J[i][j] = d[i];
+// What each whole nanometre of a reflectance lit by D65 adds to its linear RGB (Jakob & Hanika's
+// and Mitsuba's definition of a reflectance's colour), with its normalised wavelength.
+struct ReflectanceRGBWeights {
+  std::array<std::array<double, 3>, CieTable::kCount> rgb;
+  std::array<double, CieTable::kCount> x;
+  ReflectanceRGBWeights() {
+    const CieTable& t = cieTable();
+    for (int i = 0; i < CieTable::kCount; ++i) {
+      const float lambda = kLambdaMin + float(i);
+      const Vec3 c = xyzToLinearRGB(t.xyz[i] * (d65(lambda) / t.yIntegral));
+      rgb[i] = {c.x, c.y, c.z};
+      x[i] = normalisedLambda(lambda);
     }
+  }
+};
+
+const ReflectanceRGBWeights& reflectanceRGBWeights() {
+  static const ReflectanceRGBWeights weights;
+  return weights;
+}
+}  // namespace
+
+// Levenberg-Marquardt: the colour and its derivatives in the coefficients (ds/dt = (1 + t^2)^(-3/2)
+// / 2, times x^2, x, 1) come from one pass over the wavelengths.
+std::array<float, 3> fitSigmoidCoefficients(const Vec3& target, const std::array<float, 3>& start) {
+  const ReflectanceRGBWeights& w = reflectanceRGBWeights();
+  std::array<double, 3> c{start[0], start[1], start[2]};
+  for (int iter = 0; iter < 60; ++iter) {
+    double rgb[3] = {0, 0, 0}, J[3][3] = {};
+    for (int i = 0; i < CieTable::kCount; ++i) {
+      const double x = w.x[i], t = (c[0] * x + c[1]) * x + c[2];
+      const double q = 1.0 / std::sqrt(1.0 + t * t);
+      const double value = 0.5 + 0.5 * t * q, slope = 0.5 * q * q * q;
+      const double dc[3] = {slope * x * x, slope * x, slope};
+      for (int k = 0; k < 3; ++k) {
+        rgb[k] += w.rgb[i][k] * value;
+        for (int j = 0; j < 3; ++j) J[k][j] += w.rgb[i][k] * dc[j];
+      }
+    }
+    const double r[3] = {rgb[0] - target.x, rgb[1] - target.y, rgb[2] - target.z};
+    if (std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) < 1e-5) break;
     // Solve (J^T J + damping) dc = -J^T r.
     double A[3][3], g[3];
     for (int a = 0; a < 3; ++a) {
@@ -139,7 +153,7 @@ std::array<float, 3> fitSigmoidPolynomial(const Vec3& target) {
         A[a][b] = 0;
         for (int i = 0; i < 3; ++i) A[a][b] += J[i][a] * J[i][b];
       }
-      A[a][a] += 1e-6 + 1e-3 * A[a][a];
+      A[a][a] += 1e-9 + 1e-4 * A[a][a];
     }
     // Cramer's rule on the 3x3 system.
     auto det3 = [](double M[3][3]) {
@@ -157,7 +171,6 @@ std::array<float, 3> fitSigmoidPolynomial(const Vec3& target) {
   }
   return {float(c[0]), float(c[1]), float(c[2])};
 }
-}  // namespace
 
 Vec3 cieXYZ(float lambda) {
   // Linear interpolation in the 1 nm table: the analytic fit costs seven exponentials.
@@ -281,7 +294,7 @@ RGBSpectrum fitRGBSpectrum(const Vec3& rgbIn, bool unbounded) {
   if (rgb.x == rgb.y && rgb.y == rgb.z) return RGBSpectrum{{0.0f, 0.0f, 0.0f}, 2.0f * rgb.x};
   float m = std::max(rgb.x, std::max(rgb.y, rgb.z));
   float scale = unbounded ? 2.0f * m : 1.0f;
-  return RGBSpectrum{fitSigmoidPolynomial(rgb / scale), scale};
+  return RGBSpectrum{fitSigmoidCoefficients(rgb / scale), scale};
 }
 
 SpectralDistribution SpectralDistribution::fromRGB(const Vec3& rgbIn, bool unbounded) {

@@ -158,6 +158,9 @@ struct RGBSpectrum {
 // (fitted at half the largest component and scaled back, as pbrt-v4 does); otherwise rgb is clamped
 // to [0, 1]. A grey colour is exactly constant.
 RGBSpectrum fitRGBSpectrum(const Vec3& rgb, bool unbounded);
+// The coefficients of the sigmoid polynomial whose colour under D65 is `rgb` (each component in
+// [0, 1]), fitted from `start`: from a nearby colour's coefficients it takes a few steps.
+std::array<float, 3> fitSigmoidCoefficients(const Vec3& rgb, const std::array<float, 3>& start = {});
 
 // A spectral distribution given in a scene: constant, piecewise linear, or upsampled RGB.
 class SpectralDistribution {

@@ -1,5 +1,5 @@
 /*! plugin emitter envmap
-Radiance at infinity from a latitude-longitude image (+y up, as Mitsuba lays it out), importance-sampled by pixel luminance: OpenEXR, Radiance HDR, PNG, JPEG, TGA, BMP and the other formats `bitmap` reads. Pixel colours become spectra as combinations of three smooth basis spectra, one per primary.
+Radiance at infinity from a latitude-longitude image (+y up, as Mitsuba lays it out), importance-sampled by pixel luminance: OpenEXR, Radiance HDR, PNG, JPEG, TGA, BMP and the other formats `bitmap` reads. Each pixel's colour becomes a smooth spectrum times D65 (twice its largest component times the spectrum of the colour scaled to a largest component of 1/2), as Mitsuba 3 upsamples an environment map's pixels.
 Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled with their density in the map's own frame).
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the image file | same |
@@ -8,39 +8,27 @@ Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled
 */
 #include "emitters/envmap_emitter.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include "core/error.h"
+#include "core/illuminant.h"
+#include "core/rgb_spectrum_table.h"
 #include "io/image_file_reader.h"
 
 namespace columba {
 
-namespace {
-Vec3 basisRGB(const SpectralDistribution& s) {
-  Vec3 xyz(0, 0, 0);
-  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.0f) xyz += cieXYZ(l) * s.eval(l);
-  return xyzToLinearRGB(xyz / cieYIntegral());
-}
-
-std::array<Vec3, 3> invert3x3(const std::array<Vec3, 3>& columns) {
-  // Rows of the inverse are cross products of the columns divided by the determinant.
-  const Vec3 &a = columns[0], &b = columns[1], &c = columns[2];
-  float det = dot(a, cross(b, c));
-  if (std::abs(det) < 1e-8f) throw std::runtime_error("degenerate spectral basis");
-  return {cross(b, c) / det, cross(c, a) / det, cross(a, b) / det};
-}
-}  // namespace
-
 EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld, const SourceLocation& where)
-    : image_(std::move(image)), scale_(scale), toWorld_(toWorld) {
-  std::vector<float> weights(size_t(image_.width) * image_.height);
+    : width_(image.width), height_(image.height), scale_(scale), toWorld_(toWorld) {
+  std::vector<float> weights(size_t(width_) * height_);
   double total = 0.0;
-  for (int y = 0; y < image_.height; ++y) {
-    float sinTheta = std::sin(kPi * (y + 0.5f) / image_.height);
-    for (int x = 0; x < image_.width; ++x) {
-      const float* p = image_.pixel(x, y);
+  for (int y = 0; y < height_; ++y) {
+    float sinTheta = std::sin(kPi * (y + 0.5f) / height_);
+    for (int x = 0; x < width_; ++x) {
+      const float* p = image.pixel(x, y);
       // Named only when there is something to say: an environment map has millions of pixels.
       auto pixel = [&] { return "environment map pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")"; };
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
@@ -49,21 +37,19 @@ EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld,
       float weight = std::max(luminance, 0.0f) * sinTheta + 1e-8f;
       if (!std::isfinite(weight))
         throw InputError(where, pixel() + " is too bright: its luminance overflows single precision");
-      weights[size_t(y) * image_.width + x] = weight;
+      weights[size_t(y) * width_ + x] = weight;
       total += weight;
     }
   }
   if (total > 0.5 * double(std::numeric_limits<float>::max()))
     throw InputError(where, "the environment map's total luminance overflows single precision");
-  distribution_ = Distribution2D(weights, image_.width, image_.height);
-  std::array<Vec3, 3> columns;
-  for (int k = 0; k < 3; ++k) {
-    Vec3 primary(k == 0, k == 1, k == 2);
-    // Mitsuba's convention for emitted colours: the upsampled colour times D65.
-    basis_[k] = SpectralDistribution::fromRGB(primary, true).timesD65();
-    columns[k] = basisRGB(basis_[k]);
-  }
-  rgbToBasis_ = invert3x3(columns);
+  distribution_ = Distribution2D(weights, width_, height_);
+  // Each pixel's own spectrum, as Mitsuba gives each pixel (twice its largest component times the
+  // spectrum of the colour scaled to a largest component of 1/2, times D65), from the table.
+  spectra_.resize(size_t(width_) * height_);
+  tbb::parallel_for(size_t(0), spectra_.size(), [&](size_t i) {
+    spectra_[i] = tabulatedRGBSpectrum(Vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]));
+  });
 }
 
 Vec2 EnvmapEmitter::directionToUV(const Vec3& worldDir) const {
@@ -80,17 +66,12 @@ Vec3 EnvmapEmitter::uvToDirection(Vec2 uv) const {
 }
 
 Spectrum EnvmapEmitter::lookup(Vec2 uv, const Wavelengths& wl) const {
-  int x = std::min(int(uv.x * image_.width), image_.width - 1);
-  int y = std::min(int(uv.y * image_.height), image_.height - 1);
-  const float* p = image_.pixel(x, y);
-  Vec3 rgb(p[0], p[1], p[2]);
+  int x = std::min(int(uv.x * width_), width_ - 1);
+  int y = std::min(int(uv.y * height_), height_ - 1);
+  const RGBSpectrum& r = spectra_[size_t(y) * width_ + x];
   Spectrum s;
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    float v = 0;
-    for (int k = 0; k < 3; ++k) v += dot(rgbToBasis_[k], rgb) * basis_[k].eval(wl[i]);
-    s[i] = std::max(v, 0.0f) * scale_;
-  }
-  return s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = r.eval(wl[i]) * scale_;
+  return s * d65(wl);
 }
 
 std::optional<EmitterSample> EnvmapEmitter::sample(const Vec3&, Vec2 u, const Wavelengths& wl) const {

@@ -1,7 +1,7 @@
 #pragma once
 // `envmap`: radiance at infinity from a latitude-longitude EXR image (Mitsuba's layout: +y up),
 // importance-sampled by pixel luminance.
-#include <array>
+#include <vector>
 #include "core/distribution.h"
 #include "core/properties.h"
 #include "core/transform.h"
@@ -26,14 +26,12 @@ class EnvmapEmitter : public EmitterAtInfinity {
   Vec3 uvToDirection(Vec2 uv) const;
   Spectrum lookup(Vec2 uv, const Wavelengths& wl) const;
 
-  Image image_;
+  int width_, height_;
   float scale_;
   Transform toWorld_;
   Distribution2D distribution_;
-  // Pixel colours become spectra as combinations of three smooth basis spectra (one per
-  // primary), solved once: per-pixel fitting would be far too slow for large maps.
-  std::array<SpectralDistribution, 3> basis_;
-  std::array<Vec3, 3> rgbToBasis_;  // rows of the inverse of the basis' RGB matrix
+  // Each pixel's spectrum, without D65 (core/rgb_spectrum_table.h), in the image's order.
+  std::vector<RGBSpectrum> spectra_;
 };
 
 std::shared_ptr<Object> makeEnvmapEmitter(const Properties& props);
