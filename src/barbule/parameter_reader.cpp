@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "barbule/layer_stacks.h"
 #include "optics/dispersion.h"
 #include "optics/layered_film.h"
 
@@ -58,7 +59,7 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
   if (props.has("layers")) {
     try {
-      p.layersBelow = parseFilmLayers(props.getString("layers"));
+      p.layersBelow = parseFilmLayers(expandLayerStack(props.getString("layers")));
     } catch (const std::invalid_argument& e) {
       throw props.error("layers", e.what());
     }

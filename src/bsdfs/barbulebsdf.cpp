@@ -16,7 +16,7 @@ Mitsuba 3: not in Mitsuba 3.
 | film_cauchy_b | float | 0 | the Cauchy law's b (λ in nanometres) | not in Mitsuba 3 |
 | ext_ior | float or string | `air` (1.000277) | the surrounding medium's constant index | not in Mitsuba 3 |
 | melanin | spectrum or float | measured table | the melanin layer's intensity reflectance against wavelength, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
-| layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin` or a complex `N+Ki`; thickness in µm): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
+| layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin`, `melanin` (Stavenga et al. 2015's n and k) or a complex `N+Ki`; thickness in µm), or the name of a published stack: `parotia-occipital` (Stavenga et al. 2015): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
 */
 #include "bsdfs/barbulebsdf.h"
 

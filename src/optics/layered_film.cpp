@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/number_text.h"
+#include "optics/melanin_index.h"
 
 namespace columba {
 
@@ -51,11 +52,15 @@ std::vector<FilmLayer> parseFilmLayers(const std::string& text) {
         throw std::invalid_argument("layer '" + piece + "': an index N+Ki needs N > 0 and K >= 0");
       layer.n = RefractiveIndex::constant(c->first);
       layer.k = c->second;
+    } else if (index == "melanin") {
+      layer.n = RefractiveIndex::cauchy(MelaninIndex::kCauchyA, MelaninIndex::kCauchyB);
+      layer.k = MelaninIndex::kExtinction;
+      layer.kDecayNm = MelaninIndex::kExtinctionDecay;
     } else if (const std::optional<RefractiveIndex> n = iorFromName(index)) {
       layer.n = *n;
     } else {
       throw std::invalid_argument("layer '" + piece + "': unknown index '" + index +
-                                  "' (a number, a named index such as air, keratin, or N+Ki)");
+                                  "' (a number, a named index such as air, keratin, melanin, or N+Ki)");
     }
     layers.push_back(layer);
   }
@@ -71,7 +76,7 @@ LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float co
     stack.substrateIndex = nOutside;
     stack.layers.push_back({cortex(wl[k]), cortexThicknessUm});
     for (const FilmLayer& layer : below)
-      stack.layers.push_back({std::complex<double>(layer.n(wl[k]), layer.k), layer.thicknessUm});
+      stack.layers.push_back({std::complex<double>(layer.n(wl[k]), layer.extinction(wl[k])), layer.thicknessUm});
   }
 }
 

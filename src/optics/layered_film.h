@@ -6,6 +6,7 @@
 // it is the same film within rounding (FreeStandingFilm stays the fast path for that case).
 // docs/model.md, "Layered films".
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,16 +18,21 @@
 
 namespace columba {
 
-// A layer below the cortex: its index n(lambda) + i k and its thickness.
+// A layer below the cortex: its index n(lambda) + i k(lambda) and its thickness. The extinction
+// k(lambda) = k exp(-lambda / kDecayNm) falls with wavelength as melanin's does; kDecayNm = 0 keeps
+// it constant.
 struct FilmLayer {
   RefractiveIndex n;
-  float k = 0.0f;  // extinction coefficient, constant over wavelength
+  float k = 0.0f;
+  float kDecayNm = 0.0f;
   float thicknessUm = 0.0f;
+
+  float extinction(float lambdaNm) const { return kDecayNm > 0.0f ? k * std::exp(-lambdaNm / kDecayNm) : k; }
 };
 
 // "INDEX:THICKNESS, INDEX:THICKNESS, ...", the layers from the cortex down: INDEX a number, a named
-// index (air, water, ...), `keratin`, or a complex N+Ki (an absorbing layer, K >= 0); THICKNESS in
-// micrometres, not negative. Throws std::invalid_argument naming the piece that is wrong.
+// index (air, water, ...), `keratin`, `melanin` (optics/melanin_index.h) or a complex N+Ki (an
+// absorbing layer, K >= 0); THICKNESS in micrometres, not negative. Throws std::invalid_argument naming the piece that is wrong.
 std::vector<FilmLayer> parseFilmLayers(const std::string& text);
 
 class LayeredFilm {

@@ -967,6 +967,6 @@ TEST(BarbuleBSDF, ALayeredFilmWithAnEmptyLayerIsTheCortexAlone) {
     }
   EXPECT_GT(changed, 0);
   Properties bad = barbuleProperties("barbulebsdf");
-  setString(bad, "layers", "melanin:0.1");
+  setString(bad, "layers", "eumelanin:0.1");
   EXPECT_THROW(makeBarbuleBSDF(bad), InputError);
 }
