@@ -33,12 +33,14 @@
 #include "integrators/particle_tracer_integrator.h"
 #include "integrators/path_integrator.h"
 #include "integrators/volpath_integrator.h"
+#include "media/blend_phase.h"
 #include "media/const_volume.h"
 #include "media/grid_volume.h"
 #include "media/heterogeneous_medium.h"
 #include "media/hg_phase.h"
 #include "media/homogeneous_medium.h"
 #include "media/isotropic_phase.h"
+#include "media/rayleigh_phase.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
 #include "samplers/multijitter_sampler.h"
@@ -130,6 +132,8 @@ const PluginRegistry& builtinPlugins() {
     r.add("medium", "heterogeneous", makeHeterogeneousMedium);
     r.add("phase", "isotropic", makeIsotropicPhase);
     r.add("phase", "hg", makeHenyeyGreensteinPhase);
+    r.add("phase", "rayleigh", makeRayleighPhase);
+    r.add("phase", "blendphase", makeBlendPhase);
     r.add("volume", "constvolume", makeConstVolume);
     r.add("volume", "gridvolume", makeGridVolume);
     r.add("shape", "shapegroup", makeShapeGroup);

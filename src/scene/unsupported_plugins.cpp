@@ -6,7 +6,7 @@
 namespace columba {
 
 namespace {
-const char* kPhases = "of Mitsuba's phase functions, Columba has 'isotropic' and 'hg'";
+const char* kPhases = "of Mitsuba's phase functions, Columba has 'isotropic', 'hg', 'rayleigh' and 'blendphase'";
 const char* kTextures =
     "of Mitsuba's textures, Columba has 'bitmap', 'checkerboard', 'mesh_attribute' and 'rawconstant'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
@@ -23,10 +23,8 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"integrator", "stokes"}, kPolarisation},
       {{"integrator", "aov"}, "arbitrary output variables are not supported"},
       {{"integrator", "depth"}, "the depth integrator is not supported"},
-      {{"phase", "rayleigh"}, kPhases},
       {{"phase", "sggx"}, kPhases},
       {{"phase", "tabphase"}, kPhases},
-      {{"phase", "blendphase"}, kPhases},
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},

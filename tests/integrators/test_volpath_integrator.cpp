@@ -172,8 +172,8 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
     <float name="scale" value="-2"/></medium>)" + sphere)),
                  {"vol.xml:13", "scale must not be negative", "-2"});
   expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", R"(<medium type="homogeneous" id="fog">
-    <phase type="rayleigh"/></medium>)" + sphere)),
-                 {"vol.xml:13", "<phase type='rayleigh'>", "'isotropic' and 'hg'"});
+    <phase type="sggx"/></medium>)" + sphere)),
+                 {"vol.xml:13", "<phase type='sggx'>", "'isotropic', 'hg', 'rayleigh' and 'blendphase'"});
   // A grid file cut short, and one whose header declares far more voxels than it holds.
   std::string header = "VOL";
   header += char(3);

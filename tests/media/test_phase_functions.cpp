@@ -1,13 +1,15 @@
 // The phase functions: chi-square of their sampling against their densities, and closed forms
-// (normalisation, Henyey-Greenstein's mean cosine g, isotropy).
+// (normalisation, Henyey-Greenstein's mean cosine g, isotropy, Rayleigh's moments, a blend's mix).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/frame.h"
 #include "core/sampling.h"
+#include "media/blend_phase.h"
 #include "media/hg_phase.h"
 #include "media/isotropic_phase.h"
+#include "media/rayleigh_phase.h"
 #include "support/bsdf_test_support.h"
 #include "support/chi_square.h"
 #include "support/error_test_support.h"
@@ -100,4 +102,81 @@ TEST(PhaseFunctions, HenyeyGreensteinRefusesGOutsideTheOpenInterval) {
     message = e.what();
   }
   expectContains(message, {"scene.xml:7", "g must lie strictly between -1 and 1", "1.0"});
+}
+
+namespace {
+// `blendphase` read from its properties: `weight` (unless empty) and the nested phase functions.
+std::shared_ptr<Object> blendOf(const std::string& weight, std::vector<std::shared_ptr<Object>> nested) {
+  Properties props;
+  props.tag = "phase";
+  props.type = "blendphase";
+  props.location = SourceLocation{"scene.xml", 4};
+  if (!weight.empty()) props.setFloat("weight", std::stod(weight));
+  for (auto& object : nested) props.addChild({"", std::move(object), props.location, "phase", "?"});
+  return makeBlendPhase(props);
+}
+}  // namespace
+
+TEST(PhaseFunctions, RayleighSamplingMatchesItsDensitySlow) {
+  RayleighPhase phase;
+  const ChiSquareResult r = chiSquarePhase(phase, kObliqueWi);
+  EXPECT_GT(r.pValue, sidakThreshold(0.01, 5)) << r.message;
+}
+
+TEST(PhaseFunctions, RayleighHasItsClosedForms) {
+  RayleighPhase rayleigh;
+  // Normalised, symmetric (mean cosine 0) and <cos^2> = 3/8 (2/3 + 2/5) = 2/5.
+  EXPECT_NEAR(integrateOverCosTheta(rayleigh, kObliqueWi, [](double) { return 1.0; }), 1.0, 1e-6);
+  EXPECT_NEAR(integrateOverCosTheta(rayleigh, kObliqueWi, [](double c) { return c; }), 0.0, 1e-6);
+  EXPECT_NEAR(integrateOverCosTheta(rayleigh, kObliqueWi, [](double c) { return c * c; }), 0.4, 1e-6);
+  // Forward and backward 3 / (8 pi), sideways half of that.
+  const Vec3 side = normalize(cross(kObliqueWi, Vec3(0, 0, 1)));
+  EXPECT_NEAR(rayleigh.eval(kObliqueWi, -kObliqueWi), 3.0f / (8.0f * kPi), 1e-6f);
+  EXPECT_NEAR(rayleigh.eval(kObliqueWi, kObliqueWi), 3.0f / (8.0f * kPi), 1e-6f);
+  EXPECT_NEAR(rayleigh.eval(kObliqueWi, side), 3.0f / (16.0f * kPi), 1e-6f);
+  // The sampled cosine inverts the distribution (3 c + c^3 + 4) / 8: u = 1/2 gives c = 0.
+  const Frame frame = Frame::fromNormal(-kObliqueWi);
+  for (float u : {0.0f, 0.1f, 0.5f, 0.93f, 0.999f}) {
+    auto s = rayleigh.sample(kObliqueWi, Vec2(u, 0.3f));
+    ASSERT_TRUE(s);
+    const float c = frame.toLocal(s->wo).z;
+    EXPECT_NEAR((3.0f * c + c * c * c + 4.0f) / 8.0f, u, 2e-5f) << u;
+    EXPECT_NEAR(s->pdf, rayleigh.eval(kObliqueWi, s->wo), 1e-5f);
+  }
+}
+
+TEST(PhaseFunctions, ABlendIsItsComponentsMixedSlow) {
+  auto blend = std::dynamic_pointer_cast<const PhaseFunction>(
+      blendOf("0.3", {std::make_shared<IsotropicPhase>(), std::make_shared<HenyeyGreensteinPhase>(0.7f)}));
+  ASSERT_TRUE(blend);
+  IsotropicPhase isotropic;
+  HenyeyGreensteinPhase hg(0.7f);
+  PCG32 rng(5);
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 wo = sampleUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
+    EXPECT_NEAR(blend->eval(kObliqueWi, wo), 0.7f * isotropic.eval(kObliqueWi, wo) + 0.3f * hg.eval(kObliqueWi, wo),
+                1e-6f);
+    EXPECT_NEAR(blend->pdf(kObliqueWi, wo), blend->eval(kObliqueWi, wo), 1e-6f);
+  }
+  // Its mean cosine is the blend of the components' (0 and g).
+  EXPECT_NEAR(integrateOverCosTheta(*blend, kObliqueWi, [](double c) { return c; }), 0.3 * 0.7, 1e-3);
+  const ChiSquareResult r = chiSquarePhase(*blend, kObliqueWi, 40);
+  EXPECT_GT(r.pValue, sidakThreshold(0.01, 5)) << r.message;
+}
+
+TEST(PhaseFunctions, ABlendNeedsTwoPhaseFunctionsAndAWeightWithinZeroAndOne) {
+  std::string message;
+  try {
+    blendOf("", {std::make_shared<IsotropicPhase>()});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  expectContains(message, {"scene.xml:4", "two nested phase functions, not 1"});
+  message.clear();
+  try {
+    blendOf("1.5", {std::make_shared<IsotropicPhase>(), std::make_shared<RayleighPhase>()});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  expectContains(message, {"weight", "must lie in [0, 1]", "1.5"});
 }
