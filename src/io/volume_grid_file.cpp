@@ -42,6 +42,10 @@ VolumeGrid parseVolumeGrid(const std::string& bytes, const std::string& name) {
   grid.yres = readInt32(bytes, 12);
   grid.zres = readInt32(bytes, 16);
   grid.channels = readInt32(bytes, 20);
+  for (int axis = 0; axis < 3; ++axis) {
+    std::memcpy(&grid.boundsMin[axis], bytes.data() + 24 + 4 * axis, 4);  // x86-64 is little endian
+    std::memcpy(&grid.boundsMax[axis], bytes.data() + 36 + 4 * axis, 4);
+  }
   if (grid.xres < 1 || grid.yres < 1 || grid.zres < 1)
     throw InputError({}, name + ": the resolution " + std::to_string(grid.xres) + " x " + std::to_string(grid.yres) +
                              " x " + std::to_string(grid.zres) + " has an axis below 1");

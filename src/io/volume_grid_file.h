@@ -5,6 +5,7 @@
 // one Mitsuba 3 reads); int32 resolutions x, y, z; int32 channel count; six floats, a bounding box
 // (min x, y, z, max x, y, z) that Mitsuba 3's plug-ins ignore; then x * y * z * channels float32
 // values, channels fastest, then x, then y, then z.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@ namespace columba {
 
 struct VolumeGrid {
   int xres = 0, yres = 0, zres = 0, channels = 0;
+  // The box the header says the grid spans (Mitsuba's use_grid_bbox places it there); unchecked.
+  std::array<float, 3> boundsMin{}, boundsMax{};
   std::vector<float> values;  // (((z * yres) + y) * xres + x) * channels + channel
 
   float at(int x, int y, int z, int channel = 0) const {

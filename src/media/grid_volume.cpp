@@ -1,23 +1,30 @@
 /*! plugin volume gridvolume
-Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that is upsampled to a smooth spectrum per voxel, unbounded as Mitsuba does), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; outside the centres the grid's edge values hold (clamped). A medium's majorant is the largest value of the grid.
-Mitsuba 3: `wrap_mode` other than `clamp`, `use_grid_bbox` true, `raw` true with three channels and `max_value` are refused; where `to_world` rotates, the volume is the rotated cube, not the box around it.
+Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that becomes a smooth spectrum per voxel, twice its largest component times the spectrum of the colour scaled to 1/2 there, as Mitsuba upsamples one), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; within half a voxel of a face the neighbour is the face's own voxel (`clamp`, and `mirror`, which reflects onto the same voxel) or the opposite face's (`repeat`). Outside the cube the volume is empty. A medium's majorant is the largest value of the grid.
+Mitsuba 3: `raw` true with three channels is refused; where `to_world` rotates, the volume is the rotated cube, not the box around it.
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | — | the `.vol` file (float32 values; 1 or 3 channels) | same |
 | filter_type | string | `trilinear` | `trilinear` or `nearest` (the value of the voxel containing the point) | same |
 | to_world | transform | identity | places the unit cube [0, 1]³ in the scene | same |
-| use_grid_bbox | boolean | false | must be false: the file's bounding box is not used | `true` places the grid by the file's bounding box |
+| use_grid_bbox | boolean | false | true: the unit cube is first mapped onto the bounding box the file's header gives, then placed by `to_world` | same |
+| wrap_mode | string | `clamp` | `clamp`, `repeat` or `mirror`: the neighbour of a voxel on a face, for the trilinear filter | same |
+| max_value | float | the grid's largest value | a bound on the values, the majorant; one below the grid's largest value is raised to it, with a warning | same, taken as given |
 | raw | boolean | false | must be false for three channels (they are always upsampled) | `true` keeps the three channels as given |
-| wrap_mode | string | `clamp` | must be `clamp` | also `repeat` and `mirror` |
 */
 #include "media/grid_volume.h"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <stdexcept>
 
+#include "core/error.h"
+#include "core/rgb_spectrum_table.h"
+
 namespace columba {
 
-GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, const Transform& toWorld)
-    : Volume(toWorld), xres_(grid.xres), yres_(grid.yres), zres_(grid.zres), filter_(filter) {
+GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const Transform& toWorld)
+    : Volume(toWorld), xres_(grid.xres), yres_(grid.yres), zres_(grid.zres), filter_(filter), wrap_(wrap) {
   // Extinctions and albedos are not negative; the first negative value is named.
   for (size_t i = 0; i < grid.values.size(); ++i)
     if (grid.values[i] < 0.0f) {
@@ -31,12 +38,13 @@ GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, const Transform& t
     values_ = grid.values;
     for (float v : values_) max_ = std::max(max_, v);
   } else if (grid.channels == 3) {
-    spectra_.reserve(grid.values.size() / 3);
-    for (size_t i = 0; i < grid.values.size(); i += 3) {
-      spectra_.push_back(fitRGBSpectrum(Vec3(grid.values[i], grid.values[i + 1], grid.values[i + 2]), true));
-      // The interpolated shape stays within [0, 1], so the largest scale bounds every value.
-      max_ = std::max(max_, spectra_.back().scale);
-    }
+    // Each voxel's spectrum from the table of fits, as an environment map's pixels get theirs.
+    spectra_.resize(grid.values.size() / 3);
+    tbb::parallel_for(size_t(0), spectra_.size(), [&](size_t i) {
+      spectra_[i] = tabulatedRGBSpectrum(Vec3(grid.values[3 * i], grid.values[3 * i + 1], grid.values[3 * i + 2]));
+    });
+    // The interpolated shape stays within [0, 1], so the largest scale bounds every value.
+    for (const RGBSpectrum& s : spectra_) max_ = std::max(max_, s.scale);
   } else {
     throw std::invalid_argument("the grid has " + std::to_string(grid.channels) +
                                 " channels; a volume takes 1 (a value) or 3 (an RGB colour)");
@@ -62,6 +70,15 @@ Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
   int lo[3], hi[3];
   float w[3];
   for (int a = 0; a < 3; ++a) {
+    if (wrap_ == Wrap::Repeat) {
+      // Half a voxel from a face, the neighbour is the opposite face's voxel.
+      const float x = p[a] * float(res[a]) - 0.5f, below = std::floor(x);
+      const int i = int(below);
+      lo[a] = (i % res[a] + res[a]) % res[a];
+      hi[a] = (lo[a] + 1) % res[a];
+      w[a] = x - below;
+      continue;
+    }
     const float x = std::clamp(p[a] * float(res[a]) - 0.5f, 0.0f, float(res[a] - 1));
     lo[a] = std::min(int(x), res[a] - 1);
     hi[a] = std::min(lo[a] + 1, res[a] - 1);
@@ -98,9 +115,8 @@ std::shared_ptr<Object> makeGridVolume(const Properties& props) {
   if (filterName != "trilinear" && filterName != "nearest")
     throw props.error("filter_type", "filter_type must be 'trilinear' or 'nearest', not '" + filterName + "'");
   const std::string wrap = props.getString("wrap_mode", "clamp");
-  if (wrap != "clamp") throw props.error("wrap_mode", "wrap_mode '" + wrap + "' is not supported; only 'clamp' is");
-  if (props.getBool("use_grid_bbox", false))
-    throw props.error("use_grid_bbox", "use_grid_bbox is not supported: place the grid with to_world");
+  if (wrap != "clamp" && wrap != "repeat" && wrap != "mirror")
+    throw props.error("wrap_mode", "wrap_mode must be 'clamp', 'repeat' or 'mirror', not '" + wrap + "'");
   const bool raw = props.getBool("raw", false);
   const std::string path = props.getPath("filename");
   VolumeGrid grid;
@@ -111,13 +127,41 @@ std::shared_ptr<Object> makeGridVolume(const Properties& props) {
   }
   if (raw && grid.channels == 3)
     throw props.error("raw", path + ": raw three-channel grids are not supported (a spectral renderer upsamples them)");
+  Transform toWorld = props.getTransform("to_world");
+  if (props.getBool("use_grid_bbox", false)) {
+    // The unit cube is mapped onto the header's box before to_world places it, as Mitsuba does.
+    Vec3 lo, extent;
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = grid.boundsMin[a];
+      extent[a] = grid.boundsMax[a] - grid.boundsMin[a];
+      if (!std::isfinite(lo[a]) || !std::isfinite(extent[a]) || !(extent[a] > 0.0f))
+        throw props.error("use_grid_bbox", fmt::format("{}: the header's bounding box ({}, {}, {}) to ({}, {}, {}) is "
+                                                       "empty or not finite",
+                                                       path, grid.boundsMin[0], grid.boundsMin[1], grid.boundsMin[2],
+                                                       grid.boundsMax[0], grid.boundsMax[1], grid.boundsMax[2]));
+    }
+    toWorld = toWorld * Transform::translate(lo) * Transform::scale(extent);
+  }
+  std::shared_ptr<GridVolume> volume;
   try {
-    return std::make_shared<GridVolume>(
+    volume = std::make_shared<GridVolume>(
         grid, filterName == "nearest" ? GridVolume::Filter::Nearest : GridVolume::Filter::Trilinear,
-        props.getTransform("to_world"));
+        wrap == "repeat" ? GridVolume::Wrap::Repeat : GridVolume::Wrap::Clamp, toWorld);
   } catch (const std::invalid_argument& e) {
     throw props.error("filename", path + ": " + e.what());
   }
+  if (props.has("max_value")) {
+    const float bound = props.getFloat("max_value");
+    if (!(bound >= 0.0f) || !std::isfinite(bound))
+      throw props.error("max_value", "max_value must be a finite number, not negative, not " + std::to_string(bound));
+    if (bound < volume->maxValue())
+      warn(props.locationOf("max_value"),
+           fmt::format("max_value {:g} is below the grid's largest value {:g}, which is used as the majorant instead "
+                       "(a smaller one would bias the tracking)",
+                       bound, volume->maxValue()));
+    volume->raiseMaxValue(bound);
+  }
+  return volume;
 }
 
 }  // namespace columba

@@ -1,6 +1,7 @@
 #pragma once
 // `gridvolume`: values on a grid of voxels read from a Mitsuba `.vol` file, interpolated
 // trilinearly (or taken from the nearest voxel) within the unit cube that `to_world` places.
+#include <algorithm>
 #include <vector>
 #include "io/volume_grid_file.h"
 #include "media/volume.h"
@@ -10,10 +11,16 @@ namespace columba {
 class GridVolume final : public Volume {
  public:
   enum class Filter { Trilinear, Nearest };
+  // How the trilinear filter finds the neighbours of the voxels on the cube's faces: the face's
+  // own (clamp; Mitsuba's mirror gives the same there) or the opposite face's (repeat).
+  enum class Wrap { Clamp, Repeat };
   // A grid of one channel (a value at every wavelength) or three (linear sRGB, upsampled to a
   // spectrum per voxel, unbounded). Throws std::invalid_argument for another channel count.
-  GridVolume(const VolumeGrid& grid, Filter filter, const Transform& toWorld);
+  GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const Transform& toWorld);
   float maxValue() const override { return max_; }
+  // A bound given in the scene (Mitsuba's max_value) replaces the grid's largest value as the
+  // majorant where it is larger: a smaller one would bias the tracking.
+  void raiseMaxValue(float bound) { max_ = std::max(max_, bound); }
 
  protected:
   Spectrum evalLocal(const Vec3& p, const Wavelengths& wl) const override;
@@ -22,6 +29,7 @@ class GridVolume final : public Volume {
   Spectrum voxel(int x, int y, int z, const Wavelengths& wl) const;
   int xres_, yres_, zres_;
   Filter filter_;
+  Wrap wrap_;
   std::vector<float> values_;         // one channel: a value per voxel
   std::vector<RGBSpectrum> spectra_;  // three channels: a spectrum per voxel
   float max_ = 0.0f;

@@ -20,7 +20,7 @@ std::shared_ptr<GridVolume> ramp(int n, float slope) {
   grid.xres = n;
   grid.yres = grid.zres = grid.channels = 1;
   for (int i = 0; i < n; ++i) grid.values.push_back(slope * (float(i) + 0.5f) / float(n));
-  return std::make_shared<GridVolume>(grid, GridVolume::Filter::Trilinear, Transform());
+  return std::make_shared<GridVolume>(grid, GridVolume::Filter::Trilinear, GridVolume::Wrap::Clamp, Transform());
 }
 
 // The optical depth of that ramp from x = 0 to x = 1, times `scale`: linear between the centres,
@@ -75,7 +75,7 @@ TEST(RatioTracking, IsUnbiasedInEveryLaneWhereExtinctionVariesWithTheWavelength)
   grid.channels = 3;
   for (int i = 0; i < n; ++i)
     for (float c : {2.0f, 0.5f, 1.0f}) grid.values.push_back(c * (float(i) + 0.5f) / float(n));
-  auto sigmaT = std::make_shared<GridVolume>(grid, GridVolume::Filter::Trilinear, Transform());
+  auto sigmaT = std::make_shared<GridVolume>(grid, GridVolume::Filter::Trilinear, GridVolume::Wrap::Clamp, Transform());
   HeterogeneousMedium medium(sigmaT, sigmaT, 1.0f, std::make_shared<IsotropicPhase>());
   const Wavelengths wl = Wavelengths::fixed({450, 520, 610, 680});
   const Estimate e = meanRatioTracking(medium, wl, 100000);
@@ -95,7 +95,7 @@ TEST(RatioTracking, AHugeMajorantEndsTheWalkInsteadOfHanging) {
   grid.xres = 4;
   grid.yres = grid.zres = grid.channels = 1;
   grid.values = {0.1f, 0.1f, 0.1f, 1e30f};
-  auto sigmaT = std::make_shared<GridVolume>(grid, GridVolume::Filter::Nearest, Transform());
+  auto sigmaT = std::make_shared<GridVolume>(grid, GridVolume::Filter::Nearest, GridVolume::Wrap::Clamp, Transform());
   HeterogeneousMedium medium(sigmaT, sigmaT, 1.0f, std::make_shared<IsotropicPhase>());
   PCG32 rng(3);
   // Through the thin voxels only (x from 0 to 0.7): transmittance about exp(-0.07), but every
