@@ -176,7 +176,8 @@ def multilayer(theta_deg, wavelength, layers, n_outside=1.000277, substrate_ior=
 
     theta_deg: angle of incidence (degrees) in the outer medium; wavelength in nm; both broadcast.
     layers: a list of (index, thickness_um) from the outer side; an index is a complex number
-    n + ik (k > 0 absorbs, e.g. melanin), "keratin", a named index, a number or Cauchy's (a, b).
+    n + ik (k > 0 absorbs), "keratin", "melanin" (Stavenga et al. 2015's n(lambda) + i k(lambda)),
+    a named index, a number or Cauchy's (a, b).
     substrate_ior: the medium behind the stack (complex allowed). Returns a dict of float64 arrays
     Rs, Rp, R, Ts, Tp, T and A (absorbed, 1 - R - T).
     """

@@ -23,6 +23,7 @@
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
 #include "optics/melanin.h"
+#include "optics/melanin_index.h"
 #include "optics/multilayer.h"
 #include "optics/thin_film.h"
 
@@ -404,6 +405,10 @@ std::function<std::complex<double>(double)> complexIndexFrom(const py::object& v
     const std::complex<double> n = value.cast<std::complex<double>>();
     return [n](double) { return n; };
   }
+  if (py::isinstance<py::str>(value) && value.cast<std::string>() == "melanin")
+    return [](double lambda) {
+      return std::complex<double>(MelaninIndex::n(float(lambda)), MelaninIndex::k(float(lambda)));
+    };
   const RefractiveIndex n = indexFrom(value, what);
   return [n](double lambda) { return std::complex<double>(n(float(lambda)), 0.0); };
 }
