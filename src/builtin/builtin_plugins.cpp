@@ -41,6 +41,7 @@
 #include "media/homogeneous_medium.h"
 #include "media/isotropic_phase.h"
 #include "media/rayleigh_phase.h"
+#include "media/tabulated_phase.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/low_discrepancy_sampler.h"
 #include "samplers/multijitter_sampler.h"
@@ -134,6 +135,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("phase", "hg", makeHenyeyGreensteinPhase);
     r.add("phase", "rayleigh", makeRayleighPhase);
     r.add("phase", "blendphase", makeBlendPhase);
+    r.add("phase", "tabphase", makeTabulatedPhase);
     r.add("volume", "constvolume", makeConstVolume);
     r.add("volume", "gridvolume", makeGridVolume);
     r.add("shape", "shapegroup", makeShapeGroup);

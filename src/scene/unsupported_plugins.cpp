@@ -6,7 +6,8 @@
 namespace columba {
 
 namespace {
-const char* kPhases = "of Mitsuba's phase functions, Columba has 'isotropic', 'hg', 'rayleigh' and 'blendphase'";
+const char* kPhases =
+    "of Mitsuba's phase functions, Columba has 'isotropic', 'hg', 'rayleigh', 'blendphase' and 'tabphase'";
 const char* kTextures =
     "of Mitsuba's textures, Columba has 'bitmap', 'checkerboard', 'mesh_attribute' and 'rawconstant'";
 const char* kDifferentiable = "differentiable rendering is not supported; use 'path'";
@@ -24,7 +25,6 @@ std::optional<std::string> unsupportedMitsubaPlugin(const std::string& tag, cons
       {{"integrator", "aov"}, "arbitrary output variables are not supported"},
       {{"integrator", "depth"}, "the depth integrator is not supported"},
       {{"phase", "sggx"}, kPhases},
-      {{"phase", "tabphase"}, kPhases},
       {{"texture", "volume"}, kTextures},
       {{"bsdf", "hair"}, "the hair BSDF is not supported"},
       {{"bsdf", "measured"}, "measured (RGL) BSDFs are not supported"},

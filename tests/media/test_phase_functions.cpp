@@ -10,6 +10,7 @@
 #include "media/hg_phase.h"
 #include "media/isotropic_phase.h"
 #include "media/rayleigh_phase.h"
+#include "media/tabulated_phase.h"
 #include "support/bsdf_test_support.h"
 #include "support/chi_square.h"
 #include "support/error_test_support.h"
@@ -179,4 +180,52 @@ TEST(PhaseFunctions, ABlendNeedsTwoPhaseFunctionsAndAWeightWithinZeroAndOne) {
     message = e.what();
   }
   expectContains(message, {"weight", "must lie in [0, 1]", "1.5"});
+}
+
+TEST(PhaseFunctions, ATableOfValuesIsAPiecewiseLinearDensitySlow) {
+  // Values 0, 1 over cos theta in [-1, 1]: density (1 + c) / 2 in c, (1 + c) / (4 pi) per
+  // steradian, mean cosine 1/3.
+  TabulatedPhase ramp({0.0f, 1.0f});
+  EXPECT_NEAR(ramp.eval(kObliqueWi, -kObliqueWi), 1.0f / (2.0f * kPi), 1e-6f);
+  EXPECT_NEAR(ramp.eval(kObliqueWi, kObliqueWi), 0.0f, 1e-6f);
+  EXPECT_NEAR(integrateOverCosTheta(ramp, kObliqueWi, [](double) { return 1.0; }), 1.0, 1e-5);
+  EXPECT_NEAR(integrateOverCosTheta(ramp, kObliqueWi, [](double c) { return c; }), 1.0 / 3.0, 1e-5);
+  // A flat table is isotropic whatever its scale.
+  TabulatedPhase flat({3.0f, 3.0f, 3.0f});
+  EXPECT_NEAR(flat.eval(kObliqueWi, Vec3(0, 0, 1)), 1.0f / (4.0f * kPi), 1e-7f);
+  // An uneven table with a zero segment: sampling against the density, and the sampled cosine
+  // inverts the ramp's distribution ((1 + c)^2 / 4 = u).
+  TabulatedPhase uneven({0.2f, 0.0f, 0.0f, 1.5f, 0.4f, 3.0f, 0.7f});
+  const ChiSquareResult r = chiSquarePhase(uneven, kObliqueWi, 40);
+  EXPECT_GT(r.pValue, sidakThreshold(0.01, 5)) << r.message;
+  EXPECT_NEAR(integrateOverCosTheta(uneven, kObliqueWi, [](double) { return 1.0; }), 1.0, 1e-5);
+  const Frame frame = Frame::fromNormal(-kObliqueWi);
+  for (float u : {0.01f, 0.25f, 0.5f, 0.9f}) {
+    auto s = ramp.sample(kObliqueWi, Vec2(u, 0.7f));
+    ASSERT_TRUE(s);
+    const float c = frame.toLocal(s->wo).z;
+    EXPECT_NEAR((1.0f + c) * (1.0f + c) / 4.0f, u, 1e-5f) << u;
+    EXPECT_NEAR(s->pdf, ramp.eval(kObliqueWi, s->wo), 1e-6f);
+  }
+}
+
+TEST(PhaseFunctions, ATableNeedsTwoValuesNotNegativeNotAllZero) {
+  auto message = [](const std::string& values) {
+    Properties props;
+    props.tag = "phase";
+    props.type = "tabphase";
+    props.location = SourceLocation{"scene.xml", 9};
+    props.setString("values", values);
+    try {
+      makeTabulatedPhase(props);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expectContains(message("1"), {"scene.xml:9", "at least two values"});
+  expectContains(message("1, -2, 3"), {"scene.xml:9", "'-2' is not a number at least 0", "value 2"});
+  expectContains(message("1, x"), {"'x'", "value 2"});
+  expectContains(message("0 0 0"), {"all zero"});
+  EXPECT_EQ(message("0.5, 1 2"), "");
 }
