@@ -1,6 +1,7 @@
 #include "core/rgb_spectrum_table.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <vector>
@@ -22,21 +23,26 @@ struct RatioTable {
   RatioTable() {
     // Each channel's table is walked from grey (a = b = 1, all coefficients zero) outwards, every
     // fit starting from a neighbour's coefficients: saturated colours are far from grey's start.
-    tbb::parallel_for(0, 3, [&](int channel) {
-      auto colour = [channel](int j, int k) {
-        Vec3 c;
-        c[channel] = 0.5f;
-        c[(channel + 1) % 3] = 0.5f * float(j) / float(kNodes - 1);
-        c[(channel + 2) % 3] = 0.5f * float(k) / float(kNodes - 1);
-        return c;
-      };
-      for (int k = kNodes - 1; k >= 0; --k) {
-        std::array<float, 3> start = k == kNodes - 1 ? std::array<float, 3>{} : at(channel, kNodes - 1, k + 1);
-        for (int j = kNodes - 1; j >= 0; --j) {
-          start = fitSigmoidCoefficients(colour(j, k), start);
-          at(channel, j, k) = start;
+    // The first lookup may come from inside a parallel loop (an environment map's pixels): isolated,
+    // this thread runs only the three channels' tasks while it builds the table, never one of that
+    // loop's, which would look the table up again while its construction is under way.
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(0, 3, [&](int channel) {
+        auto colour = [channel](int j, int k) {
+          Vec3 c;
+          c[channel] = 0.5f;
+          c[(channel + 1) % 3] = 0.5f * float(j) / float(kNodes - 1);
+          c[(channel + 2) % 3] = 0.5f * float(k) / float(kNodes - 1);
+          return c;
+        };
+        for (int k = kNodes - 1; k >= 0; --k) {
+          std::array<float, 3> start = k == kNodes - 1 ? std::array<float, 3>{} : at(channel, kNodes - 1, k + 1);
+          for (int j = kNodes - 1; j >= 0; --j) {
+            start = fitSigmoidCoefficients(colour(j, k), start);
+            at(channel, j, k) = start;
+          }
         }
-      }
+      });
     });
   }
 };
