@@ -21,8 +21,9 @@ struct RatioTable {
   }
 
   RatioTable() {
-    // Each channel's table is walked from grey (a = b = 1, all coefficients zero) outwards, every
-    // fit starting from a neighbour's coefficients: saturated colours are far from grey's start.
+    // Each channel's table is walked from grey (a = b = 1, fitted from all coefficients zero)
+    // outwards, every fit starting from a neighbour's coefficients: saturated colours are far from
+    // grey's.
     // The first lookup may come from inside a parallel loop (an environment map's pixels): isolated,
     // this thread runs only the three channels' tasks while it builds the table, never one of that
     // loop's, which would look the table up again while its construction is under way.

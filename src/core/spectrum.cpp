@@ -125,8 +125,10 @@ const ReflectanceRGBWeights& reflectanceRGBWeights() {
 }
 }  // namespace
 
-// Levenberg-Marquardt: the colour and its derivatives in the coefficients (ds/dt = (1 + t^2)^(-3/2)
-// / 2, times x^2, x, 1) come from one pass over the wavelengths.
+// Gauss-Newton steps with a fixed Levenberg damping, each clamped, for at most 60 iterations (every
+// node of the table of fits converges: tests/core/test_rgb_spectrum_table.cpp). The colour and its
+// derivatives in the coefficients (ds/dt = (1 + t^2)^(-3/2) / 2, times x^2, x, 1) come from one
+// pass over the wavelengths.
 std::array<float, 3> fitSigmoidCoefficients(const Vec3& target, const std::array<float, 3>& start) {
   const ReflectanceRGBWeights& w = reflectanceRGBWeights();
   std::array<double, 3> c{start[0], start[1], start[2]};

@@ -10,6 +10,7 @@ Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -33,6 +34,9 @@ EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld,
       auto pixel = [&] { return "environment map pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")"; };
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         throw InputError(where, pixel() + " is not finite");
+      // Its spectrum is twice its largest component times a shape, which must stay finite.
+      if (std::max({p[0], p[1], p[2]}) > 0.25f * std::numeric_limits<float>::max())
+        throw InputError(where, pixel() + " is too bright: twice its largest component overflows single precision");
       float luminance = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
       float weight = std::max(luminance, 0.0f) * sinTheta + 1e-8f;
       if (!std::isfinite(weight))

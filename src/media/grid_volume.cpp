@@ -16,6 +16,7 @@ Mitsuba 3: `raw` true with three channels is refused; where `to_world` rotates, 
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -25,14 +26,17 @@ namespace columba {
 
 GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const Transform& toWorld)
     : Volume(toWorld), xres_(grid.xres), yres_(grid.yres), zres_(grid.zres), filter_(filter), wrap_(wrap) {
-  // Extinctions and albedos are not negative; the first negative value is named.
+  // Extinctions and albedos are not negative, and a colour's spectrum is twice its largest
+  // component, which must stay finite; the first value out of range is named.
+  constexpr float kLargest = 0.25f * std::numeric_limits<float>::max();
   for (size_t i = 0; i < grid.values.size(); ++i)
-    if (grid.values[i] < 0.0f) {
+    if (grid.values[i] < 0.0f || grid.values[i] > kLargest) {
       const size_t voxel = i / size_t(grid.channels), x = voxel % size_t(xres_),
                    y = voxel / size_t(xres_) % size_t(yres_), z = voxel / size_t(xres_) / size_t(yres_);
       throw std::invalid_argument("the value at x " + std::to_string(x) + ", y " + std::to_string(y) + ", z " +
                                   std::to_string(z) + ", channel " + std::to_string(i % size_t(grid.channels)) +
-                                  " is " + std::to_string(grid.values[i]) + "; a volume's values must not be negative");
+                                  " is " + fmt::format("{:g}", grid.values[i]) +
+                                  "; a volume's values must lie in [0, " + fmt::format("{:g}", kLargest) + "]");
     }
   if (grid.channels == 1) {
     values_ = grid.values;
@@ -59,11 +63,23 @@ Spectrum GridVolume::voxel(int x, int y, int z, const Wavelengths& wl) const {
   return s;
 }
 
+namespace {
+// x taken into [0, n) by whole periods n, without converting a large x to int.
+float wrapped(float x, int n) {
+  const float period = float(n), r = x - period * std::floor(x / period);
+  return r < period ? r : 0.0f;
+}
+}  // namespace
+
 Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
   const int res[3] = {xres_, yres_, zres_};
   if (filter_ == Filter::Nearest) {
     int cell[3];
-    for (int a = 0; a < 3; ++a) cell[a] = std::clamp(int(std::floor(p[a] * float(res[a]))), 0, res[a] - 1);
+    for (int a = 0; a < 3; ++a) {
+      const float x = p[a] * float(res[a]);
+      cell[a] = wrap_ == Wrap::Repeat ? std::min(int(wrapped(x, res[a])), res[a] - 1)
+                                      : int(std::clamp(std::floor(x), 0.0f, float(res[a] - 1)));
+    }
     return voxel(cell[0], cell[1], cell[2], wl);
   }
   // Voxel values sit at the voxels' centres: the point in units of voxels, half a voxel back.
@@ -71,12 +87,11 @@ Spectrum GridVolume::evalLocal(const Vec3& p, const Wavelengths& wl) const {
   float w[3];
   for (int a = 0; a < 3; ++a) {
     if (wrap_ == Wrap::Repeat) {
-      // Half a voxel from a face, the neighbour is the opposite face's voxel.
-      const float x = p[a] * float(res[a]) - 0.5f, below = std::floor(x);
-      const int i = int(below);
-      lo[a] = (i % res[a] + res[a]) % res[a];
+      // Half a voxel from a face, the neighbour is the opposite face's voxel; the grid tiles space.
+      const float x = wrapped(p[a] * float(res[a]) - 0.5f, res[a]);
+      lo[a] = std::min(int(x), res[a] - 1);
       hi[a] = (lo[a] + 1) % res[a];
-      w[a] = x - below;
+      w[a] = x - float(lo[a]);
       continue;
     }
     const float x = std::clamp(p[a] * float(res[a]) - 0.5f, 0.0f, float(res[a] - 1));
@@ -134,7 +149,7 @@ std::shared_ptr<Object> makeGridVolume(const Properties& props) {
     for (int a = 0; a < 3; ++a) {
       lo[a] = grid.boundsMin[a];
       extent[a] = grid.boundsMax[a] - grid.boundsMin[a];
-      if (!std::isfinite(lo[a]) || !std::isfinite(extent[a]) || !(extent[a] > 0.0f))
+      if (!std::isfinite(lo[a]) || !std::isfinite(extent[a]) || !(extent[a] >= std::numeric_limits<float>::min()))
         throw props.error("use_grid_bbox", fmt::format("{}: the header's bounding box ({}, {}, {}) to ({}, {}, {}) is "
                                                        "empty or not finite",
                                                        path, grid.boundsMin[0], grid.boundsMin[1], grid.boundsMin[2],
@@ -154,6 +169,11 @@ std::shared_ptr<Object> makeGridVolume(const Properties& props) {
     const float bound = props.getFloat("max_value");
     if (!(bound >= 0.0f) || !std::isfinite(bound))
       throw props.error("max_value", "max_value must be a finite number, not negative, not " + std::to_string(bound));
+    if (bound > 1000.0f * volume->maxValue())
+      warn(props.locationOf("max_value"),
+           fmt::format("max_value {:g} is over 1000 times the grid's largest value {:g}: tracking takes as many "
+                       "more steps",
+                       bound, volume->maxValue()));
     if (bound < volume->maxValue())
       warn(props.locationOf("max_value"),
            fmt::format("max_value {:g} is below the grid's largest value {:g}, which is used as the majorant instead "

@@ -31,7 +31,7 @@ TabulatedPhase::TabulatedPhase(std::vector<float> values) : values_(std::move(va
 float TabulatedPhase::density(float cosTheta) const {
   const float x = (std::clamp(cosTheta, -1.0f, 1.0f) + 1.0f) / spacing_;
   const size_t i = std::min(size_t(x), values_.size() - 2);
-  const float t = x - float(i);
+  const float t = std::min(x - float(i), 1.0f);  // x may round past the last point at cos theta = 1
   return ((1.0f - t) * values_[i] + t * values_[i + 1]) * scale_;
 }
 

@@ -25,7 +25,8 @@ class Volume : public Object {
   std::optional<std::pair<float, float>> clip(const Ray& ray) const;
 
  protected:
-  // The value at point p of the volume's own space (outside the unit cube, clamped to it).
+  // The value at point p of the volume's own space (outside the unit cube as the volume says: a
+  // grid clamps to it, or tiles space with its wrap mode repeat).
   virtual Spectrum evalLocal(const Vec3& p, const Wavelengths& wl) const = 0;
 
  private:

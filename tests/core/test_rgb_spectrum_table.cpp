@@ -71,3 +71,23 @@ TEST(RGBSpectrumTable, AFitFromANeighboursCoefficientsMatchesOneFromGrey) {
   EXPECT_LT(largestDifference(rgbUnderD65(a), target), 2e-5f);
   EXPECT_LT(largestDifference(rgbUnderD65(b), target), 2e-5f);
 }
+
+TEST(RGBSpectrumTable, EveryNodeOfTheTableKeepsItsColour) {
+  // At ratios j / 63 and k / 63 the lookup returns a node's own coefficients (or, on the last row
+  // and column, its neighbour's weighted fully): every fit of the table, each started from its
+  // neighbour's, is checked, the saturated edges (a ratio of 0) among them.
+  float worst = 0.0f;
+  Vec3 worstColour;
+  for (int channel = 0; channel < 3; ++channel)
+    for (int j = 0; j < 64; ++j)
+      for (int k = 0; k < 64; ++k) {
+        Vec3 c;
+        c[channel] = 1.0f;
+        c[(channel + 1) % 3] = float(j) / 63.0f;
+        c[(channel + 2) % 3] = float(k) / 63.0f;
+        const float error = largestDifference(rgbUnderD65(tabulatedRGBSpectrum(c)), c);
+        if (error > worst) worst = error, worstColour = c;
+      }
+  EXPECT_LT(worst, 0.01f) << worstColour.x << ", " << worstColour.y << ", " << worstColour.z;
+  RecordProperty("largest_node_error", std::to_string(worst));
+}

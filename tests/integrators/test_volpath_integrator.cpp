@@ -202,7 +202,7 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
     <volume type="gridvolume" name="sigma_t"><string name="filename" value=")" +
                                                                               (dir_ / "negative.vol").string() +
                                                                               R"("/></volume></medium>)" + sphere)),
-                 {"vol.xml:13", "negative.vol", "x 1, y 1, z 0", "-0.25", "must not be negative"});
+                 {"vol.xml:13", "negative.vol", "x 1, y 1, z 0", "-0.25", "must lie in [0, 8.50706e+37]"});
   // A volpath parameter volpath does not have is unknown, as in Mitsuba.
   expectContains(
       loadError(sphereScene(R"(<integrator type="volpath"><string name="strategy" value="bsdf"/></integrator>)")),

@@ -146,10 +146,12 @@ TEST(FuzzRegressions, ExrAttributeDeclaringAnotherSizeThanItsValueIsAnError) {
 // Found by the EXR fuzzer: a NaN, infinite or overly bright pixel made the environment map's
 // sampling distribution throw std::invalid_argument instead of an error naming the file.
 TEST(FuzzRegressions, EnvmapPixelsThatCannotBeSampledAreInputErrors) {
-  for (float value : {std::nanf(""), INFINITY, 3e38f}) {
+  // Not finite; finite but too bright together (8e37 each); one too bright for its spectrum, twice
+  // its largest component (3e38).
+  for (float value : {std::nanf(""), INFINITY, 8e37f, 3e38f}) {
     columba::Image image(2, 2);
     for (float& v : image.rgb) v = 0.5f;
-    if (std::isfinite(value))  // finite but too bright together
+    if (std::isfinite(value))
       for (float& v : image.rgb) v = value;
     else
       image.pixel(1, 0)[1] = value;
@@ -157,8 +159,10 @@ TEST(FuzzRegressions, EnvmapPixelsThatCannotBeSampledAreInputErrors) {
       columba::EnvmapEmitter envmap(image, 1.0f, columba::Transform(), {"sky.exr", 0});
       ADD_FAILURE() << "no error for " << value;
     } catch (const columba::InputError& e) {
-      const std::string expected = std::isfinite(value) ? "sky.exr: the environment map's total luminance overflows"
-                                                        : "sky.exr: environment map pixel (1, 0) is not finite";
+      const std::string expected =
+          !std::isfinite(value) ? "sky.exr: environment map pixel (1, 0) is not finite"
+          : value < 1e38f       ? "sky.exr: the environment map's total luminance overflows"
+                                : "sky.exr: environment map pixel (0, 0) is too bright: twice its largest component";
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
   }

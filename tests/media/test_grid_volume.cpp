@@ -119,3 +119,21 @@ TEST_F(GridVolumeFile, MaxValueRaisesTheMajorantButNeverLowersIt) {
   EXPECT_EQ(make(lower)->maxValue(), 4.0f);
   expectContains(::testing::internal::GetCapturedStderr(), {"max_value 2 is below the grid's largest value 4"});
 }
+
+TEST_F(GridVolumeFile, RepeatTilesFarOutsideTheCubeAndValuesTooLargeAreRefused) {
+  std::ofstream(dir_ / "ramp.vol", std::ios::binary) << volBytes({1, 2, 3, 4}, {0, 0, 0}, {1, 1, 1});
+  auto repeat = make(grid("ramp.vol", "repeat"));
+  // A whole number of periods away the value is the same, however far (no integer overflow).
+  EXPECT_NEAR(repeat->eval(Vec3(3.5f, 0.5f, 0.5f), kWl)[0], 2.5f, 1e-4f);
+  EXPECT_NEAR(repeat->eval(Vec3(-6.95f, 0.5f, 0.5f), kWl)[0], 1.9f, 1e-3f);
+  EXPECT_TRUE(std::isfinite(repeat->eval(Vec3(3e9f, 0.5f, 0.5f), kWl)[0]));
+  // A value whose doubled colour would overflow is refused, naming the voxel.
+  std::ofstream(dir_ / "huge.vol", std::ios::binary) << volBytes({1, 2e38f}, {0, 0, 0}, {1, 1, 1});
+  std::string message;
+  try {
+    make(grid("huge.vol"));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  expectContains(message, {"scene.xml:5", "huge.vol", "x 1, y 0, z 0", "2e+38", "must lie in [0,"});
+}
