@@ -10,6 +10,11 @@ namespace {
 using Complex = std::complex<double>;
 using Matrix = std::array<Complex, 4>;  // row-major 2 x 2
 
+// a / b through b's conjugate and squared modulus: the indices here are of order one, far from
+// where the library's scaled complex division (most of a layered film's time) guards against
+// overflow.
+Complex over(Complex a, Complex b) { return a * std::conj(b) * (1.0 / std::norm(b)); }
+
 Matrix multiply(const Matrix& a, const Matrix& b) {
   return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
 }
@@ -27,7 +32,7 @@ Complex normalComponent(Complex n, double tangential) {
 struct Admittance {
   Complex s, p;
 };
-Admittance admittance(Complex n, Complex q) { return {q, n * n / q}; }
+Admittance admittance(Complex n, Complex q) { return {q, over(n * n, q)}; }
 
 // R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate], for light whose
 // tangential wave-vector component is `tangential`. A layer's phase thickness, and so its cosine
@@ -37,23 +42,35 @@ void response(const LayerStack& stack, double tangential, double lambdaNm, Multi
   const double n0 = stack.incidentIndex;
   Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
   const Complex minusI(0.0, -1.0);
+  // Each layer's matrix is kept divided by e^b, b = Im(delta) >= 0 (the wave decays along the
+  // branch chosen), and the sum of the b kept apart: an absorbing layer however thick then
+  // neither overflows nor spoils R, which the common factor does not change; T takes it back.
+  double attenuation = 0.0;
   for (const Layer& layer : stack.layers) {
     const Complex q = normalComponent(layer.index, tangential);
     const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q;
     const Admittance e = admittance(layer.index, q);
-    const Complex c = std::cos(delta), sn = std::sin(delta);
+    // cos(a + ib) = cos a cosh b - i sin a sinh b, sin(a + ib) = sin a cosh b + i cos a sinh b,
+    // here divided by e^b: one sine, cosine and exponential where the library's complex functions
+    // take two of each.
+    const double cosA = std::cos(delta.real()), sinA = std::sin(delta.real());
+    const double decaySqr = std::exp(-2.0 * delta.imag());
+    const double coshB = 0.5 * (1.0 + decaySqr), sinhB = 0.5 * (1.0 - decaySqr);
+    attenuation += delta.imag();
+    const Complex c(cosA * coshB, -sinA * sinhB), sn(sinA * coshB, cosA * sinhB);
     // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
     // matrix carries -i; Macleod's +i goes with n - ik.
-    ms = multiply(ms, {c, minusI * sn / e.s, minusI * e.s * sn, c});
-    mp = multiply(mp, {c, minusI * sn / e.p, minusI * e.p * sn, c});
+    ms = multiply(ms, {c, over(minusI * sn, e.s), minusI * e.s * sn, c});
+    mp = multiply(mp, {c, over(minusI * sn, e.p), minusI * e.p * sn, c});
   }
   const Admittance eta0 = admittance(n0, normalComponent(n0, tangential));
   const Admittance etaS = admittance(stack.substrateIndex, normalComponent(stack.substrateIndex, tangential));
-  auto finish = [](const Matrix& m, Complex incident, Complex substrate, double& R, double& T) {
+  const double transmitted = std::exp(-2.0 * attenuation);
+  auto finish = [transmitted](const Matrix& m, Complex incident, Complex substrate, double& R, double& T) {
     const Complex B = m[0] + m[1] * substrate, C = m[2] + m[3] * substrate;
-    const Complex denominator = incident * B + C;
-    R = std::norm((incident * B - C) / denominator);
-    T = 4.0 * incident.real() * substrate.real() / std::norm(denominator);
+    const double denominator = std::norm(incident * B + C);
+    R = std::norm(incident * B - C) / denominator;
+    T = 4.0 * incident.real() * substrate.real() / denominator * transmitted;
   };
   finish(ms, eta0.s, etaS.s, r.rs, r.ts);
   finish(mp, eta0.p, etaS.p, r.rp, r.tp);

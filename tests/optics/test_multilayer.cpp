@@ -129,3 +129,19 @@ TEST(Multilayer, BadLayersAreRefused) {
   EXPECT_THROW(multilayerResponse({1.0, {}, {0.0, 1.0}}, 0.0, 500.0), std::invalid_argument);
   EXPECT_THROW(reversed({1.0, {}, {1.5, 0.1}}), std::invalid_argument);
 }
+
+TEST(Multilayer, AThickAbsorberIsASemiInfiniteOne) {
+  // 1.7 + 0.1i at normal incidence, 100 um to 10 cm thick: nothing gets through, and the stack
+  // reflects as a bare interface with that medium, |(1 - n) / (1 + n)|^2 (once its matrices
+  // overflowed into NaN beyond about 500 um).
+  const std::complex<double> n(1.7, 0.1);
+  const double bare = std::norm((1.0 - n) / (1.0 + n));
+  for (double thickness : {100.0, 1000.0, 1e5}) {
+    LayerStack stack;
+    stack.layers = {{n, thickness}};
+    const MultilayerResponse r = multilayerResponse(stack, 0.0, 500.0);
+    EXPECT_NEAR(r.reflectance(), bare, 1e-12) << thickness;
+    EXPECT_LT(r.transmittance(), 1e-100) << thickness;
+    EXPECT_NEAR(r.absorptance(), 1.0 - bare, 1e-12) << thickness;
+  }
+}
