@@ -1,11 +1,13 @@
 #pragma once
 // Strict reading of a number from text: the whole text must be the number (no spaces, no trailing
 // characters) and a floating-point value must be finite. Readers wrap it in their own messages.
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace columba {
 
@@ -17,6 +19,23 @@ std::optional<T> parseNumber(const std::string& text) {
   if constexpr (std::is_floating_point_v<T>)
     if (!std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+// The items of a list separated by commas and/or white space, empty items dropped: how scene files
+// write lists of numbers and biologists' CSV and whitespace tables mix.
+inline std::vector<std::string> listItems(const std::string& text) {
+  std::vector<std::string> items;
+  std::string item;
+  for (char c : text) {
+    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+      if (!item.empty()) items.push_back(item);
+      item.clear();
+    } else {
+      item += c;
+    }
+  }
+  if (!item.empty()) items.push_back(item);
+  return items;
 }
 
 }  // namespace columba

@@ -8,7 +8,6 @@ Mitsuba 3: as Mitsuba 3's `hg`.
 
 #include <cmath>
 
-#include "core/frame.h"
 #include "core/sampling.h"
 
 namespace columba {
@@ -30,10 +29,7 @@ std::optional<PhaseSample> HenyeyGreensteinPhase::sample(const Vec3& wi, Vec2 u)
     const float ratio = (1.0f - g_ * g_) / (1.0f - g_ + 2.0f * g_ * u.x);
     cosTheta = std::clamp((1.0f + g_ * g_ - ratio * ratio) / (2.0f * g_), -1.0f, 1.0f);
   }
-  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-  const float phi = kTwoPi * u.y;
-  // theta is measured from the direction of travel, -wi.
-  const Vec3 wo = Frame::fromNormal(-wi).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+  const Vec3 wo = scatteredDirection(wi, cosTheta, u.y);
   return PhaseSample{wo, density(cosTheta)};
 }
 

@@ -4,7 +4,9 @@
 // previous vertex, -ray.d) and `wo` toward where it goes, so forward scattering is wo = -wi.
 // Phase functions are normalised over the sphere and do not depend on the wavelength, so one value
 // serves every lane of a path.
+#include <cmath>
 #include <optional>
+#include "core/frame.h"
 #include "core/object.h"
 #include "core/vector.h"
 
@@ -14,6 +16,15 @@ struct PhaseSample {
   Vec3 wo;
   float pdf = 0.0f;  // solid-angle density of wo; for the phase functions here also their value
 };
+
+// The direction at scattering angle theta (its cosine `cosTheta`) from the light's direction of
+// travel, -wi, at azimuth 2 pi uPhi around it: how each phase function here turns a drawn cos theta
+// into wo.
+inline Vec3 scatteredDirection(const Vec3& wi, float cosTheta, float uPhi) {
+  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+  const float phi = kTwoPi * uPhi;
+  return Frame::fromNormal(-wi).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+}
 
 class PhaseFunction : public Object {
  public:

@@ -6,8 +6,6 @@ Mitsuba 3: as Mitsuba 3's `rayleigh`.
 
 #include <cmath>
 
-#include "core/frame.h"
-
 namespace columba {
 
 float RayleighPhase::eval(const Vec3& wi, const Vec3& wo) const { return density(-dot(wi, wo)); }
@@ -17,10 +15,7 @@ std::optional<PhaseSample> RayleighPhase::sample(const Vec3& wi, Vec2 u) const {
   // has the one real root (Cardano) c = cbrt(z + r) + cbrt(z - r), z = 4 u - 2, r = sqrt(z^2 + 1).
   const float z = 4.0f * u.x - 2.0f, r = std::sqrt(z * z + 1.0f);
   const float cosTheta = std::clamp(std::cbrt(z + r) + std::cbrt(z - r), -1.0f, 1.0f);
-  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-  const float phi = kTwoPi * u.y;
-  // theta is measured from the direction of travel, -wi.
-  const Vec3 wo = Frame::fromNormal(-wi).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+  const Vec3 wo = scatteredDirection(wi, cosTheta, u.y);
   return PhaseSample{wo, density(cosTheta)};
 }
 

@@ -11,7 +11,6 @@ Mitsuba 3: as Mitsuba 3's `tabphase`.
 #include <stdexcept>
 
 #include "core/error.h"
-#include "core/frame.h"
 #include "core/number_text.h"
 
 namespace columba {
@@ -22,10 +21,10 @@ TabulatedPhase::TabulatedPhase(std::vector<float> values) : values_(std::move(va
   areaCdf_.assign(values_.size(), 0.0);
   for (size_t i = 1; i < values_.size(); ++i)
     areaCdf_[i] = areaCdf_[i - 1] + 0.5 * double(spacing_) * (double(values_[i - 1]) + values_[i]);
-  const double total = areaCdf_.back();
-  if (!(total > 0.0)) throw std::invalid_argument("the tabulated values are all zero");
-  for (double& a : areaCdf_) a /= total;
-  scale_ = float(1.0 / (total * 2.0 * double(kPi)));
+  totalArea_ = areaCdf_.back();
+  if (!(totalArea_ > 0.0)) throw std::invalid_argument("the tabulated values are all zero");
+  for (double& a : areaCdf_) a /= totalArea_;
+  scale_ = float(1.0 / (totalArea_ * 2.0 * double(kPi)));
 }
 
 float TabulatedPhase::density(float cosTheta) const {
@@ -44,16 +43,12 @@ std::optional<PhaseSample> TabulatedPhase::sample(const Vec3& wi, Vec2 u) const 
   const size_t i = std::min(size_t(std::upper_bound(areaCdf_.begin(), areaCdf_.end(), double(u.x)) - areaCdf_.begin()),
                             values_.size() - 1) -
                    1;
-  const double total = 1.0 / (double(scale_) * 2.0 * double(kPi));
-  const double r = (double(u.x) - areaCdf_[i]) * total / double(spacing_);
+  const double r = (double(u.x) - areaCdf_[i]) * totalArea_ / double(spacing_);
   const double v0 = values_[i], v1 = values_[i + 1];
   const double root = std::sqrt(std::max(0.0, v0 * v0 + 2.0 * (v1 - v0) * r));
   const double t = v0 + root > 0.0 ? std::clamp(2.0 * r / (v0 + root), 0.0, 1.0) : 0.0;
   const float cosTheta = std::clamp(-1.0f + (float(i) + float(t)) * spacing_, -1.0f, 1.0f);
-  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-  const float phi = kTwoPi * u.y;
-  // theta is measured from the direction of travel, -wi.
-  const Vec3 wo = Frame::fromNormal(-wi).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+  const Vec3 wo = scatteredDirection(wi, cosTheta, u.y);
   const float pdf = density(cosTheta);
   if (!(pdf > 0.0f)) return std::nullopt;
   return PhaseSample{wo, pdf};
@@ -61,14 +56,8 @@ std::optional<PhaseSample> TabulatedPhase::sample(const Vec3& wi, Vec2 u) const 
 
 std::shared_ptr<Object> makeTabulatedPhase(const Properties& props) {
   if (!props.has("values")) throw InputError(props.location, "'tabphase' needs its 'values'");
-  const std::string text = props.getString("values");
   std::vector<float> values;
-  size_t start = 0;
-  while (start < text.size()) {
-    const size_t end = text.find_first_of(", \t\n", start);
-    const std::string piece = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    start = end == std::string::npos ? text.size() : end + 1;
-    if (piece.empty()) continue;
+  for (const std::string& piece : listItems(props.getString("values"))) {
     const std::optional<float> v = parseNumber<float>(piece);
     if (!v || !std::isfinite(*v) || *v < 0.0f)
       throw props.error("values",

@@ -20,6 +20,7 @@ class TabulatedPhase final : public PhaseFunction {
  private:
   std::vector<float> values_;    // at cos theta = -1 + 2 i / (n - 1)
   std::vector<double> areaCdf_;  // area under the table up to each point, the last 1
+  double totalArea_;             // under the values as given
   float spacing_;                // between the points in cos theta
   float scale_;                  // 1 / (total area * 2 pi): table values to densities per steradian
 };

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/byte_order_mark.h"
+#include "core/number_text.h"
 
 namespace columba {
 
@@ -29,21 +30,6 @@ std::string numberBody(const std::string& text) {
   std::string t = trim(text);
   if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.erase(0, 1);
   return t;
-}
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : text) {
-    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
-      if (!cur.empty()) out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  if (!cur.empty()) out.push_back(cur);
-  return out;
 }
 
 GivenSpectrum fromPairs(std::vector<float> lambdas, std::vector<float> values, const std::string& what,
@@ -90,7 +76,7 @@ bool parseBoolean(const std::string& text, const std::string& what, const Source
 
 std::vector<double> parseFloatList(const std::string& text, const std::string& what, const SourceLocation& loc) {
   std::vector<double> out;
-  for (const std::string& token : splitList(text)) out.push_back(parseFloat(token, what, loc));
+  for (const std::string& token : listItems(text)) out.push_back(parseFloat(token, what, loc));
   return out;
 }
 
@@ -103,14 +89,14 @@ Vec3 parseVec3(const std::string& text, const std::string& what, const SourceLoc
 
 GivenSpectrum parseSpectrum(const std::string& text, const std::string& what, const SourceLocation& loc) {
   if (text.find(':') == std::string::npos) {
-    std::vector<std::string> tokens = splitList(text);
+    std::vector<std::string> tokens = listItems(text);
     if (tokens.size() != 1)
       throw InputError(loc, "expected one number or wavelength:value pairs for " + what + ", got '" + text + "'");
     const float value = float(parseFloat(tokens[0], what, loc));
     return {SpectralDistribution::constant(value), value};
   }
   std::vector<float> lambdas, values;
-  for (const std::string& token : splitList(text)) {
+  for (const std::string& token : listItems(text)) {
     size_t colon = token.find(':');
     if (colon == std::string::npos || token.find(':', colon + 1) != std::string::npos)
       throw InputError(loc, "expected wavelength:value, got '" + token + "' for " + what);
@@ -133,7 +119,7 @@ GivenSpectrum readSpectrumFile(const std::string& path, const std::string& what,
   std::string line;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
     line = line.substr(0, line.find('#'));
-    std::vector<std::string> tokens = splitList(line);
+    std::vector<std::string> tokens = listItems(line);
     if (tokens.empty()) continue;
     SourceLocation here{path, lineNo};
     if (tokens.size() != 2) throw InputError(here, "expected 'wavelength value', got '" + trim(line) + "'");

@@ -10,7 +10,6 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
-#include "vision/table_cells.h"
 
 namespace columba {
 
@@ -70,7 +69,7 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
   for (std::string line; std::getline(in, line);) {
     ++lineNumber;
     if (lineNumber > 1000) throw InputError({path, lineNumber}, "more than 1000 lines: a definition has a row a cone");
-    const std::vector<std::string> values = tableCells(line);
+    const std::vector<std::string> values = listItems(line);
     if (values.empty() || values.front()[0] == '#') continue;
     if (header.empty()) {
       header = values;

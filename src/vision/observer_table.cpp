@@ -10,7 +10,6 @@
 #include "core/error.h"
 #include "core/number_text.h"
 #include "vision/observer_definition_file.h"
-#include "vision/table_cells.h"
 
 namespace columba {
 
@@ -36,7 +35,7 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
   std::string line;
   while (std::getline(table, line)) {
     ++lineNumber;
-    const std::vector<std::string> row = tableCells(line);
+    const std::vector<std::string> row = listItems(line);
     if (row.empty() || row.front()[0] == '#') continue;
     if (header.empty()) {
       header = row;
@@ -135,7 +134,7 @@ Observer readObserverTableFile(const std::string& path) {
   const std::string name = std::filesystem::path(path).stem().string();
   // A definition's header starts with `cone`; a table's with its wavelength column.
   for (std::string line; std::getline(in, line);) {
-    const std::vector<std::string> row = tableCells(line);
+    const std::vector<std::string> row = listItems(line);
     if (row.empty() || row.front()[0] == '#') continue;
     in.clear();
     in.seekg(0);
