@@ -24,7 +24,7 @@ struct RatioTable {
     // Each channel's table is walked from grey (a = b = 1, fitted from all coefficients zero)
     // outwards, every fit starting from a neighbour's coefficients: saturated colours are far from
     // grey's.
-    // The first lookup may come from inside a parallel loop (an environment map's pixels): isolated,
+    // The first lookup may come from inside a parallel loop (tabulatedRGBSpectra's): isolated,
     // this thread runs only the three channels' tasks while it builds the table, never one of that
     // loop's, which would look the table up again while its construction is under way.
     tbb::this_task_arena::isolate([&] {
@@ -70,6 +70,14 @@ RGBSpectrum tabulatedRGBSpectrum(const Vec3& rgbIn) {
                   fb * ((1.0f - fa) * t.at(channel, j, k + 1)[i] + fa * t.at(channel, j + 1, k + 1)[i]);
   s.scale = 2.0f * m;
   return s;
+}
+
+std::vector<RGBSpectrum> tabulatedRGBSpectra(const float* rgb, size_t count) {
+  std::vector<RGBSpectrum> spectra(count);
+  tbb::parallel_for(size_t(0), count, [&](size_t i) {
+    spectra[i] = tabulatedRGBSpectrum(Vec3(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]));
+  });
+  return spectra;
 }
 
 }  // namespace columba

@@ -5,6 +5,8 @@
 // one component 1/2 and two ratios to it in [0, 1], so a table over those two ratios (one per
 // largest channel) holds every such spectrum. Coefficients are fitted at 64 x 64 ratios per channel
 // once per run and interpolated bilinearly between them, as Jakob & Hanika (2019) interpolate theirs.
+#include <cstddef>
+#include <vector>
 #include "core/spectrum.h"
 
 namespace columba {
@@ -13,5 +15,8 @@ namespace columba {
 // D65 is rgb to within the accuracy tests/core/test_rgb_spectrum_table.cpp states. Thread-safe; the
 // first call builds the table (about 12,000 fits, each from its neighbour's coefficients).
 RGBSpectrum tabulatedRGBSpectrum(const Vec3& rgb);
+// The spectra of `count` colours stored as consecutive r, g, b floats (an image's pixels, a grid's
+// voxels), each as tabulatedRGBSpectrum gives it, looked up in parallel.
+std::vector<RGBSpectrum> tabulatedRGBSpectra(const float* rgb, size_t count);
 
 }  // namespace columba

@@ -8,8 +8,6 @@ Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled
 */
 #include "emitters/envmap_emitter.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,7 +21,7 @@ Mitsuba 3: the same parameters; `to_world` must be rigid (directions are sampled
 namespace columba {
 
 EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld, const SourceLocation& where)
-    : width_(image.width), height_(image.height), scale_(scale), toWorld_(toWorld) {
+    : width_(image.width), height_(image.height), toWorld_(toWorld) {
   std::vector<float> weights(size_t(width_) * height_);
   double total = 0.0;
   for (int y = 0; y < height_; ++y) {
@@ -49,11 +47,10 @@ EnvmapEmitter::EnvmapEmitter(Image image, float scale, const Transform& toWorld,
     throw InputError(where, "the environment map's total luminance overflows single precision");
   distribution_ = Distribution2D(weights, width_, height_);
   // Each pixel's own spectrum, as Mitsuba gives each pixel (twice its largest component times the
-  // spectrum of the colour scaled to a largest component of 1/2, times D65), from the table.
-  spectra_.resize(size_t(width_) * height_);
-  tbb::parallel_for(size_t(0), spectra_.size(), [&](size_t i) {
-    spectra_[i] = tabulatedRGBSpectrum(Vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]));
-  });
+  // spectrum of the colour scaled to a largest component of 1/2, times D65), from the table; the
+  // map's scale goes into each spectrum's.
+  spectra_ = tabulatedRGBSpectra(image.rgb.data(), size_t(width_) * height_);
+  for (RGBSpectrum& s : spectra_) s.scale *= scale;
 }
 
 Vec2 EnvmapEmitter::directionToUV(const Vec3& worldDir) const {
@@ -74,7 +71,7 @@ Spectrum EnvmapEmitter::lookup(Vec2 uv, const Wavelengths& wl) const {
   int y = std::min(int(uv.y * height_), height_ - 1);
   const RGBSpectrum& r = spectra_[size_t(y) * width_ + x];
   Spectrum s;
-  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = r.eval(wl[i]) * scale_;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = r.eval(wl[i]);
   return s * d65(wl);
 }
 

@@ -27,10 +27,10 @@ class EnvmapEmitter : public EmitterAtInfinity {
   Spectrum lookup(Vec2 uv, const Wavelengths& wl) const;
 
   int width_, height_;
-  float scale_;
   Transform toWorld_;
   Distribution2D distribution_;
-  // Each pixel's spectrum, without D65 (core/rgb_spectrum_table.h), in the image's order.
+  // Each pixel's spectrum times the map's scale, without D65 (core/rgb_spectrum_table.h), in the
+  // image's order.
   std::vector<RGBSpectrum> spectra_;
 };
 

@@ -13,8 +13,6 @@ Mitsuba 3: `raw` true with three channels is refused; where `to_world` rotates, 
 #include "media/grid_volume.h"
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
-
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -43,10 +41,7 @@ GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const T
     for (float v : values_) max_ = std::max(max_, v);
   } else if (grid.channels == 3) {
     // Each voxel's spectrum from the table of fits, as an environment map's pixels get theirs.
-    spectra_.resize(grid.values.size() / 3);
-    tbb::parallel_for(size_t(0), spectra_.size(), [&](size_t i) {
-      spectra_[i] = tabulatedRGBSpectrum(Vec3(grid.values[3 * i], grid.values[3 * i + 1], grid.values[3 * i + 2]));
-    });
+    spectra_ = tabulatedRGBSpectra(grid.values.data(), grid.values.size() / 3);
     // The interpolated shape stays within [0, 1], so the largest scale bounds every value.
     for (const RGBSpectrum& s : spectra_) max_ = std::max(max_, s.scale);
   } else {
