@@ -22,8 +22,8 @@
 #include "io/feather_ply_writer.h"
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
+#include "optics/layered_film.h"
 #include "optics/melanin.h"
-#include "optics/melanin_index.h"
 #include "optics/multilayer.h"
 #include "optics/thin_film.h"
 
@@ -406,8 +406,8 @@ std::function<std::complex<double>(double)> complexIndexFrom(const py::object& v
     return [n](double) { return n; };
   }
   if (py::isinstance<py::str>(value) && value.cast<std::string>() == "melanin")
-    return [](double lambda) {
-      return std::complex<double>(MelaninIndex::n(float(lambda)), MelaninIndex::k(float(lambda)));
+    return [melanin = melaninLayer(0.0f)](double lambda) {
+      return std::complex<double>(melanin.n(float(lambda)), melanin.extinction(float(lambda)));
     };
   const RefractiveIndex n = indexFrom(value, what);
   return [n](double lambda) { return std::complex<double>(n(float(lambda)), 0.0); };

@@ -29,6 +29,15 @@ std::optional<std::pair<float, float>> complexIndex(const std::string& text) {
 }
 }  // namespace
 
+FilmLayer melaninLayer(float thicknessUm) {
+  FilmLayer layer;
+  layer.n = RefractiveIndex::cauchy(MelaninIndex::kCauchyA, MelaninIndex::kCauchyB);
+  layer.k = MelaninIndex::kExtinction;
+  layer.kDecayNm = MelaninIndex::kExtinctionDecay;
+  layer.thicknessUm = thicknessUm;
+  return layer;
+}
+
 std::vector<FilmLayer> parseFilmLayers(const std::string& text) {
   std::vector<FilmLayer> layers;
   size_t start = 0;
@@ -53,9 +62,7 @@ std::vector<FilmLayer> parseFilmLayers(const std::string& text) {
       layer.n = RefractiveIndex::constant(c->first);
       layer.k = c->second;
     } else if (index == "melanin") {
-      layer.n = RefractiveIndex::cauchy(MelaninIndex::kCauchyA, MelaninIndex::kCauchyB);
-      layer.k = MelaninIndex::kExtinction;
-      layer.kDecayNm = MelaninIndex::kExtinctionDecay;
+      layer = melaninLayer(*thickness);
     } else if (const std::optional<RefractiveIndex> n = iorFromName(index)) {
       layer.n = *n;
     } else {
@@ -74,6 +81,7 @@ LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float co
     LayerStack& stack = stacks_[k];
     stack.incidentIndex = nOutside;
     stack.substrateIndex = nOutside;
+    stack.layers.reserve(below.size() + 1);  // one allocation a wavelength, at every hit
     stack.layers.push_back({cortex(wl[k]), cortexThicknessUm});
     for (const FilmLayer& layer : below)
       stack.layers.push_back({std::complex<double>(layer.n(wl[k]), layer.extinction(wl[k])), layer.thicknessUm});

@@ -30,6 +30,9 @@ struct FilmLayer {
   float extinction(float lambdaNm) const { return kDecayNm > 0.0f ? k * std::exp(-lambdaNm / kDecayNm) : k; }
 };
 
+// A layer of melanin (optics/melanin_index.h: a Cauchy n and an exponentially falling k).
+FilmLayer melaninLayer(float thicknessUm);
+
 // "INDEX:THICKNESS, INDEX:THICKNESS, ...", the layers from the cortex down: INDEX a number, a named
 // index (air, water, ...), `keratin`, `melanin` (optics/melanin_index.h) or a complex N+Ki (an
 // absorbing layer, K >= 0); THICKNESS in micrometres, not negative. Throws std::invalid_argument naming the piece that is wrong.

@@ -6,16 +6,12 @@
 // an exponentially falling extinction k = a exp(-lambda / b), lambda in nm, with A = 1.648,
 // B = 23,700 nm^2, a = 0.56, b = 270 nm. The paper's abstract gives n as 1.7-1.8 over the visible,
 // which these numbers give (1.80 at 400 nm, 1.70 at 700 nm); docs/model.md, "Layer materials".
-#include <cmath>
 
 namespace columba {
 
 struct MelaninIndex {
   static constexpr float kCauchyA = 1.648f, kCauchyB = 23700.0f;          // B in nm^2
   static constexpr float kExtinction = 0.56f, kExtinctionDecay = 270.0f;  // decay in nm
-
-  static float n(float lambdaNm) { return kCauchyA + kCauchyB / (lambdaNm * lambdaNm); }
-  static float k(float lambdaNm) { return kExtinction * std::exp(-lambdaNm / kExtinctionDecay); }
 };
 
 }  // namespace columba
