@@ -72,8 +72,10 @@ class PyBarbule {
  public:
   PyBarbule(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
             const py::object& phi0, const py::object& phi1, const py::object& filmIOR, const py::object& extIOR,
-            const py::object& preset, const py::object& melanin, const py::object& layers, const std::string& role)
-      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin, layers), roleFrom(role)) {}
+            const py::object& preset, const py::object& melanin, const py::object& layers,
+            const py::object& profileExponent, const std::string& role)
+      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin, layers, profileExponent),
+              roleFrom(role)) {}
 
   const BarbuleBSDF& bsdf() const { return bsdf_; }
 
@@ -89,7 +91,8 @@ class PyBarbule {
   static BarbuleParameters resolve(const py::object& b, const py::object& H, const py::object& mu,
                                    const py::object& height, const py::object& phi0, const py::object& phi1,
                                    const py::object& filmIOR, const py::object& extIOR, const py::object& preset,
-                                   const py::object& melanin, const py::object& layers) {
+                                   const py::object& melanin, const py::object& layers,
+                                   const py::object& profileExponent) {
     Properties props;
     props.tag = "bsdf";
     props.type = "barbulebsdf";
@@ -103,6 +106,7 @@ class PyBarbule {
     take("height", height);
     take("phi_0", phi0);
     take("phi_1", phi1);
+    take("profile_exponent", profileExponent);
     setIndex(props, "film_ior", filmIOR);
     setIndex(props, "ext_ior", extIOR);
     if (!melanin.is_none()) {
@@ -523,11 +527,12 @@ void bindModel(py::module_& m) {
                         "N x 4.")
       .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
                     const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
-                    const py::object&, const std::string&>(),
+                    const py::object&, const py::object&, const std::string&>(),
            py::kw_only(), py::arg("b") = py::none(), py::arg("H") = py::none(), py::arg("mu") = py::none(),
            py::arg("height") = py::none(), py::arg("phi_0") = py::none(), py::arg("phi_1") = py::none(),
            py::arg("film_ior") = py::none(), py::arg("ext_ior") = py::none(), py::arg("preset") = py::none(),
-           py::arg("melanin") = py::none(), py::arg("layers") = py::none(), py::arg("role") = "camera")
+           py::arg("melanin") = py::none(), py::arg("layers") = py::none(), py::arg("profile_exponent") = py::none(),
+           py::arg("role") = "camera")
       .def_property_readonly("parameters",
                              [](const PyBarbule& s) {
                                const BarbuleParameters& p = s.bsdf().parameters();
@@ -535,6 +540,7 @@ void bindModel(py::module_& m) {
                                d["b"] = decimal(p.b), d["H"] = decimal(p.H), d["mu"] = decimal(p.mu);
                                d["height"] = decimal(p.height), d["phi_0"] = decimal(p.phi0);
                                d["phi_1"] = decimal(p.phi1), d["ext_ior"] = decimal(p.extIOR);
+                               d["profile_exponent"] = decimal(p.profileExponent);
                                return d;
                              })
       .def("eval", &evalArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),

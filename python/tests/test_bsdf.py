@@ -66,10 +66,11 @@ def test_specular_spectra_equal_cli(cli, tmp_path):
 def test_defaults_and_validation_match_the_scene_plugin():
     bsdf = columba.BarbuleBSDF()
     assert bsdf.parameters == pytest.approx({"b": 0.25, "H": 1.25, "mu": -0.35, "height": 0.6, "phi_0": -0.37,
-                                             "phi_1": 2.64, "ext_ior": 1.000277})
+                                             "phi_1": 2.64, "ext_ior": 1.000277, "profile_exponent": 2})
     xml = """<scene version="3.0.0"><shape type="sphere"><bsdf type="barbulebsdf">
       <float name="{name}" value="{value}"/></bsdf></shape></scene>"""
-    for name, value in [("b", -1), ("H", 0), ("height", -0.1), ("phi_0", 3)]:
+    for name, value in [("b", -1), ("H", 0), ("height", -0.1), ("phi_0", 3), ("profile_exponent", 1.5),
+                        ("profile_exponent", 17)]:
         with pytest.raises(columba.InputError) as xml_error:
             columba.load_string(xml.format(name=name, value=value))
         with pytest.raises(ValueError) as error:

@@ -59,7 +59,8 @@ std::string describeParameters(const BSDFOptions& o) {
              p.b, p.phi0, p.phi1, p.mu, p.H, p.height, film, p.extIOR,
              o.melaninFile.empty() ? "embedded table" : o.melaninFile,
              o.preset.empty() ? "" : " | preset " + o.preset) +
-         (o.layers.empty() ? "" : " | layers " + o.layers);
+         (o.layers.empty() ? "" : " | layers " + o.layers) +
+         (p.profileExponent == 2.0f ? "" : fmt::format(" | profile_exponent {}", p.profileExponent));
 }
 
 std::string angleList(const std::vector<float>& angles) {
@@ -349,9 +350,14 @@ double decimal(float x) { return std::stod(fmt::format("{}", x)); }
 
 nlohmann::json parameterRecord(const BSDFOptions& o) {
   const BarbuleParameters& p = o.params;
-  nlohmann::json j = {
-      {"b", decimal(p.b)}, {"phi_0_rad", decimal(p.phi0)},   {"phi_1_rad", decimal(p.phi1)}, {"mu_rad", decimal(p.mu)},
-      {"H", decimal(p.H)}, {"height_um", decimal(p.height)}, {"ext_ior", decimal(p.extIOR)}};
+  nlohmann::json j = {{"b", decimal(p.b)},
+                      {"phi_0_rad", decimal(p.phi0)},
+                      {"phi_1_rad", decimal(p.phi1)},
+                      {"mu_rad", decimal(p.mu)},
+                      {"H", decimal(p.H)},
+                      {"height_um", decimal(p.height)},
+                      {"ext_ior", decimal(p.extIOR)},
+                      {"profile_exponent", decimal(p.profileExponent)}};
   if (!o.preset.empty()) j["preset"] = o.preset;
   if (!o.filmIOR.empty())
     j["film_ior"] = o.filmIOR;
@@ -416,6 +422,7 @@ void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParamet
   take("phi_1", given.phi1);
   take("mu", given.mu);
   take("H", given.H);
+  take("profile_exponent", given.profileExponent);
   take("height", given.height);
   take("ext_ior", given.extIOR);
   take("film_cauchy_a", o.cauchyA);
@@ -445,6 +452,8 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--phi_1", given->phi1, "End of the reflective arc, rad (default 2.64)");
   cmd->add_option("--mu", given->mu, "Tilt of the cross-section, rad (default -0.35)");
   cmd->add_option("--H", given->H, "Barbule spacing (default 1.25)");
+  cmd->add_option("--profile-exponent", given->profileExponent,
+                  "Cross-section superellipse exponent, 2 (the ellipse, default) to 16 (a rounded rectangle)");
   cmd->add_option("--height", given->height, "Keratin cortex thickness, um (default 0.6)");
   cmd->add_option("--film-ior", o->filmIOR, "Film index: keratin (default), a number or a named index");
   cmd->add_option("--film-cauchy-a", o->cauchyA, "Film index by Cauchy's law n = a + b / lambda^2: a");

@@ -5,14 +5,18 @@
 // measured from u toward v, so a 3D direction (x, y, z) projects to the 2D direction
 // (z, x) / |(z, x)| at azimuth gamma = atan2(x, z). One barbule is an ellipse with semi-axis b
 // along its own u axis and 1 along its own v axis, turned by mu; in its own ("local") frame a
-// point at normal angle phi is (b^2 cos phi, sin phi) / sqrt(b^2 cos^2 phi + sin^2 phi). Only
+// point at normal angle phi is (b^2 cos phi, sin phi) / sqrt(b^2 cos^2 phi + sin^2 phi). Or,
+// with an exponent p > 2, the superellipse |u / b|^p + |v|^p = 1 (barbule/superellipse.h): the
+// ellipse's closed forms below are its p = 2 case, and each has a general counterpart. Only
 // normals phi in (phi0, phi1) belong to the reflective, film-coated arc. Its neighbours are the
-// same ellipse shifted by (0, +-H); they shadow and mask the central one.
+// same profile shifted by (0, +-H); they shadow and mask the central one.
 //
-// Seen along a direction d, the ellipse's lit side is parametrised by the offset h of the ray
+// Seen along a direction d, the profile's lit side is parametrised by the offset h of the ray
 // across d (h = p . across, across = d turned by +90 degrees); h grows monotonically with the
-// normal angle over the lit side, so every set of lit points below is an interval of offsets.
+// normal angle over the lit side (the profile is convex), so every set of lit points below is an
+// interval of offsets.
 #include <optional>
+#include "barbule/superellipse.h"
 #include "core/fast_math.h"
 #include "core/vector.h"
 
@@ -28,7 +32,7 @@ struct LitArc {
   Vec2 across;                     // `toward` turned by +90 degrees: the axis of the offsets h
   float halfWidth = 0.0f;          // the whole ellipse's silhouette spans offsets [-halfWidth, halfWidth]
   float hMin = 0.0f, hMax = 0.0f;  // offsets of the lit part; empty when hMax <= hMin
-  // Front intersection of the ray at offset h: s = (-q h + sqrt(a - h^2 / b^2)) / a.
+  // Front intersection of the ray at offset h on the ellipse: s = (-q h + sqrt(a - h^2 / b^2)) / a.
   float a = 1.0f, invA = 1.0f, q = 0.0f;
 
   float width() const { return hMax > hMin ? hMax - hMin : 0.0f; }
@@ -40,21 +44,29 @@ struct OffsetInterval {
   float length() const { return hi > lo ? hi - lo : 0.0f; }
 };
 
+// The largest superellipse exponent taken: the profile is then within 3 % of its bounding
+// rectangle along the diagonal (2^(-1/16)).
+inline constexpr float kMaxProfileExponent = 16.0f;
+
 class BarbuleCrossSection {
  public:
   // phi1 - phi0 must lie in (0, pi] (the arc faces any direction in one piece) or be >= 2 pi (the
-  // whole ellipse reflects). H below the contact spacing would make neighbours interpenetrate;
-  // it is raised to it (barbules packed edge to edge).
-  BarbuleCrossSection(float b, float phi0, float phi1, float mu, float H);
+  // whole profile reflects). H below the contact spacing would make neighbours interpenetrate;
+  // it is raised to it (barbules packed edge to edge). `exponent` p: 2 for the ellipse, more for
+  // a superellipse (at most kMaxProfileExponent).
+  BarbuleCrossSection(float b, float phi0, float phi1, float mu, float H, float exponent = 2.0f);
   // The same barbule (b and arc) with another tilt and spacing: a feather's per-point values. Costs
   // one sine and cosine, where building from scratch costs five.
   BarbuleCrossSection withTiltAndSpacing(float mu, float H) const;
 
-  // Smallest spacing at which two neighbouring ellipses do not overlap: translates K and K + w of
+  // Smallest spacing at which two neighbouring profiles do not overlap: translates K and K + w of
   // a centrally symmetric convex K overlap iff w/2 lies inside K.
-  static float contactSpacing(float b, float mu);
+  static float contactSpacing(float b, float mu, float exponent = 2.0f);
 
   float b() const { return b_; }
+  float exponent() const { return float(profile_.exponent()); }
+  bool isEllipse() const { return ellipse_; }
+  const Superellipse& profile() const { return profile_; }
   float spacing() const { return H_; }
   // Local offset of the neighbour at +H (the one at -H is at minus it).
   Vec2 neighbourOffset() const { return neighbour_; }
@@ -78,9 +90,9 @@ class BarbuleCrossSection {
   // World normals toWorld(normalAt(pointAt(arc, h))) at four offsets at once, the same arithmetic
   // in lanes.
   Vec2Lanes worldNormalsAtOffsets(const LitArc& arc, FloatLanes h) const;
-  // Unit outward normal (local) of the central ellipse at a point on it.
-  Vec2 normalAt(Vec2 localPoint) const { return normalize2({localPoint.x * invBSqr_, localPoint.y}); }
-  // Point (local) of the central ellipse whose outward normal is the local unit vector n.
+  // Unit outward normal (local) of the central profile at a point on it.
+  Vec2 normalAt(Vec2 localPoint) const;
+  // Point (local) of the central profile whose outward normal is the local unit vector n.
   Vec2 pointWithNormal(Vec2 n) const;
   // Offset along `arc` of the point with local unit normal n.
   float offsetOf(const LitArc& arc, Vec2 n) const { return dot2(pointWithNormal(n), arc.across); }
@@ -94,7 +106,7 @@ class BarbuleCrossSection {
   float radiusOfCurvature(Vec2 n) const;
   bool onReflectiveArc(Vec2 n) const;
 
-  // Nearest hit t > 0 of the world-space 2D ray origin + t dir (dir unit) with the central ellipse.
+  // Nearest hit t > 0 of the world-space 2D ray origin + t dir (dir unit) with the central profile.
   std::optional<float> intersect(Vec2 origin, Vec2 dir) const;
 
  private:
@@ -109,9 +121,14 @@ class BarbuleCrossSection {
   void setTiltAndSpacing(float mu, float H);
 
   float b_, bSqr_, invBSqr_, H_;
+  Superellipse profile_;
+  bool ellipse_;  // exponent 2: the closed forms
   float cosMu_, sinMu_;
   Vec2 neighbour_;  // local offset of the neighbour at +H
-  bool wholeEllipse_;
+  // The normal of the line separating the central profile from the neighbour at +H, which lies
+  // on its positive side: the profile's normal in the neighbour's direction.
+  Vec2 separatingNormal_;
+  bool wholeProfile_;
   Vec2 arcStartNormal_, arcEndNormal_;  // local normals at phi0 and phi1
   Vec2 arcStartPoint_, arcEndPoint_;
 };

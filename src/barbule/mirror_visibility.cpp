@@ -51,9 +51,23 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
   std::array<double, 7> bounds{};
   int boundCount = 0;
   bounds[boundCount++] = A_;
+  ellipse_ = geometry.isEllipse();
   for (int side = 0; side < 2; ++side) {
     const Vec2 centre = side == 0 ? geometry.neighbourOffset() : geometry.neighbourOffset() * -1.0f;
     const Vec2 e = p - centre;
+    if (!ellipse_) {
+      // A superellipse: the rays from p meeting the neighbour are those between its two tangent
+      // directions D1, D2 (counter-clockwise), cross(D1, v) >= 0 and cross(v, D2) >= 0, each
+      // linear in a for v = a n - w.
+      const Superellipse::Tangents t = geometry.profile().tangentPoints({e.x, e.y});
+      const double d1x = t.first.x - e.x, d1y = t.first.y - e.y, d2x = t.second.x - e.x, d2y = t.second.y - e.y;
+      cone_[side] = {d1x * localNormal.y - d1y * localNormal.x, d1x * in.y - d1y * in.x,
+                     localNormal.x * d2y - localNormal.y * d2x, in.x * d2y - in.y * d2x};
+      const Cone& c = cone_[side];
+      if (c.start1 != 0.0) bounds[boundCount++] = c.start0 / c.start1;
+      if (c.end1 != 0.0) bounds[boundCount++] = c.end0 / c.end1;
+      continue;
+    }
     const double K = metric(e, e, invBSqr) - 1.0;  // > 0: the point lies outside its neighbours
     alpha_[side] = metric(e, localNormal, invBSqr);
     beta_[side] = metric(e, in, invBSqr);
@@ -127,8 +141,12 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
 
 bool MirrorVisibleAngles::visibleAt(double a) const {
   if (!(a > A_)) return false;  // facing away from the mirror direction
-  for (int side = 0; side < 2; ++side)
-    if ((q2_[side] * a - 2.0 * q1_[side]) * a + q0_[side] >= 0.0 && a * alpha_[side] < beta_[side]) return false;
+  for (int side = 0; side < 2; ++side) {
+    const bool meets = ellipse_
+                           ? (q2_[side] * a - 2.0 * q1_[side]) * a + q0_[side] >= 0.0 && a * alpha_[side] < beta_[side]
+                           : a * cone_[side].start1 >= cone_[side].start0 && a * cone_[side].end1 >= cone_[side].end0;
+    if (meets) return false;
+  }
   return true;
 }
 

@@ -11,8 +11,9 @@
 // n . v = a - A > 0, and the ray from it along v misses both neighbours: for a neighbour centred at
 // c, with e = p - c and the ellipse's metric Q = diag(1 / b^2, 1), the ray meets it when
 //   (e Q v)^2 >= (v Q v) (e Q e - 1)  and  e Q v < 0,
-// a quadratic and a linear condition in a. So the visible values of a are bounded by at most seven
-// numbers, each of which a(theta) crosses at most twice over the normals' range: the visible
+// a quadratic and a linear condition in a. On a superellipse (BarbuleCrossSection::isEllipse()
+// false) the ray meets a neighbour when v lies between the two tangents from p to it, two linear
+// conditions in a. So the visible values of a are bounded by at most seven numbers, each of which a(theta) crosses at most twice over the normals' range: the visible
 // angles are a few intervals, found exactly, and the mass of theta's density on them is the
 // density's primitive at their ends.
 #include <array>
@@ -46,8 +47,15 @@ class MirrorVisibleAngles {
   Vec2 worldNormal_;
   LongitudinalDensity longitudinal_;
   float A_, B_;
-  // The neighbours' conditions for meeting the ray: a^2 q2 - 2 a q1 + q0 >= 0 and a alpha < beta.
+  // The neighbours' conditions for meeting the ray: on the ellipse a^2 q2 - 2 a q1 + q0 >= 0 and
+  // a alpha < beta; on a superellipse a start1 >= start0 and a end1 >= end0 (cross(D1, v) >= 0 and
+  // cross(v, D2) >= 0 for its tangent directions D1, D2).
+  bool ellipse_ = true;
   std::array<double, 2> q2_{}, q1_{}, q0_{}, alpha_{}, beta_{};
+  struct Cone {
+    double start1, start0, end1, end0;
+  };
+  std::array<Cone, 2> cone_{};
   std::array<Interval, kMaxIntervals> intervals_{};
   int intervalCount_ = 0;
   float mass_ = 0.0f, visibleMass_ = 0.0f;

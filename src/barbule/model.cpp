@@ -5,7 +5,9 @@
 namespace columba {
 
 BarbuleModel::BarbuleModel(const BarbuleParameters& params, BarbuleQuadrature quadrature)
-    : params_(params), geometry_(params.b, params.phi0, params.phi1, params.mu, params.H), rules_(quadrature) {}
+    : params_(params),
+      geometry_(params.b, params.phi0, params.phi1, params.mu, params.H, params.profileExponent),
+      rules_(quadrature) {}
 
 BarbulePointModel BarbuleModel::at(std::optional<BarbuleCrossSection> own, float thicknessUm,
                                    const Wavelengths& wl) const {

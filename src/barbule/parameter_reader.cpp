@@ -45,6 +45,7 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   p.phi1 = props.getFloat("phi_1", p.phi1);
   p.mu = props.getFloat("mu", p.mu);
   p.H = props.getFloat("H", p.H);
+  p.profileExponent = props.getFloat("profile_exponent", p.profileExponent);
   p.height = props.getFloat("height", p.height);
   if (props.has("film_cauchy_a") || props.has("film_cauchy_b")) {
     if (props.has("film_ior"))

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <utility>
+#include "barbule/cross_section.h"
 #include "core/math.h"
 
 namespace columba {
@@ -50,13 +51,21 @@ std::string barbulePresetNames() {
 }
 
 std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
-  const std::pair<const char*, float> numbers[] = {{"b", p.b},   {"phi_0", p.phi0}, {"phi_1", p.phi1},
-                                                   {"mu", p.mu}, {"H", p.H},        {"height", p.height}};
+  const std::pair<const char*, float> numbers[] = {{"b", p.b},
+                                                   {"phi_0", p.phi0},
+                                                   {"phi_1", p.phi1},
+                                                   {"mu", p.mu},
+                                                   {"H", p.H},
+                                                   {"height", p.height},
+                                                   {"profile_exponent", p.profileExponent}};
   for (const auto& [name, value] : numbers)
     if (!std::isfinite(value)) return BarbuleParameterProblem{name, "must be a finite number"};
   if (!(p.b > 0.0f)) return BarbuleParameterProblem{"b", "the cross-section's semi-axis must be positive"};
   if (!(p.H > 0.0f)) return BarbuleParameterProblem{"H", "the barbule spacing must be positive"};
   if (!(p.height >= 0.0f)) return BarbuleParameterProblem{"height", "the film thickness must not be negative"};
+  if (!(p.profileExponent >= 2.0f && p.profileExponent <= kMaxProfileExponent))
+    return BarbuleParameterProblem{"profile_exponent",
+                                   "the cross-section's superellipse exponent must lie in [2, 16] (2: the ellipse)"};
   float arc = p.phi1 - p.phi0;
   if (!(arc > 0.0f && (arc <= kPi || arc >= kTwoPi)))
     return BarbuleParameterProblem{"phi_1", "the reflective arc phi_1 - phi_0 must lie in (0, pi] or be at least 2 pi"};

@@ -16,9 +16,10 @@ struct BarbuleParameters {
   float b = 0.25f;      // cross-section semi-axis along n (the one across is 1)
   float phi0 = -0.37f;  // reflective arc, normal angles in the cross-section's own frame (rad)
   float phi1 = 2.64f;
-  float mu = -0.35f;    // tilt of the cross-section about the barbule axis (rad)
-  float H = 1.25f;      // barbule spacing, in units of the across semi-axis
-  float height = 0.6f;  // keratin cortex (film) thickness, micrometres
+  float mu = -0.35f;             // tilt of the cross-section about the barbule axis (rad)
+  float H = 1.25f;               // barbule spacing, in units of the across semi-axis
+  float profileExponent = 2.0f;  // superellipse exponent of the cross-section: 2, the ellipse
+  float height = 0.6f;           // keratin cortex (film) thickness, micrometres
   RefractiveIndex filmIOR = RefractiveIndex::keratin();
   float extIOR = 1.000277f;  // air
   // Intensity reflectance of the melanin layer under the film; the embedded measured table

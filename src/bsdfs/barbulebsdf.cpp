@@ -10,6 +10,7 @@ Mitsuba 3: not in Mitsuba 3.
 | phi_1 | float | 2.64 | the end of the reflective arc; φ₁ − φ₀ lies in (0, π] or is at least 2π | not in Mitsuba 3 |
 | mu | float or texture | −0.35 | the tilt of the cross-section about the barbule axis, in radians | not in Mitsuba 3 |
 | H | float or texture | 1.25 | the barbule spacing, in units of the across semi-axis; positive | not in Mitsuba 3 |
+| profile_exponent | float | 2 | the cross-section's shape: the superellipse on which (u/b)^p + v^p = 1 in absolute values, with p from 2 (the paper's ellipse) to 16; larger values flatten its sides toward a rectangle with rounded corners, whose flat faces reflect like small mirrors (docs/model.md, "Cross-sections beyond the ellipse") | not in Mitsuba 3 |
 | height | float or texture | 0.6 | the keratin film's thickness in micrometres; not negative (a value that looks like nanometres warns) | not in Mitsuba 3 |
 | film_ior | float, string or spectrum | `keratin` | the film's index: a number, a named index, `keratin`, or a spectrum of the index against wavelength; it must exceed `ext_ior` | not in Mitsuba 3 |
 | film_cauchy_a | float | — | the film's index as a Cauchy law a + b/λ², instead of `film_ior` | not in Mitsuba 3 |
@@ -71,7 +72,7 @@ std::optional<BarbuleCrossSection> BarbuleBSDF::overriddenGeometry(const BSDFCon
     constexpr float kThinnest = 1e-3f;
     const float b = textures_.b.eval(ctx.point);
     return BarbuleCrossSection(b > kThinnest ? b : kThinnest, params.phi0, params.phi1, mu.value_or(params.mu),
-                               H.value_or(params.H));
+                               H.value_or(params.H), params.profileExponent);
   }
   if (!mu && !H) return std::nullopt;
   return model_.geometry().withTiltAndSpacing(mu.value_or(params.mu), H.value_or(params.H));

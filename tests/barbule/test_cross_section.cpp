@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 #include "barbule/cross_section.h"
+#include "barbule/superellipse.h"
 #include "core/rng.h"
 
 using namespace columba;
@@ -12,20 +13,72 @@ namespace {
 
 struct CrossSectionCase {
   float b, H, mu, phi0, phi1;
+  float p = 2.0f;  // superellipse exponent
 };
 
 // The reference scenes' barbules, a rounder tilted one, one packed closer than its contact spacing
-// (raised to it), a circle reflective all round, and a thin one with a wide arc reaching the back.
+// (raised to it), a circle reflective all round, and a thin one with a wide arc reaching the back;
+// then superellipses: the reference shape squarer (p 3 and 4), a rounded rectangle packed at its
+// contact spacing (p 8), a rounded square reflective all round and a thin, nearly rectangular one
+// (p 16).
 const CrossSectionCase kCases[] = {
-    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f}, {0.5f, 2.5f, 0.3f, -1.2f, 1.0f}, {0.35f, 1.0f, 0.6f, -0.5f, 2.0f},
-    {1.0f, 3.0f, 0.0f, -kPi, kPi},         {0.2f, 1.6f, -0.8f, 0.5f, 3.5f},
+    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f},
+    {0.5f, 2.5f, 0.3f, -1.2f, 1.0f},
+    {0.35f, 1.0f, 0.6f, -0.5f, 2.0f},
+    {1.0f, 3.0f, 0.0f, -kPi, kPi},
+    {0.2f, 1.6f, -0.8f, 0.5f, 3.5f},
+    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f, 3.0f},
+    {0.25f, 1.25f, -0.35f, -0.37f, 2.64f, 4.0f},
+    {0.35f, 1.0f, 0.6f, -0.5f, 2.0f, 8.0f},
+    {1.0f, 3.0f, 0.0f, -kPi, kPi, 6.0f},
+    {0.2f, 1.6f, -0.8f, 0.5f, 3.5f, 16.0f},
 };
 
 BarbuleCrossSection makeGeometry(const CrossSectionCase& c) {
-  return BarbuleCrossSection(c.b, c.phi0, c.phi1, c.mu, c.H);
+  return BarbuleCrossSection(c.b, c.phi0, c.phi1, c.mu, c.H, c.p);
 }
 
-// An independent 2D ray caster in double precision: ellipses with semi-axes b (u) and 1 (v),
+double implicitValue(const CrossSectionCase& c, double u, double v) {
+  return std::pow(std::abs(u / c.b), c.p) + std::pow(std::abs(v), c.p);
+}
+
+// Entry and exit of the local ray o + t d (d unit) with the profile |u / b|^p + |v|^p = 1: the
+// ellipse in closed form; a superellipse by golden-section search for the ray's lowest F (F is
+// convex along it) and bisection either side.
+std::optional<std::pair<double, double>> chord(const CrossSectionCase& c, double lx, double ly, double ldx,
+                                               double ldy) {
+  if (c.p == 2.0f) {
+    double ib2 = 1.0 / (double(c.b) * c.b);
+    double A = ldx * ldx * ib2 + ldy * ldy, B = lx * ldx * ib2 + ly * ldy, C = lx * lx * ib2 + ly * ly - 1.0;
+    double disc = B * B - A * C;
+    if (disc < 0) return std::nullopt;
+    return std::make_pair((-B - std::sqrt(disc)) / A, (-B + std::sqrt(disc)) / A);
+  }
+  // Within the circle about the b x 1 box, or not at all.
+  double centre = -(lx * ldx + ly * ldy), reachSqr = double(c.b) * c.b + 1.0;
+  double missSqr = sqr(lx + centre * ldx) + sqr(ly + centre * ldy);
+  if (missSqr >= reachSqr) return std::nullopt;
+  double reach = std::sqrt(reachSqr - missSqr);
+  auto F = [&](double t) { return implicitValue(c, lx + t * ldx, ly + t * ldy); };
+  double lo = centre - reach, hi = centre + reach;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 90; ++i) {
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+    (F(x1) < F(x2) ? hi : lo) = F(x1) < F(x2) ? x2 : x1;
+  }
+  double lowest = 0.5 * (lo + hi);
+  if (!(F(lowest) < 1.0)) return std::nullopt;
+  auto edge = [&](double from, double to) {
+    for (int i = 0; i < 60; ++i) {
+      double mid = 0.5 * (from + to);
+      (F(mid) < 1.0 ? from : to) = mid;
+    }
+    return from;
+  };
+  return std::make_pair(edge(lowest, centre - reach), edge(lowest, centre + reach));
+}
+
+// An independent 2D ray caster in double precision: profiles with semi-axes b (u) and 1 (v),
 // turned by mu, centred at (0, k H) for k = -1, 0, 1.
 struct Hit {
   double t;
@@ -41,15 +94,16 @@ std::optional<Hit> castRay(const CrossSectionCase& c, double H, double ox, doubl
     double px = ox, py = oy - k * H;
     double lx = px * cm + py * sm, ly = -px * sm + py * cm;
     double ldx = dx * cm + dy * sm, ldy = -dx * sm + dy * cm;
-    double ib2 = 1.0 / (double(c.b) * c.b);
-    double A = ldx * ldx * ib2 + ldy * ldy, B = lx * ldx * ib2 + ly * ldy, C = lx * lx * ib2 + ly * ly - 1.0;
-    double disc = B * B - A * C;
-    if (disc < 0) continue;
-    for (double t : {(-B - std::sqrt(disc)) / A, (-B + std::sqrt(disc)) / A}) {
+    std::optional<std::pair<double, double>> ends = chord(c, lx, ly, ldx, ldy);
+    if (!ends) continue;
+    for (double t : {ends->first, ends->second}) {
       if (t <= 1e-9) continue;
       if (!best || t < best->t) {
+        // The normal: F's gradient, (sgn(u) |u / b|^(p-1) / b, sgn(v) |v|^(p-1)).
         double hx = lx + t * ldx, hy = ly + t * ldy;
-        best = Hit{t, k, std::atan2(hy, hx * ib2)};
+        double gu = std::copysign(std::pow(std::abs(hx / c.b), c.p - 1.0) / c.b, hx);
+        double gv = std::copysign(std::pow(std::abs(hy), c.p - 1.0), hy);
+        best = Hit{t, k, std::atan2(gv, gu)};
       }
       break;
     }
@@ -69,10 +123,11 @@ Vec2 unit(double angle) { return Vec2(float(std::cos(angle)), float(std::sin(ang
 }  // namespace
 
 TEST(CrossSection, LitExtentAndCoverageMatchABruteForceRayCasterSlow) {
-  const int rays = 40000;
-  const double range = 3.0, spacing = 2.0 * range / rays;
   int checked = 0;
   for (const CrossSectionCase& c : kCases) {
+    // A superellipse's rays cost a search each: fewer of them, and tolerances to match.
+    const int rays = c.p == 2.0f ? 40000 : 4000;
+    const double range = 3.0, spacing = 2.0 * range / rays;
     BarbuleCrossSection geometry = makeGeometry(c);
     double H = geometry.spacing();
     for (int g = 0; g < 72; ++g) {
@@ -153,7 +208,7 @@ TEST(CrossSection, RayEllipseIntersectionMatchesTheImplicitEquation) {
       if (!t) continue;
       EXPECT_NEAR(*t, expected->t, 1e-4);
       Vec2 local = geometry.toLocal(origin + dir * *t);
-      EXPECT_NEAR(sqr(local.x / c.b) + sqr(local.y), 1.0f, 1e-4f);
+      EXPECT_NEAR(implicitValue(c, local.x, local.y), 1.0, 1e-4 * c.p);
     }
   }
 }
@@ -168,7 +223,7 @@ TEST(CrossSection, PointsNormalsAndOffsetsAreConsistent) {
         float h = -arc.halfWidth + 2.0f * arc.halfWidth * i / 50.0f;
         Vec2 p = geometry.pointAt(arc, h);
         EXPECT_NEAR(dot2(p, arc.across), h, 1e-5f);
-        EXPECT_NEAR(sqr(p.x / c.b) + sqr(p.y), 1.0f, 1e-4f);
+        EXPECT_NEAR(implicitValue(c, p.x, p.y), 1.0, 1e-4 * c.p);
         Vec2 n = geometry.normalAt(p);
         EXPECT_GE(dot2(n, arc.toward), -1e-4f);  // the side the ray meets first faces it
         Vec2 back = geometry.pointWithNormal(n);
@@ -206,26 +261,113 @@ TEST(CrossSection, NormalsAtFourOffsetsAreTheOnesOfOneAtATime) {
 }
 
 TEST(CrossSection, ProjectedCurvatureIntegratesToTheLitWidthSlow) {
-  // dh = rho(phi) cos(gamma - phi - mu) dphi: the identity behind D_phi = rho / H.
-  const int steps = 200000;
+  // dh = rho(phi) cos(gamma - phi - mu) dphi: the identity behind D_phi = rho / H. On a superellipse
+  // rho is infinite where the normal points along an axis (like |phi - axis|^(-(p-2)/(p-1))): each
+  // quarter is integrated in s with phi = axis + (pi/2) s^3 (10 - 15 s + 6 s^2), whose derivative
+  // vanishes like s^2 there, enough for p up to 4; steeper profiles are checked by
+  // RadiusOfCurvatureIsHowFastThePointTurns.
+  const int steps = 50000;
   for (const CrossSectionCase& c : kCases) {
+    if (c.p > 4.0f) continue;
     BarbuleCrossSection geometry = makeGeometry(c);
     for (int g = 0; g < 24; ++g) {
       Vec2 toward = unit(-M_PI + (g + 0.5) * (2.0 * M_PI / 24));
       LitArc arc = geometry.litArc(toward);
       double facing = 0.0, lit = 0.0;
-      for (int i = 0; i < steps; ++i) {
-        Vec2 n = unit(2.0 * M_PI * (i + 0.5) / steps);
-        double projected = dot2(n, arc.toward);
-        if (projected <= 0.0) continue;
-        double dh = geometry.radiusOfCurvature(n) * projected * (2.0 * M_PI / steps);
-        facing += dh;
-        if (geometry.isLit(arc, n)) lit += dh;
-      }
+      for (int quarter = 0; quarter < 4; ++quarter)
+        for (int i = 0; i < steps; ++i) {
+          double s = (i + 0.5) / steps;
+          double phi = quarter * M_PI / 2 + M_PI / 2 * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+          double dphi = M_PI / 2 * 30.0 * s * s * (1.0 - s) * (1.0 - s) / steps;
+          Vec2 n = unit(phi);
+          double projected = dot2(n, arc.toward);
+          if (projected <= 0.0) continue;
+          double dh = geometry.radiusOfCurvature(n) * projected * dphi;
+          facing += dh;
+          if (geometry.isLit(arc, n)) lit += dh;
+        }
+      SCOPED_TRACE("b " + std::to_string(c.b) + " p " + std::to_string(c.p) + " g " + std::to_string(g));
       EXPECT_NEAR(facing, 2.0 * arc.halfWidth, 1e-3);
       EXPECT_NEAR(lit, arc.width(), 1e-3);
     }
   }
+}
+
+TEST(CrossSection, RadiusOfCurvatureIsHowFastThePointTurns) {
+  // rho = |d x(n) / d phi| for the point x(n) with normal angle phi, by central differences in
+  // double precision, away from the axes (where rho grows without bound for p > 2).
+  PCG32 rng(31);
+  for (double p : {2.0, 3.0, 4.0, 8.0, 16.0})
+    for (double b : {0.2, 0.35, 1.0}) {
+      Superellipse profile(b, p);
+      for (int i = 0; i < 2000; ++i) {
+        double phi = 2.0 * M_PI * rng.nextDouble();
+        if (std::abs(std::sin(2.0 * phi)) < 0.05) continue;
+        const double eps = 1e-6;
+        Vec2d a = profile.pointWithNormal({std::cos(phi - eps), std::sin(phi - eps)});
+        Vec2d z = profile.pointWithNormal({std::cos(phi + eps), std::sin(phi + eps)});
+        double expected = std::hypot(z.x - a.x, z.y - a.y) / (2.0 * eps);
+        double rho = profile.radiusOfCurvature({std::cos(phi), std::sin(phi)});
+        ASSERT_NEAR(rho, expected, 1e-5 * expected + 1e-8) << "p " << p << " b " << b << " phi " << phi;
+        // The point lies on the profile, its normal is n, and its projection on n is the support.
+        Vec2d x = profile.pointWithNormal({std::cos(phi), std::sin(phi)});
+        EXPECT_NEAR(profile.implicit(x), 1.0, 1e-12);
+        Vec2d g = profile.gradient(x);
+        EXPECT_NEAR(std::atan2(g.y, g.x), std::atan2(std::sin(phi), std::cos(phi)), 1e-9);
+        EXPECT_NEAR(x.x * std::cos(phi) + x.y * std::sin(phi), profile.support({std::cos(phi), std::sin(phi)}), 1e-12);
+      }
+    }
+}
+
+TEST(CrossSection, TheSuperellipseOfExponentTwoIsTheEllipse) {
+  // The superellipse's general formulas against the ellipse's closed forms.
+  for (float b : {0.25f, 0.6f})
+    for (int i = 0; i < 64; ++i) {
+      double phi = 2.0 * M_PI * (i + 0.5) / 64;
+      Vec2d n{std::cos(phi), std::sin(phi)};
+      Superellipse profile(b, 2.0);
+      double bb = double(b) * b, s = std::sqrt(bb * n.x * n.x + n.y * n.y);
+      Vec2d x = profile.pointWithNormal(n);
+      EXPECT_NEAR(x.x, bb * n.x / s, 1e-12);
+      EXPECT_NEAR(x.y, n.y / s, 1e-12);
+      EXPECT_NEAR(profile.support(n), s, 1e-12);
+      EXPECT_NEAR(profile.radiusOfCurvature(n), bb / (s * s * s), 1e-9);
+    }
+}
+
+TEST(CrossSection, TangentsFromAPointBoundTheRaysThatMeetTheProfile) {
+  // Rays from an outside point meet the profile exactly when they lie between its two tangents,
+  // against the independent ray caster.
+  PCG32 rng(37);
+  int met = 0, missed = 0;
+  for (const CrossSectionCase& c : kCases) {
+    if (c.p == 2.0f) continue;
+    Superellipse profile(c.b, c.p);
+    CrossSectionCase alone = c;
+    alone.mu = 0.0f;
+    for (int i = 0; i < 400; ++i) {
+      Vec2d e{4.0 * rng.nextDouble() - 2.0, 4.0 * rng.nextDouble() - 2.0};
+      if (profile.implicit(e) < 1.02) continue;
+      Superellipse::Tangents t = profile.tangentPoints(e);
+      // The tangent points lie on the profile, the lines from e touch it there.
+      EXPECT_NEAR(profile.implicit(t.first), 1.0, 1e-9);
+      EXPECT_NEAR(profile.implicit(t.second), 1.0, 1e-9);
+      Vec2d d1{t.first.x - e.x, t.first.y - e.y}, d2{t.second.x - e.x, t.second.y - e.y};
+      for (int k = 0; k < 50; ++k) {
+        double angle = 2.0 * M_PI * rng.nextDouble();
+        Vec2d v{std::cos(angle), std::sin(angle)};
+        bool between = d1.x * v.y - d1.y * v.x >= 0.0 && v.x * d2.y - v.y * d2.x >= 0.0;
+        double a1 = std::atan2(d1.x * v.y - d1.y * v.x, d1.x * v.x + d1.y * v.y);
+        double a2 = std::atan2(v.x * d2.y - v.y * d2.x, v.x * d2.x + v.y * d2.y);
+        if (std::abs(a1) < 1e-4 || std::abs(a2) < 1e-4) continue;           // grazing
+        std::optional<Hit> hit = castRay(alone, 1e15, e.x, e.y, v.x, v.y);  // neighbours out of reach
+        ASSERT_EQ(between, hit.has_value()) << "p " << c.p << " e " << e.x << " " << e.y << " angle " << angle;
+        (between ? met : missed) += 1;
+      }
+    }
+  }
+  EXPECT_GT(met, 2000);
+  EXPECT_GT(missed, 20000);
 }
 
 TEST(CrossSection, CommonOffsetsAreThePointsLitFromBothDirections) {
@@ -268,4 +410,13 @@ TEST(CrossSection, NeighboursAreRaisedToTheContactSpacing) {
   EXPECT_EQ(BarbuleCrossSection(b, -0.5f, 2.0f, mu, 0.5f * contact).spacing(), contact);
   EXPECT_EQ(BarbuleCrossSection(b, -0.5f, 2.0f, mu, 2.0f * contact).spacing(), 2.0f * contact);
   EXPECT_THROW(BarbuleCrossSection(b, 0.0f, 4.0f, mu, 1.0f), std::invalid_argument);
+  // A superellipse's contact: half the offset on its profile, |u / b|^p + |v|^p = 1.
+  for (float p : {3.0f, 8.0f}) {
+    float squareContact = BarbuleCrossSection::contactSpacing(b, mu, p);
+    Vec2 squareHalf = BarbuleCrossSection(b, -0.5f, 2.0f, mu, 0.0f, p).toLocal({0.0f, 0.5f * squareContact});
+    EXPECT_NEAR(std::pow(std::abs(squareHalf.x / b), p) + std::pow(std::abs(squareHalf.y), p), 1.0f, 1e-5f);
+    EXPECT_GT(squareContact, contact);  // the squarer profile reaches further
+  }
+  EXPECT_THROW(BarbuleCrossSection(b, -0.5f, 2.0f, mu, 1.0f, 1.5f), std::invalid_argument);
+  EXPECT_THROW(BarbuleCrossSection(b, -0.5f, 2.0f, mu, 1.0f, 17.0f), std::invalid_argument);
 }

@@ -63,6 +63,13 @@ BarbuleParameters layered() {
   return p;
 }
 
+// The reference barbule with a squarer, superellipse cross-section.
+BarbuleParameters squarer(float exponent) {
+  BarbuleParameters p = reference(0.58f);
+  p.profileExponent = exponent;
+  return p;
+}
+
 BarbuleParameters withoutMelanin() {
   BarbuleParameters p = reference(0.59f);
   p.melanin = SpectralDistribution::constant(0.0f);
@@ -354,7 +361,7 @@ LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
 // |cos theta_o| / pi on the normal's front side, visible from omega_o), from the film and the
 // cross-section geometry directly rather than through the BSDF's lobes and their Jacobians.
 LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
-  BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H);
+  BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H, p.profileExponent);
   // The film: the cortex alone, whose transmittance is 1 - R, or with layers under it, whose
   // transmittance (absorbing layers take their share) comes from the transfer matrices.
   BarbuleFilm film(p, p.height, kWavelengths);
@@ -480,6 +487,66 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeansSlow) {
               sumRatioTRT / ratiosTRT, ratiosTRT);
   EXPECT_NEAR(sumRatioR / ratiosR, kMeanRatioR, kMeanRatioBand);
   EXPECT_NEAR(sumRatioTRT / ratiosTRT, kMeanRatioTRT, kMeanRatioBand);
+}
+
+// Superellipse cross-sections. Where a flat side's normal points along an axis the radius of
+// curvature, and with it the normal distribution and the pdf, grows without bound (like
+// |phi - axis|^(-(p-2)/(p-1))): an integrable singularity along a curve of directions. The
+// midpoint quadratures of the tests above misjudge such a curve's mass by a few per cent (at
+// normal incidence, p 3, the curve runs along one column of 48 x 48 chi-square bins, whose
+// expected counts then alternate 5167, 4113, 4383 against a flat 4,700 observed). So here: the
+// chi-square test at p 3 and 4 and oblique directions, whose curves cross the bins, with 32 x 32
+// quadrature points per bin (at p 8 the singularity, near |phi|^(-6/7), defeats any bin
+// quadrature: p-values collapse to 0 where the furnace below agrees); and the white furnace by
+// the sample weights' mean (T included) against the independent means over visible normals,
+// which need no pdf, at p 3 and p 8 (a rounded rectangle), normal incidence included.
+TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
+  const BSDFContext ctx;
+  const std::vector<Vec3> oblique = {direction(30.0f, 20.0f), direction(60.0f, 110.0f), direction(80.0f, 250.0f)};
+  const double threshold = sidak(0.01, 6);
+  for (float exponent : {3.0f, 4.0f}) {
+    BarbuleBSDF bsdf(squarer(exponent));
+    for (const Vec3& wi : oblique) {
+      ChiSquareResult result = chiSquareDirectionTest(
+          [&](PCG32& rng) -> std::optional<Vec3> {
+            float uComponent = rng.nextFloat();
+            Vec2 u(rng.nextFloat(), rng.nextFloat());
+            auto s = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
+            if (!s || s->passThrough) return std::nullopt;
+            return axisAsPole(s->wo);
+          },
+          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 60000, 20, 20, 32);
+      std::printf("superellipse p %g wi (%6.3f %6.3f %6.3f): chi-square p = %.3g\n", exponent, wi.x, wi.y, wi.z,
+                  result.pValue);
+      EXPECT_GT(result.pValue, threshold) << "p " << exponent << ": " << result.message;
+    }
+  }
+  for (float exponent : {3.0f, 8.0f}) {
+    BarbuleBSDF bsdf(squarer(exponent));
+    for (const Vec3& wi : {direction(0.0f, 0.0f), direction(60.0f, 110.0f)}) {
+      float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
+      LobeAlbedo expected = visibleNormalMeans(squarer(exponent), wi);
+      PCG32 rng(5, 9);
+      const int n = 100000;
+      Spectrum mean(0.0f), meanSqr(0.0f);
+      for (int i = 0; i < n; ++i) {
+        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+        if (!s) continue;
+        mean += s->weight / float(n);
+        meanSqr += s->weight * s->weight / float(n);
+      }
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        float total = expected.reflection[k] + expected.trt[k] + t;
+        float sigma = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
+        std::printf(
+            "  p %g wi (%6.3f %6.3f %6.3f) %3.0f nm: means R %.5f TRT %.5f t %.4f total %.5f, MC %.5f +- %.5f\n",
+            exponent, wi.x, wi.y, wi.z, kWavelengths[k], expected.reflection[k], expected.trt[k], t, total, mean[k],
+            sigma);
+        EXPECT_NEAR(mean[k], total, 4.0f * sigma + 5e-3f * (total - t));
+        EXPECT_LE(total, 1.0f + 1e-4f);
+      }
+    }
+  }
 }
 
 // Each lobe estimated by its own samples is unbiased against any function of omega_o, not only in
