@@ -82,6 +82,41 @@ void BM_BarbuleSample(benchmark::State& state) {
 }
 BENCHMARK(BM_BarbuleSample);
 
+// Evaluation and sampling with a superellipse cross-section of exponent state.range(0) (2: the
+// ellipse's closed forms), whose ray points and masking tangents are solved numerically.
+BarbuleBSDF profileBSDF(int exponent) {
+  BarbuleParameters p;
+  p.height = 0.58f;
+  p.profileExponent = float(exponent);
+  return BarbuleBSDF(p);
+}
+
+void BM_BarbuleEvalProfile(benchmark::State& state) {
+  BarbuleBSDF bsdf = profileBSDF(int(state.range(0)));
+  const std::vector<Query>& q = queries();
+  BSDFContext ctx;
+  size_t i = 0;
+  for (auto _ : state) {
+    const Query& x = q[i++ & 4095];
+    benchmark::DoNotOptimize(bsdf.eval(ctx, x.wi, x.wo, x.wl));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BarbuleEvalProfile)->Arg(2)->Arg(4)->Arg(8);
+
+void BM_BarbuleSampleProfile(benchmark::State& state) {
+  BarbuleBSDF bsdf = profileBSDF(int(state.range(0)));
+  const std::vector<Query>& q = queries();
+  BSDFContext ctx;
+  size_t i = 0;
+  for (auto _ : state) {
+    const Query& x = q[i++ & 4095];
+    benchmark::DoNotOptimize(bsdf.sample(ctx, x.wi, x.wl, x.uComponent, x.u));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BarbuleSampleProfile)->Arg(2)->Arg(4)->Arg(8);
+
 // Evaluation with per-point overrides, as on a feather with per-vertex H, mu and height.
 void BM_BarbuleEvalOverrides(benchmark::State& state) {
   BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role::CameraIncident);

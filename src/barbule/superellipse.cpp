@@ -73,34 +73,50 @@ double Superellipse::radiusOfCurvature(Vec2d n) const {
 
 Vec2d Superellipse::pointAtOffset(Vec2d d, double h) const {
   // Along the line x(s) = h e + s d, G(s) = F(x(s)) - 1 is convex: Newton's method from beyond the
-  // profile (s = support(d), where G >= 0) descends monotonically onto the largest root, never
-  // past it. Where the line grazes the profile (h at the silhouette) the root is nearly double
-  // and the convergence linear, so the steps are many but bounded; where rounding makes it miss,
-  // a step passes the line's lowest F, and that lowest point (the silhouette) is the answer.
-  // Solving for the normal angle instead is ill-conditioned: along a flat side a whole stretch of
-  // offsets shares normals within 1e-30.
+  // profile (where the line leaves the b x 1 box around it, G >= 0) descends monotonically onto
+  // the largest root, never past it. Where the line grazes the profile (h at the silhouette) the
+  // root is nearly double and the convergence linear, so the steps are many but bounded; where
+  // rounding makes it miss, a step passes the line's lowest F, and that lowest point (the
+  // silhouette) is the answer. Solving for the normal angle instead is ill-conditioned: along a
+  // flat side a whole stretch of offsets shares normals within 1e-30.
   const Vec2d e{-d.y, d.x};
   const double halfWidth = support(e);
   h = std::clamp(h, -halfWidth, halfWidth);
   auto at = [&](double s) { return Vec2d{h * e.x + s * d.x, h * e.y + s * d.y}; };
-  auto slopeAt = [&](double s) { return dot(gradient(at(s)), d); };
-  double s = support(d);
+  // G + 1 and G' / p at s, from one power per coordinate.
+  auto evaluate = [&](double s, double& value, double& slope) {
+    const Vec2d x = at(s);
+    const double u = std::abs(x.x / b_), v = std::abs(x.y);
+    const double uPower = std::pow(u, p_ - 1.0), vPower = std::pow(v, p_ - 1.0);
+    value = uPower * u + vPower * v;
+    slope = std::copysign(uPower, x.x) / b_ * d.x + std::copysign(vPower, x.y) * d.y;
+  };
+  double s = support(d);  // beyond the profile along d; the box's exit is nearer where the line has one
+  const double half[2] = {b_, 1.0}, origin[2] = {h * e.x, h * e.y}, along[2] = {d.x, d.y};
+  for (int axis = 0; axis < 2; ++axis)
+    if (along[axis] != 0.0) s = std::min(s, (std::copysign(half[axis], along[axis]) - origin[axis]) / along[axis]);
+  double value, slope;
+  evaluate(s, value, slope);
   for (int i = 0; i < 200; ++i) {
-    const double value = implicit(at(s)) - 1.0, slope = p_ * slopeAt(s);
-    if (!(value > 0.0) || !(slope > 0.0)) break;  // on the profile
-    const double next = s - value / slope;
-    if (!(slopeAt(next) > 0.0)) {
+    if (!(value > 1.0) || !(slope > 0.0)) break;  // on the profile
+    const double next = s - (value - 1.0) / (p_ * slope);
+    double nextValue, nextSlope;
+    evaluate(next, nextValue, nextSlope);
+    if (!(nextSlope > 0.0)) {
       // Past the lowest F without meeting the profile: bisect for the lowest point.
       double lo = next, hi = s;
       for (int k = 0; k < 100; ++k) {
         const double mid = 0.5 * (lo + hi);
-        (slopeAt(mid) > 0.0 ? hi : lo) = mid;
+        evaluate(mid, nextValue, nextSlope);
+        (nextSlope > 0.0 ? hi : lo) = mid;
       }
       return at(hi);
     }
     const double step = s - next;
     s = next;
-    if (step <= 1e-15 * (std::abs(s) + 1.0)) break;
+    value = nextValue;
+    slope = nextSlope;
+    if (step <= 1e-10 * (std::abs(s) + 1.0)) break;  // well below float resolution
   }
   return at(s);
 }

@@ -397,7 +397,8 @@ TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirDataSlow) {
   // The run's record: the version, every parameter and the peaks.
   std::stringstream json;
   json << std::ifstream(dir_ / "bsdf.json").rdbuf();
-  for (const char* key : {"\"columba_version\"", "\"height_um\": 0.58", "\"preset\": \"dove-green\"", "\"R_peaks_nm\""})
+  for (const char* key : {"\"columba_version\"", "\"height_um\": 0.58", "\"preset\": \"dove-green\"", "\"R_peaks_nm\"",
+                          "\"profile_exponent\": 2.0"})
     EXPECT_NE(json.str().find(key), std::string::npos) << key;
   // The spectral hemisphere: RGB plus four bins over 400-700 nm.
   columba::Image hemisphere = columba::readEXR((dir_ / "bsdf_hemisphere_theta30.exr").string());
@@ -408,6 +409,11 @@ TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirDataSlow) {
   EXPECT_NE(bad.output.find("--H: the barbule spacing must be positive"), std::string::npos) << bad.output;
   CommandResult preset = run("bsdf --preset dove-blue -o " + dir_.string());
   EXPECT_NE(preset.output.find("dove-green, dove-purple"), std::string::npos) << preset.output;
+  CommandResult exponent = run("bsdf --profile-exponent 20 --mode specular -o " + dir_.string());
+  EXPECT_NE(exponent.status, 0);
+  EXPECT_NE(exponent.output.find("--profile-exponent: the cross-section's superellipse exponent must lie in [2, 16]"),
+            std::string::npos)
+      << exponent.output;
 }
 
 TEST_F(CliTest, MontageTakesOneLabelPerImageSlow) {
