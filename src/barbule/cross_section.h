@@ -44,8 +44,8 @@ struct OffsetInterval {
   float length() const { return hi > lo ? hi - lo : 0.0f; }
 };
 
-// The largest superellipse exponent taken: the profile is then within 3 % of its bounding
-// rectangle along the diagonal (2^(-1/16)).
+// The largest superellipse exponent taken: along the diagonal the profile then reaches 2^(-1/16),
+// 96 % of the way to its bounding rectangle's corner.
 inline constexpr float kMaxProfileExponent = 16.0f;
 
 class BarbuleCrossSection {
