@@ -37,16 +37,17 @@ const std::vector<Query>& queries() {
   return all;
 }
 
-BarbuleBSDF referenceBSDF(BarbuleBSDF::Role role) {
+// The reference scenes' barbule; `exponent` above 2 makes its cross-section a superellipse.
+BarbuleBSDF referenceBSDF(BarbuleBSDF::Role role, float exponent = 2.0f) {
   BarbuleParameters p;
   p.height = 0.58f;
+  p.profileExponent = exponent;
   return BarbuleBSDF(p, role);
 }
 
-void BM_BarbuleEval(benchmark::State& state) {
-  BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role(state.range(0)));
+// eval, and sample, on the queries in turn.
+void timeEval(benchmark::State& state, const BarbuleBSDF& bsdf, const BSDFContext& ctx = {}) {
   const std::vector<Query>& q = queries();
-  BSDFContext ctx;
   size_t i = 0;
   for (auto _ : state) {
     const Query& x = q[i++ & 4095];
@@ -54,6 +55,18 @@ void BM_BarbuleEval(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+void timeSample(benchmark::State& state, const BarbuleBSDF& bsdf) {
+  const std::vector<Query>& q = queries();
+  BSDFContext ctx;
+  size_t i = 0;
+  for (auto _ : state) {
+    const Query& x = q[i++ & 4095];
+    benchmark::DoNotOptimize(bsdf.sample(ctx, x.wi, x.wl, x.uComponent, x.u));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_BarbuleEval(benchmark::State& state) { timeEval(state, referenceBSDF(BarbuleBSDF::Role(state.range(0)))); }
 BENCHMARK(BM_BarbuleEval)->Arg(int(BarbuleBSDF::Role::CameraIncident))->Arg(int(BarbuleBSDF::Role::LightIncident));
 
 void BM_BarbulePdf(benchmark::State& state) {
@@ -69,69 +82,29 @@ void BM_BarbulePdf(benchmark::State& state) {
 }
 BENCHMARK(BM_BarbulePdf);
 
-void BM_BarbuleSample(benchmark::State& state) {
-  BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role::CameraIncident);
-  const std::vector<Query>& q = queries();
-  BSDFContext ctx;
-  size_t i = 0;
-  for (auto _ : state) {
-    const Query& x = q[i++ & 4095];
-    benchmark::DoNotOptimize(bsdf.sample(ctx, x.wi, x.wl, x.uComponent, x.u));
-  }
-  state.SetItemsProcessed(state.iterations());
-}
+void BM_BarbuleSample(benchmark::State& state) { timeSample(state, referenceBSDF(BarbuleBSDF::Role::CameraIncident)); }
 BENCHMARK(BM_BarbuleSample);
 
 // Evaluation and sampling with a superellipse cross-section of exponent state.range(0) (2: the
 // ellipse's closed forms), whose ray points and masking tangents are solved numerically.
-BarbuleBSDF profileBSDF(int exponent) {
-  BarbuleParameters p;
-  p.height = 0.58f;
-  p.profileExponent = float(exponent);
-  return BarbuleBSDF(p);
-}
-
 void BM_BarbuleEvalProfile(benchmark::State& state) {
-  BarbuleBSDF bsdf = profileBSDF(int(state.range(0)));
-  const std::vector<Query>& q = queries();
-  BSDFContext ctx;
-  size_t i = 0;
-  for (auto _ : state) {
-    const Query& x = q[i++ & 4095];
-    benchmark::DoNotOptimize(bsdf.eval(ctx, x.wi, x.wo, x.wl));
-  }
-  state.SetItemsProcessed(state.iterations());
+  timeEval(state, referenceBSDF(BarbuleBSDF::Role::CameraIncident, float(state.range(0))));
 }
 BENCHMARK(BM_BarbuleEvalProfile)->Arg(2)->Arg(4)->Arg(8);
 
 void BM_BarbuleSampleProfile(benchmark::State& state) {
-  BarbuleBSDF bsdf = profileBSDF(int(state.range(0)));
-  const std::vector<Query>& q = queries();
-  BSDFContext ctx;
-  size_t i = 0;
-  for (auto _ : state) {
-    const Query& x = q[i++ & 4095];
-    benchmark::DoNotOptimize(bsdf.sample(ctx, x.wi, x.wl, x.uComponent, x.u));
-  }
-  state.SetItemsProcessed(state.iterations());
+  timeSample(state, referenceBSDF(BarbuleBSDF::Role::CameraIncident, float(state.range(0))));
 }
 BENCHMARK(BM_BarbuleSampleProfile)->Arg(2)->Arg(4)->Arg(8);
 
 // Evaluation with per-point overrides, as on a feather with per-vertex H, mu and height.
 void BM_BarbuleEvalOverrides(benchmark::State& state) {
   BarbuleBSDF bsdf = referenceBSDF(BarbuleBSDF::Role::CameraIncident);
-  const std::vector<Query>& q = queries();
   SurfaceAttributes point;
   point.set(kBarbuleSpacingAttribute, 1.4f);
   point.set(kBarbuleTiltAttribute, -0.3f);
   point.set(kCortexThicknessAttribute, 0.62f);
-  const BSDFContext ctx{TexturePoint(Vec2(), &point), Vec3(), Vec3()};
-  size_t i = 0;
-  for (auto _ : state) {
-    const Query& x = q[i++ & 4095];
-    benchmark::DoNotOptimize(bsdf.eval(ctx, x.wi, x.wo, x.wl));
-  }
-  state.SetItemsProcessed(state.iterations());
+  timeEval(state, bsdf, BSDFContext{TexturePoint(Vec2(), &point), Vec3(), Vec3()});
 }
 BENCHMARK(BM_BarbuleEvalOverrides);
 

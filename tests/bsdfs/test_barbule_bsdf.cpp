@@ -113,6 +113,25 @@ Vec3 fromAxisAsPole(const Vec3& v) { return {v.y, v.z, v.x}; }
 
 double sidak(double familyAlpha, int tests) { return 1.0 - std::pow(1.0 - familyAlpha, 1.0 / tests); }
 
+// The chi-square test of the scattering samples from wi (pass-through left out) against pdf(), on
+// bins x bins cells around the barbule axis, each integrated with quadrature x quadrature points;
+// `scattered` counts the samples that scattered.
+ChiSquareResult scatteringChiSquare(const BarbuleBSDF& bsdf, const Vec3& wi, int samples, int bins, int quadrature,
+                                    int* scattered = nullptr) {
+  const BSDFContext ctx;
+  return chiSquareDirectionTest(
+      [&](PCG32& rng) -> std::optional<Vec3> {
+        float uComponent = rng.nextFloat();
+        Vec2 u(rng.nextFloat(), rng.nextFloat());
+        auto s = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
+        if (!s || s->passThrough) return std::nullopt;
+        if (scattered) ++*scattered;
+        return axisAsPole(s->wo);
+      },
+      [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, samples, bins, bins,
+      quadrature);
+}
+
 }  // namespace
 
 namespace {
@@ -152,17 +171,7 @@ TEST(BarbuleBSDF, SampledDirectionsFollowThePdfSlow) {
     double minP = 1.0;
     for (const Vec3& wi : fewerForLayered(set, incident)) {
       int scattered = 0;
-      ChiSquareResult result = chiSquareDirectionTest(
-          [&](PCG32& rng) -> std::optional<Vec3> {
-            float uComponent = rng.nextFloat();
-            Vec2 u(rng.nextFloat(), rng.nextFloat());
-            auto s = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
-            if (!s || s->passThrough) return std::nullopt;
-            ++scattered;
-            return axisAsPole(s->wo);
-          },
-          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 150000, 48, 48,
-          10);
+      ChiSquareResult result = scatteringChiSquare(bsdf, wi, 150000, 48, 10, &scattered);
       std::printf("  %-18s wi (%6.3f %6.3f %6.3f): %6d scattered, p = %.3g\n", set.name, wi.x, wi.y, wi.z, scattered,
                   result.pValue);
       EXPECT_GT(result.pValue, threshold)
@@ -419,6 +428,27 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
   return out;
 }
 
+// The mean of 100,000 sample weights from wi (T included) with its standard error, per wavelength.
+struct WeightMean {
+  Spectrum mean, sigma;
+};
+WeightMean meanSampleWeight(const BarbuleBSDF& bsdf, const Vec3& wi) {
+  const BSDFContext ctx;
+  PCG32 rng(5, 9);
+  const int n = 100000;
+  Spectrum mean(0.0f), meanSqr(0.0f);
+  for (int i = 0; i < n; ++i) {
+    auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
+    if (!s) continue;
+    mean += s->weight / float(n);
+    meanSqr += s->weight * s->weight / float(n);
+  }
+  WeightMean out{mean, Spectrum(0.0f)};
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    out.sigma[k] = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
+  return out;
+}
+
 }  // namespace
 
 // The two quadratures (of eval over directions, and of the lobes' means over visible normals)
@@ -447,19 +477,12 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeansSlow) {
       LobeAlbedo integral = integrateLobes(bsdf, wi), expected = visibleNormalMeans(set.params, wi);
 
       // The expected value of the sample weight (T included) is the same total, by Monte Carlo.
-      PCG32 rng(5, 9);
-      const int n = 100000;
-      Spectrum mean(0.0f), meanSqr(0.0f);
-      for (int i = 0; i < n; ++i) {
-        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
-        if (!s) continue;
-        mean += s->weight / float(n);
-        meanSqr += s->weight * s->weight / float(n);
-      }
+      const WeightMean weights = meanSampleWeight(bsdf, wi);
+      const Spectrum& mean = weights.mean;
       for (int k = 0; k < kSpectrumSamples; ++k) {
         float total = integral.reflection[k] + integral.trt[k] + t;
         float predicted = expected.reflection[k] + expected.trt[k] + t;
-        float sigma = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
+        float sigma = weights.sigma[k];
         std::printf(
             "  %-18s wi (%6.3f %6.3f %6.3f) %3.0f nm: R %.5f (means %.5f) TRT %.5f (means %.5f) t %.4f total "
             "%.5f, MC %.5f +- %.5f\n",
@@ -507,15 +530,7 @@ TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
   for (float exponent : {3.0f, 4.0f}) {
     BarbuleBSDF bsdf(squarer(exponent));
     for (const Vec3& wi : oblique) {
-      ChiSquareResult result = chiSquareDirectionTest(
-          [&](PCG32& rng) -> std::optional<Vec3> {
-            float uComponent = rng.nextFloat();
-            Vec2 u(rng.nextFloat(), rng.nextFloat());
-            auto s = bsdf.sample(ctx, wi, kWavelengths, uComponent, u);
-            if (!s || s->passThrough) return std::nullopt;
-            return axisAsPole(s->wo);
-          },
-          [&](const Vec3& w) { return double(bsdf.pdf(ctx, wi, fromAxisAsPole(w), kWavelengths)); }, 60000, 20, 20, 32);
+      ChiSquareResult result = scatteringChiSquare(bsdf, wi, 60000, 20, 32);
       std::printf("superellipse p %g wi (%6.3f %6.3f %6.3f): chi-square p = %.3g\n", exponent, wi.x, wi.y, wi.z,
                   result.pValue);
       EXPECT_GT(result.pValue, threshold) << "p " << exponent << ": " << result.message;
@@ -526,18 +541,11 @@ TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
     for (const Vec3& wi : {direction(0.0f, 0.0f), direction(60.0f, 110.0f)}) {
       float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
       LobeAlbedo expected = visibleNormalMeans(squarer(exponent), wi);
-      PCG32 rng(5, 9);
-      const int n = 100000;
-      Spectrum mean(0.0f), meanSqr(0.0f);
-      for (int i = 0; i < n; ++i) {
-        auto s = bsdf.sample(ctx, wi, kWavelengths, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()));
-        if (!s) continue;
-        mean += s->weight / float(n);
-        meanSqr += s->weight * s->weight / float(n);
-      }
+      const WeightMean weights = meanSampleWeight(bsdf, wi);
+      const Spectrum& mean = weights.mean;
       for (int k = 0; k < kSpectrumSamples; ++k) {
         float total = expected.reflection[k] + expected.trt[k] + t;
-        float sigma = std::sqrt(std::max(meanSqr[k] - mean[k] * mean[k], 0.0f) / n);
+        float sigma = weights.sigma[k];
         std::printf(
             "  p %g wi (%6.3f %6.3f %6.3f) %3.0f nm: means R %.5f TRT %.5f t %.4f total %.5f, MC %.5f +- %.5f\n",
             exponent, wi.x, wi.y, wi.z, kWavelengths[k], expected.reflection[k], expected.trt[k], t, total, mean[k],

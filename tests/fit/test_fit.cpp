@@ -200,19 +200,24 @@ TEST(SceneFit, NamesAVariableTheSceneDoesNotUse) {
   }
 }
 
-TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
-  // Specular spectra at three light angles, 400-700 nm every 5 nm, 2 % relative noise.
-  BarbuleParameters truth = barbuleParametersWith({{"height", 0.53}, {"b", 0.3}});
+namespace {
+// The model's specular spectra at three light angles, 400-700 nm every 5 nm, with 2 % relative noise.
+std::vector<SpectraSample> noisySpecularSpectra(const BarbuleParameters& truth, unsigned seed) {
   std::vector<SpectraSample> samples;
   for (float theta : {10.0f, 30.0f, 50.0f})
     for (float lambda = 400.0f; lambda <= 700.0f; lambda += 5.0f)
       samples.push_back({theta, 0.0f, theta, 180.0f, lambda, 0.0f});
   std::vector<float> clean = modelSpectra(truth, samples);
-  std::mt19937 rng(3);
+  std::mt19937 rng(seed);
   std::normal_distribution<float> normal;
   for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = clean[i] * (1.0f + 0.02f * normal(rng));
+  return samples;
+}
+}  // namespace
+
+TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
   SpectraFitSettings s;
-  s.samples = samples;
+  s.samples = noisySpecularSpectra(barbuleParametersWith({{"height", 0.53}, {"b", 0.3}}), 3);
   s.parameters = {parseFitParameter("height=0.4:0.7:0.62"), parseFitParameter("b=0.15:0.5:0.2")};
   s.fit.optimizer.maxEvaluations = 200;
   SpectraFitResult r = fitSpectra(s);
@@ -224,18 +229,9 @@ TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
 
 TEST(SpectraFit, RecoversTheCrossSectionsExponentFromNoisySpectra) {
   // The shape of the cross-section, not only its film, leaves its mark on specular spectra: a
-  // squarer barbule concentrates its normals. Spectra of p = 4 at three light angles, 2 % noise.
-  BarbuleParameters truth = barbuleParametersWith({{"profile_exponent", 4.0}});
-  std::vector<SpectraSample> samples;
-  for (float theta : {10.0f, 30.0f, 50.0f})
-    for (float lambda = 400.0f; lambda <= 700.0f; lambda += 5.0f)
-      samples.push_back({theta, 0.0f, theta, 180.0f, lambda, 0.0f});
-  std::vector<float> clean = modelSpectra(truth, samples);
-  std::mt19937 rng(5);
-  std::normal_distribution<float> normal;
-  for (size_t i = 0; i < samples.size(); ++i) samples[i].reflectance = clean[i] * (1.0f + 0.02f * normal(rng));
+  // squarer barbule concentrates its normals.
   SpectraFitSettings s;
-  s.samples = samples;
+  s.samples = noisySpecularSpectra(barbuleParametersWith({{"profile_exponent", 4.0}}), 5);
   s.parameters = {parseFitParameter("profile_exponent=2:10:3")};
   s.fit.optimizer.maxEvaluations = 120;
   SpectraFitResult r = fitSpectra(s);
