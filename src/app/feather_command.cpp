@@ -5,10 +5,51 @@
 #include <chrono>
 #include <memory>
 #include "app/interruption.h"
+#include "barbule/parameter_reader.h"
+#include "core/number_text.h"
 #include "feather/feather_generator.h"
 #include "feather/rock_dove.h"
 
 namespace columba {
+
+namespace {
+
+// --barbule's NAME=VALUE pairs, read as a scene's <bsdf type="barbulebsdf"> is, so that a mistake
+// is refused (naming the option) before anything is written.
+std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const std::vector<std::string>& given) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  Properties props;
+  props.tag = "bsdf";
+  props.type = "barbulebsdf";
+  props.nameParameter = [](const std::string& name) { return "--barbule " + name; };
+  for (const std::string& item : given) {
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw CLI::ValidationError("--barbule", "give NAME=VALUE, not '" + item + "'");
+    const std::string name = item.substr(0, equals), value = item.substr(equals + 1);
+    if (name == "height")
+      throw CLI::ValidationError("--barbule",
+                                 "each neck feather's cortex thickness comes from --height and "
+                                 "--purple-height (and --height-spread), not from the BSDF");
+    if (props.has(name)) throw CLI::ValidationError("--barbule", "'" + name + "' is given twice");
+    if (std::optional<double> number = parseNumber<double>(value))
+      props.setFloat(name, float(*number));
+    else
+      props.setString(name, value);
+    pairs.emplace_back(name, value);
+  }
+  std::optional<BarbuleParameterProblem> odd;
+  readBarbuleParameters(props, odd);
+  try {
+    props.checkAllUsed();
+  } catch (const std::exception& e) {
+    throw CLI::ValidationError("--barbule", e.what());  // an unknown name
+  }
+  if (odd) fmt::print(stderr, "warning: --barbule {}: {}\n", odd->parameter, odd->message);
+  return pairs;
+}
+
+}  // namespace
 
 void addFeatherCommand(CLI::App& app) {
   struct Settings {
@@ -16,6 +57,7 @@ void addFeatherCommand(CLI::App& app) {
     std::string output;
     FeatherGenerationOptions options;
     float featherScale = 1.0f;
+    std::vector<std::string> barbule;
   };
   auto settings = std::make_shared<Settings>();
   CLI::App* cmd = app.add_subcommand("feather", "Write procedural feather geometry as a feather PLY");
@@ -49,6 +91,10 @@ void addFeatherCommand(CLI::App& app) {
                   "With --bird: every feather this much larger (fewer feathers) or smaller (more), 0.2 to 5")
       ->capture_default_str()
       ->needs(bird);
+  cmd->add_option("--barbule", settings->barbule,
+                  "With --bird: a further parameter of the neck's barbule BSDF, NAME=VALUE as in a scene (e.g. "
+                  "profile_exponent=4, layers=parotia-occipital); repeatable")
+      ->needs(bird);
   cmd->add_option("--height-spread", o.heightSpread, "Each feather's thickness varies by up to this much, um")
       ->capture_default_str();
   cmd->add_option("--purple-below", o.purpleBelow,
@@ -75,6 +121,7 @@ void addFeatherCommand(CLI::App& app) {
       dove.greenHeight = settings->options.greenHeight;
       dove.purpleHeight = settings->options.purpleHeight;
       if (cmd->count("--height-spread") > 0) dove.heightSpread = settings->options.heightSpread;
+      dove.barbule = checkedBarbuleParameters(settings->barbule);
       dove.cancel = settings->options.cancel;
       RockDoveSummary s = writeRockDove(dove, settings->output);
       if (!s.written) throw CLI::RuntimeError(128 + interruption.signalNumber());

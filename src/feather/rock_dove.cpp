@@ -1,15 +1,18 @@
 #include "feather/rock_dove.h"
 
 #include <fmt/format.h>
+#include <pugixml.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "core/math.h"
+#include "core/number_text.h"
 #include "core/rng.h"
 #include "feather/feather_design.h"
 #include "feather/feather_generator.h"
@@ -17,6 +20,23 @@
 namespace columba {
 
 namespace {
+
+// The neck feathers' <bsdf type="barbulebsdf"> with its further parameters, escaped as XML by
+// pugixml: a number as <float>, anything else as <string>.
+std::string barbuleElement(const std::vector<std::pair<std::string, std::string>>& parameters) {
+  pugi::xml_document doc;
+  pugi::xml_node bsdf = doc.append_child("bsdf");
+  bsdf.append_attribute("type") = "barbulebsdf";
+  bsdf.append_attribute("id") = "dove-barbules";
+  for (const auto& [name, value] : parameters) {
+    pugi::xml_node child = bsdf.append_child(parseNumber<double>(value) ? "float" : "string");
+    child.append_attribute("name") = name.c_str();
+    child.append_attribute("value") = value.c_str();
+  }
+  std::ostringstream text;
+  doc.print(text, "", pugi::format_raw | pugi::format_no_declaration);
+  return text.str();
+}
 
 // The template feather as the generator writes a single one: rachis along +y from -kHalfLength
 // to +kHalfLength, the vane in the plane z = 0 facing +z, 0.8 wide at most.
@@ -237,7 +257,9 @@ RockDoveSummary writeRockDove(const RockDoveOptions& options, const std::string&
            "  <!-- A procedural rock dove (columba feather --bird): its body, and feathers as copies of a few\n"
            "       templates. Iridescent neck feathers use the barbule BSDF with each copy's cortex thickness;\n"
            "       the grey feathers a diffuse grey. Lengths in centimetres. -->\n"
-           "  <bsdf type=\"barbulebsdf\" id=\"dove-barbules\"/>\n"
+           "  "
+        << barbuleElement(options.barbule)
+        << "\n"
            "  <bsdf type=\"diffuse\" id=\"dove-grey\"><rgb name=\"reflectance\" value=\"0.33, 0.35, 0.41\"/></bsdf>\n";
     for (int k = 0; k < options.templates; ++k)
       for (const char* kind : {"neck", "grey"})

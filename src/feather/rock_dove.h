@@ -23,6 +23,10 @@ struct RockDoveOptions {
   // Cortex thickness (um) of the neck's green and purple barbules, and each feather's spread about
   // them (uniform in +-spread).
   float greenHeight = 0.60f, purpleHeight = 0.51f, heightSpread = 0.012f;
+  // Further parameters of the neck feathers' barbulebsdf, as a scene names and writes them (a
+  // number becomes a <float>, anything else a <string>): a cross-section's profile_exponent, a
+  // layer stack. The caller checks them (the feather command reads them as the plug-in does).
+  std::vector<std::pair<std::string, std::string>> barbule;
   const std::atomic<bool>* cancel = nullptr;
 };
 

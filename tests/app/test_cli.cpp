@@ -230,6 +230,33 @@ TEST_F(CliTest, AnInterruptedFeatherGenerationLeavesNoFile) {
   EXPECT_TRUE(fs::is_empty(dir_)) << r.output;
 }
 
+TEST_F(CliTest, TheBirdsBarbulesTakeFurtherParametersCheckedAsTheSceneWould) {
+  const fs::path bird = dir_ / "bird";
+  CommandResult r =
+      run("feather --bird --feather-scale 3 --barbule profile_exponent=4 --barbule layers=parotia-occipital -o " +
+          bird.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::stringstream xml;
+  xml << std::ifstream(bird / "rock_dove.xml").rdbuf();
+  EXPECT_NE(xml.str().find("<bsdf type=\"barbulebsdf\" id=\"dove-barbules\"><float name=\"profile_exponent\" "
+                           "value=\"4\"/><string name=\"layers\" value=\"parotia-occipital\"/></bsdf>"),
+            std::string::npos)
+      << xml.str().substr(0, 600);
+  // Mistakes are refused before anything is written, naming the option.
+  const fs::path refused = dir_ / "refused";
+  for (const auto& [option, message] : std::vector<std::pair<std::string, std::string>>{
+           {"profile_exponent=40", "--barbule profile_exponent: the cross-section's superellipse exponent"},
+           {"colour=3", "--barbule: unknown parameter 'colour'"},
+           {"height=0.5", "--barbule: each neck feather's cortex thickness comes from --height"},
+           {"layers=keratin", "--barbule layers:"},
+           {"b", "--barbule: give NAME=VALUE, not 'b'"}}) {
+    CommandResult bad = run("feather --bird --barbule " + option + " -o " + refused.string());
+    EXPECT_NE(bad.status, 0) << option;
+    EXPECT_NE(bad.output.find(message), std::string::npos) << option << ": " << bad.output;
+    EXPECT_FALSE(fs::exists(refused)) << option;
+  }
+}
+
 TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
   std::string scene = write("tiny.xml", kTinyScene);
   std::string out = (dir_ / "keep.exr").string();
