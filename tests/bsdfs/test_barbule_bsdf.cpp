@@ -999,18 +999,26 @@ TEST(BarbuleBSDF, FactoriesRejectInvalidParameters) {
 // A NaN sample or wavelength indexed the TRT share's nodes with int(NaN) and crashed (clampf let
 // NaN through); whatever it draws, it must not read out of bounds.
 TEST(BarbuleBSDF, NaNSamplesAndWavelengthsDoNotCrash) {
+  // The ellipse and a superellipse, whose numerical solves must end on NaN input too.
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const BarbuleBSDF bsdf{BarbuleParameters{}};
   const Vec3 wi = normalize(Vec3(0.3f, 0.1f, 0.9f));
   const Wavelengths green = Wavelengths::fixed({550.0f, 550.0f, 550.0f, 550.0f});
-  for (const Wavelengths& wl : {green, Wavelengths::fixed({nan, nan, nan, nan}), Wavelengths::fixed({0, 0, 0, 0})})
-    for (float u1 : {0.5f, nan})
-      for (Vec2 u2 : {Vec2(0.5f, 0.5f), Vec2(nan, nan)}) {
-        std::optional<BSDFSample> s = bsdf.sample(BSDFContext{}, wi, wl, u1, u2);
-        if (s && wl[0] == 550.0f && u1 == 0.5f && u2.x == 0.5f) {
-          EXPECT_TRUE(s->weight.isFinite());
+  for (const BarbuleBSDF& bsdf : {BarbuleBSDF{BarbuleParameters{}}, BarbuleBSDF{squarer(8.0f)}}) {
+    for (const Wavelengths& wl : {green, Wavelengths::fixed({nan, nan, nan, nan}), Wavelengths::fixed({0, 0, 0, 0})})
+      for (float u1 : {0.5f, nan})
+        for (Vec2 u2 : {Vec2(0.5f, 0.5f), Vec2(nan, nan)}) {
+          std::optional<BSDFSample> s = bsdf.sample(BSDFContext{}, wi, wl, u1, u2);
+          if (s && wl[0] == 550.0f && u1 == 0.5f && u2.x == 0.5f) {
+            EXPECT_TRUE(s->weight.isFinite());
+          }
         }
-      }
+    for (const Vec3& w : {Vec3(nan, nan, nan), Vec3(0.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)}) {
+      bsdf.eval(BSDFContext{}, w, wi, green);
+      bsdf.eval(BSDFContext{}, wi, w, green);
+      bsdf.pdf(BSDFContext{}, wi, w, green);
+      bsdf.sample(BSDFContext{}, w, green, 0.5f, Vec2(0.5f, 0.5f));
+    }
+  }
   EXPECT_EQ(clampf(nan, 0.0f, 3.0f), 0.0f);
 }
 
