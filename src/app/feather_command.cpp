@@ -27,10 +27,16 @@ std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const 
     if (equals == std::string::npos || equals == 0)
       throw CLI::ValidationError("--barbule", "give NAME=VALUE, not '" + item + "'");
     const std::string name = item.substr(0, equals), value = item.substr(equals + 1);
+    // The generated feathers carry H, mu and height at every vertex, which win over the BSDF's.
     if (name == "height")
       throw CLI::ValidationError("--barbule",
                                  "each neck feather's cortex thickness comes from --height and "
                                  "--purple-height (and --height-spread), not from the BSDF");
+    if (name == "H" || name == "mu" || name == "preset")
+      throw CLI::ValidationError("--barbule", "'" + name +
+                                                  "' would have no effect: the feathers give every vertex its own "
+                                                  "spacing H and tilt mu (a preset sets those; give b, phi_0 and "
+                                                  "phi_1 instead)");
     if (props.has(name)) throw CLI::ValidationError("--barbule", "'" + name + "' is given twice");
     if (std::optional<double> number = parseNumber<double>(value))
       props.setFloat(name, float(*number));

@@ -50,7 +50,12 @@ void BarbuleCrossSection::setTiltAndSpacing(float mu, float H) {
   neighbour_ = toLocal({0.0f, H_});
   // The gradient's direction is the same all along the ray from the centre (F is homogeneous).
   // The ellipse has its own test (litArc).
-  if (!ellipse_) separatingNormal_ = normalize2(toFloat(profile_.gradient(toDouble(neighbour_))));
+  if (!ellipse_) {
+    // Normalised in double: the gradient's components overflow a float for thin profiles.
+    const Vec2d g = profile_.gradient(toDouble(neighbour_));
+    const double length = std::hypot(g.x, g.y);
+    separatingNormal_ = {float(g.x / length), float(g.y / length)};
+  }
 }
 
 BarbuleCrossSection BarbuleCrossSection::withTiltAndSpacing(float mu, float H) const {
@@ -177,9 +182,11 @@ Vec2Lanes BarbuleCrossSection::worldNormalsAtAngles(const LitArc& arc, FloatLane
   return worldNormalsAt(arc, arc.halfWidth * sinPsi, arc.halfWidth / b_ * cosPsi);
 }
 
-bool BarbuleCrossSection::isLit(const LitArc& arc, Vec2 n) const {
+bool BarbuleCrossSection::isLit(const LitArc& arc, Vec2 n) const { return isLitAt(arc, pointWithNormal(n), n); }
+
+bool BarbuleCrossSection::isLitAt(const LitArc& arc, Vec2 p, Vec2 n) const {
   if (!(dot2(n, arc.toward) > 0.0f)) return false;
-  float h = offsetOf(arc, n);
+  float h = dot2(p, arc.across);
   return h >= arc.hMin && h <= arc.hMax;
 }
 

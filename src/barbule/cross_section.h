@@ -99,6 +99,9 @@ class BarbuleCrossSection {
   // Whether the point with local unit normal n is lit along `arc`'s direction (masking and
   // shadowing test: it faces the direction, lies on the reflective arc and no neighbour blocks it).
   bool isLit(const LitArc& arc, Vec2 n) const;
+  // The same for a point p already known with its normal n: on a superellipse's flat side the
+  // normal, known to float precision, does not fix the point (docs/model.md).
+  bool isLitAt(const LitArc& arc, Vec2 p, Vec2 n) const;
   // Offsets along `a` of the points lit along both `a` and `b`.
   OffsetInterval commonOffsets(const LitArc& a, const LitArc& b) const;
 

@@ -12,7 +12,8 @@ namespace {
 double metric(Vec2 x, Vec2 y, double invBSqr) { return double(x.x) * y.x * invBSqr + double(x.y) * y.y; }
 }  // namespace
 
-MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Vec2 localNormal, const Vec3& w)
+MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Vec2 localNormal, const Vec3& w,
+                                         std::optional<Vec2> point)
     : worldNormal_(geometry.toWorld(localNormal)),
       longitudinal_(inPlaneProjection(w, worldNormal_), w.y),
       A_(inPlaneProjection(w, worldNormal_)),
@@ -20,7 +21,7 @@ MirrorVisibleAngles::MirrorVisibleAngles(const BarbuleCrossSection& geometry, Ve
   mass_ = longitudinal_.mass();
   if (!(mass_ > 0.0f)) return;
   const double invBSqr = 1.0 / (double(geometry.b()) * geometry.b());
-  const Vec2 p = geometry.pointWithNormal(localNormal);
+  const Vec2 p = point ? *point : geometry.pointWithNormal(localNormal);
   const Vec2 in = geometry.toLocal(Vec2(w.z, w.x));  // omega_i's in-plane part, of length cos(theta_i)
   const double nQn = metric(localNormal, localNormal, invBSqr), nQw = metric(localNormal, in, invBSqr);
   const double wQw = metric(in, in, invBSqr);

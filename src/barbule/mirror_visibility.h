@@ -17,6 +17,7 @@
 // angles are a few intervals, found exactly, and the mass of theta's density on them is the
 // density's primitive at their ends.
 #include <array>
+#include <optional>
 #include "barbule/cross_section.h"
 #include "barbule/normals.h"
 
@@ -24,8 +25,11 @@ namespace columba {
 
 class MirrorVisibleAngles {
  public:
-  // omega_i (w.z > 0) and the point with local in-plane normal `localNormal` on its lit arc.
-  MirrorVisibleAngles(const BarbuleCrossSection& geometry, Vec2 localNormal, const Vec3& w);
+  // omega_i (w.z > 0) and the point with local in-plane normal `localNormal` on its lit arc:
+  // `point` where it is known (on a superellipse's flat side the normal does not fix it), else
+  // the one the normal gives.
+  MirrorVisibleAngles(const BarbuleCrossSection& geometry, Vec2 localNormal, const Vec3& w,
+                      std::optional<Vec2> point = std::nullopt);
 
   // The share of theta's density (LongitudinalDensity: proportional to omega_i . m) on the visible
   // angles: 1 where no neighbour masks the mirror direction, 0 where every angle is masked.

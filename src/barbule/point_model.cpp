@@ -252,7 +252,7 @@ BarbuleLobeChoice BarbulePointModel::lobeChoice(const BarbuleIncident& in, bool 
 }
 
 BarbuleLobeDensities BarbulePointModel::densities(const BarbuleScattering& s, const BarbuleOutgoing& out,
-                                                  float mirrorVisible) const {
+                                                  float mirrorVisible, float drawnOffset) const {
   const BarbuleIncident& in = s.in;
   const BarbuleLobeChoice& choice = s.choice;
   BarbuleLobeDensities density;
@@ -268,7 +268,8 @@ BarbuleLobeDensities BarbulePointModel::densities(const BarbuleScattering& s, co
       // normal, and dividing by the recomputed share gave single samples 10^4 times their due.
       float visible =
           mirrorVisible >= 0.0f ? mirrorVisible : MirrorVisibleAngles(geometry_, out.mLocal, in.w).visibleFraction();
-      float shareR = 1.0f - choice.trtShareAt(geometry_.offsetOf(in.arc, out.mLocal));
+      float offset = std::isnan(drawnOffset) ? geometry_.offsetOf(in.arc, out.mLocal) : drawnOffset;
+      float shareR = 1.0f - choice.trtShareAt(offset);
       if (visible > 0.0f) density.reflection = scattering * shareR * normalPdf / visible / (4.0f * cosHalf);
     }
   }
@@ -306,7 +307,11 @@ std::optional<BarbuleSample> BarbulePointModel::sample(const BarbuleScattering& 
   float uOffset = clampf((uComponent - choice.transmission) / (1.0f - choice.transmission), 0.0f, 1.0f);
   float h = in.arc.hMin + uOffset * in.arc.width();
   float shareR = 1.0f - choice.trtShareAt(h);
-  const Vec2 localNormal = geometry.normalAt(geometry.pointAt(in.arc, h));
+  const Vec2 point = geometry.pointAt(in.arc, h), localNormal = geometry.normalAt(point);
+  // On a superellipse's flat side the normal, known to float precision, does not fix the point
+  // (docs/model.md, "Cross-sections beyond the ellipse"): the drawn point stands wherever the point
+  // matters. The ellipse recovers it from the normal, as it always has (its images unchanged).
+  const std::optional<Vec2> drawnPoint = geometry.isEllipse() ? std::nullopt : std::optional<Vec2>(point);
   const bool reflected = u.x < shareR;
   bs.lobe = reflected ? BarbuleSample::Lobe::R : BarbuleSample::Lobe::TRT;
   Vec3 m;       // an R sample's normal
@@ -314,7 +319,7 @@ std::optional<BarbuleSample> BarbulePointModel::sample(const BarbuleScattering& 
   if (reflected) {
     // theta among the angles whose mirror direction a neighbour does not mask: the others could
     // only be rejected below.
-    MirrorVisibleAngles angles(geometry, localNormal, wi);
+    MirrorVisibleAngles angles(geometry, localNormal, wi, drawnPoint);
     bs.mirrorVisible = angles.visibleFraction();
     if (!(bs.mirrorVisible > 0.0f)) return std::nullopt;
     AngleCosSin theta = angles.sample(u.y);
@@ -329,7 +334,8 @@ std::optional<BarbuleSample> BarbulePointModel::sample(const BarbuleScattering& 
   }
   // The scattering point must be visible from wo.
   bs.woArc = geometry.litArc(inPlane(bs.wo).dir);
-  if (!geometry.isLit(bs.woArc, localNormal)) return std::nullopt;
+  if (!(drawnPoint ? geometry.isLitAt(bs.woArc, *drawnPoint, localNormal) : geometry.isLit(bs.woArc, localNormal)))
+    return std::nullopt;
   if (!weights) return bs;
   if (!withPdf && reflected) {
     // f_R |cos_o| / p_R in closed form, at the sampled normal m (docs/model.md section 8). With
@@ -358,9 +364,13 @@ std::optional<BarbuleSample> BarbulePointModel::sample(const BarbuleScattering& 
   // built from bs.pdf keep the estimate unbiased; an R sample needs no TRT quadrature (the
   // mixture's eval / pdf costs time for no less variance: docs/performance.md).
   BarbuleOutgoing out = outgoing(in, bs.wo, bs.woArc);
+  // The drawn point of an R sample is lit from both directions, whichever point its normal gives.
+  if (reflected && drawnPoint && out.mPlane.cosTheta > 0.0f) out.reflects = true;
   // Without the pdf, a TRT sample needs only its own lobe's density.
   BarbuleLobeDensities density =
-      withPdf ? densities(s, out, bs.mirrorVisible) : BarbuleLobeDensities{0.0f, trtDensity(s, out)};
+      withPdf
+          ? densities(s, out, bs.mirrorVisible, reflected && drawnPoint ? h : std::numeric_limits<float>::quiet_NaN())
+          : BarbuleLobeDensities{0.0f, trtDensity(s, out)};
   bs.pdf = withPdf ? density.total() : 0.0f;
   const float lobeDensity = reflected ? density.reflection : density.trt;
   if (!(lobeDensity > 0.0f) || bs.wo.z == 0.0f) return std::nullopt;

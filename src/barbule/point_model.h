@@ -6,6 +6,7 @@
 // coverage and film entry the lobes are built on, and omega_o); the BSDF plug-in
 // (bsdfs/barbulebsdf.h) decides which of a path's directions is omega_i.
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -138,9 +139,10 @@ class BarbulePointModel {
   Spectrum resamplingTarget(const BarbuleIncident& in, const Vec3& wo, const LitArc& woArc) const;
 
   // The density of omega_o by lobe; `mirrorVisible` as in BarbuleSample for an R sample just
-  // drawn, negative otherwise.
-  BarbuleLobeDensities densities(const BarbuleScattering& s, const BarbuleOutgoing& out,
-                                 float mirrorVisible = -1.0f) const;
+  // drawn, negative otherwise, and `drawnOffset` the offset of its point where the normal does
+  // not fix the point (a superellipse), NaN otherwise.
+  BarbuleLobeDensities densities(const BarbuleScattering& s, const BarbuleOutgoing& out, float mirrorVisible = -1.0f,
+                                 float drawnOffset = std::numeric_limits<float>::quiet_NaN()) const;
   // Draws omega_o. With `weights`, also its weight and (`withPdf`) the mixture's density; without
   // `withPdf` an R sample's weight comes in closed form and a TRT sample's from its own density.
   std::optional<BarbuleSample> sample(const BarbuleScattering& s, float uComponent, Vec2 u, bool weights,

@@ -248,6 +248,8 @@ TEST_F(CliTest, TheBirdsBarbulesTakeFurtherParametersCheckedAsTheSceneWould) {
            {"profile_exponent=40", "--barbule profile_exponent: the cross-section's superellipse exponent"},
            {"colour=3", "--barbule: unknown parameter 'colour'"},
            {"height=0.5", "--barbule: each neck feather's cortex thickness comes from --height"},
+           {"mu=0.1", "--barbule: 'mu' would have no effect"},
+           {"preset=dove-green", "--barbule: 'preset' would have no effect"},
            {"layers=keratin", "--barbule layers:"},
            {"b", "--barbule: give NAME=VALUE, not 'b'"}}) {
     CommandResult bad = run("feather --bird --barbule " + option + " -o " + refused.string());

@@ -84,6 +84,7 @@ TEST(MirrorVisibleAngles, VisibleShareMatchesTestingEveryAngle) {
   int partial = 0, masked = 0, clear = 0;
   for (const Case& c : kCases) {
     BarbuleCrossSection geometry(c.b, c.phi0, c.phi1, c.mu, c.H, c.p);
+    int partialHere = 0;
     for (int k = 0; k < 400; ++k) {
       std::optional<LitPoint> point = randomLitPoint(geometry, rng);
       if (!point) continue;
@@ -98,8 +99,11 @@ TEST(MirrorVisibleAngles, VisibleShareMatchesTestingEveryAngle) {
       else if (reference.fraction == 1.0)
         ++clear;
       else
-        ++partial;
+        ++partial, ++partialHere;
     }
+    // Each cross-section, superellipses included, has points where the cuts matter.
+    std::printf("b %g p %g: %d points partly masked\n", c.b, c.p, partialHere);
+    EXPECT_GE(partialHere, 10) << "b " << c.b << " p " << c.p;
   }
   std::printf("%d points partly masked, %d wholly, %d not at all\n", partial, masked, clear);
   // Every kind of point was met, the partly masked ones (where the angles are cut) often enough.
@@ -119,7 +123,7 @@ TEST(MirrorVisibleAngles, SamplesAreLitAndFollowTheRestrictedDensity) {
   for (const Case& c : kCases) {
     BarbuleCrossSection geometry(c.b, c.phi0, c.phi1, c.mu, c.H, c.p);
     int checkedHere = 0;
-    for (int k = 0; k < 2000 && checkedHere < 40; ++k) {
+    for (int k = 0; k < 4000 && checkedHere < 40; ++k) {
       std::optional<LitPoint> point = randomLitPoint(geometry, rng);
       if (!point) continue;
       const Vec3& wi = point->wi;
@@ -150,6 +154,7 @@ TEST(MirrorVisibleAngles, SamplesAreLitAndFollowTheRestrictedDensity) {
         EXPECT_NEAR(below, q * samples / 20, 0.01 * samples + 2) << "quantile " << q << " of case b " << c.b;
       }
     }
+    EXPECT_GE(checkedHere, 5) << "b " << c.b << " p " << c.p;
   }
   EXPECT_GE(checked, 100);
 }

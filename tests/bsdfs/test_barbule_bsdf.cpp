@@ -389,8 +389,10 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
   for (int i = 0; i < hSteps; ++i)
     for (int j = 0; j < thetaSteps; ++j) {
       VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hSteps, (j + 0.5f) / thetaSteps));
+      // The drawn point itself (on a superellipse's flat side its normal does not fix it).
+      Vec2 point = geometry.pointAt(arc, arc.hMin + (i + 0.5f) / hSteps * arc.width());
       Vec3 wo = reflect(wi, vn.m);
-      if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
+      if (!geometry.isLitAt(geometry.litArc(inPlane(wo).dir), point, vn.localNormal)) continue;
       Vec2 n = geometry.toWorld(vn.localNormal);
       float shadow = LongitudinalDensity(inPlaneProjection(wo, n), wo.y).shadowing();
       FreeStandingFilm::Reflectance R = film.reflectance(dot(wi, vn.m));
@@ -405,6 +407,7 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
   for (int i = 0; i < hCoarse; ++i)
     for (int j = 0; j < thetaCoarse; ++j) {
       VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hCoarse, (j + 0.5f) / thetaCoarse));
+      Vec2 point = geometry.pointAt(arc, arc.hMin + (i + 0.5f) / hCoarse * arc.width());
       Vec2 n2 = geometry.toWorld(vn.localNormal);
       Vec3 m0(n2.y, 0.0f, n2.x);  // theta = 0: its front side is the in-plane facing half-space
       Frame frame = Frame::fromNormal(m0);
@@ -414,7 +417,7 @@ LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
           // Equal-area cells of the hemisphere around m0.
           float z = (a + 0.5f) / rows, phi = kTwoPi * (b + 0.5f) / columns, s = safeSqrt(1.0f - z * z);
           Vec3 wo = frame.toWorld(Vec3(s * std::cos(phi), s * std::sin(phi), z));
-          if (!geometry.isLit(geometry.litArc(inPlane(wo).dir), vn.localNormal)) continue;
+          if (!geometry.isLitAt(geometry.litArc(inPlane(wo).dir), point, vn.localNormal)) continue;
           FreeStandingFilm::Reflectance out = film.reflectance(std::abs(dot(wo, vn.m)));
           float weight = std::abs(wo.z) / kPi * (kTwoPi / (rows * columns));
           Spectrum energy =
@@ -522,7 +525,7 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeansSlow) {
 // quadrature points per bin (at p 8 the singularity, near |phi|^(-6/7), defeats any bin
 // quadrature: p-values collapse to 0 where the furnace below agrees); and the white furnace by
 // the sample weights' mean (T included) against the independent means over visible normals,
-// which need no pdf, at p 3 and p 8 (a rounded rectangle), normal incidence included.
+// which need no pdf, at p 3, 8 and 16 (rounded rectangles), normal incidence included.
 TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
   const BSDFContext ctx;
   const std::vector<Vec3> oblique = {direction(30.0f, 20.0f), direction(60.0f, 110.0f), direction(80.0f, 250.0f)};
@@ -536,8 +539,10 @@ TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
       EXPECT_GT(result.pValue, threshold) << "p " << exponent << ": " << result.message;
     }
   }
-  for (float exponent : {3.0f, 8.0f}) {
-    BarbuleBSDF bsdf(squarer(exponent));
+  for (float exponent : {3.0f, 8.0f, 16.0f}) {
+    // A fine TRT quadrature: with the default 4 offsets TRT on flat sides is off by up to 3 %, which is
+    // the quadrature (docs/model.md), not the sampling this tests.
+    BarbuleBSDF bsdf(squarer(exponent), BarbuleBSDF::Role::CameraIncident, BarbuleQuadrature{16, 4, 4});
     for (const Vec3& wi : {direction(0.0f, 0.0f), direction(60.0f, 110.0f)}) {
       float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
       LobeAlbedo expected = visibleNormalMeans(squarer(exponent), wi);
@@ -550,7 +555,7 @@ TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
             "  p %g wi (%6.3f %6.3f %6.3f) %3.0f nm: means R %.5f TRT %.5f t %.4f total %.5f, MC %.5f +- %.5f\n",
             exponent, wi.x, wi.y, wi.z, kWavelengths[k], expected.reflection[k], expected.trt[k], t, total, mean[k],
             sigma);
-        EXPECT_NEAR(mean[k], total, 4.0f * sigma + 5e-3f * (total - t));
+        EXPECT_NEAR(mean[k], total, 4.0f * sigma + 2e-3f * (total - t));
         EXPECT_LE(total, 1.0f + 1e-4f);
       }
     }
@@ -1012,11 +1017,18 @@ TEST(BarbuleBSDF, NaNSamplesAndWavelengthsDoNotCrash) {
             EXPECT_TRUE(s->weight.isFinite());
           }
         }
+    // Degenerate directions end, and give finite values where they are numbers.
     for (const Vec3& w : {Vec3(nan, nan, nan), Vec3(0.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)}) {
-      bsdf.eval(BSDFContext{}, w, wi, green);
-      bsdf.eval(BSDFContext{}, wi, w, green);
-      bsdf.pdf(BSDFContext{}, wi, w, green);
-      bsdf.sample(BSDFContext{}, w, green, 0.5f, Vec2(0.5f, 0.5f));
+      const bool numbers = !std::isnan(w.x);
+      Spectrum a = bsdf.eval(BSDFContext{}, w, wi, green), b = bsdf.eval(BSDFContext{}, wi, w, green);
+      float density = bsdf.pdf(BSDFContext{}, wi, w, green);
+      std::optional<BSDFSample> s = bsdf.sample(BSDFContext{}, w, green, 0.5f, Vec2(0.5f, 0.5f));
+      if (numbers) {
+        EXPECT_TRUE(a.isFinite() && b.isFinite() && std::isfinite(density));
+        if (s) {
+          EXPECT_TRUE(s->weight.isFinite());
+        }
+      }
     }
   }
   EXPECT_EQ(clampf(nan, 0.0f, 3.0f), 0.0f);
