@@ -17,6 +17,8 @@ Mitsuba 3: not in Mitsuba 3.
 | film_cauchy_b | float | 0 | the Cauchy law's b (λ in nanometres) | not in Mitsuba 3 |
 | ext_ior | float or string | `air` (1.000277) | the surrounding medium's constant index | not in Mitsuba 3 |
 | melanin | spectrum or float | measured table | the melanin layer's intensity reflectance against wavelength, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
+| trt_offsets | integer | 4 | the TRT lobe's Gauss–Legendre nodes across the lit arc, 1 to 64: more for squarer profiles, whose normal turns fast at the corners (at p = 16 the default 4 is 1.6 % high, 16 within 0.3 % of exact; docs/model.md) | not in Mitsuba 3 |
+| trt_angles | integer | 1 | the TRT lobe's nodes over the longitudinal angle, 1 to 16 (1: one node at the mean angle) | not in Mitsuba 3 |
 | layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin`, `melanin` (Stavenga et al. 2015's n and k) or a complex `N+Ki`; thickness in µm), or the name of a published stack: `parotia-occipital` (Stavenga et al. 2015): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
 */
 #include "bsdfs/barbulebsdf.h"
@@ -196,9 +198,21 @@ float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
 
 namespace {
 
+// The TRT lobe's quadrature: offsets across the lit arc and longitudinal angles.
+BarbuleQuadrature readQuadrature(const Properties& props) {
+  BarbuleQuadrature q;
+  q.offsetNodes = props.getInt("trt_offsets", q.offsetNodes);
+  q.thetaNodes = props.getInt("trt_angles", q.thetaNodes);
+  if (q.offsetNodes < 1 || q.offsetNodes > 64)
+    throw props.error("trt_offsets", "the TRT lobe's offset nodes must number 1 to 64");
+  if (q.thetaNodes < 1 || q.thetaNodes > 16)
+    throw props.error("trt_angles", "the TRT lobe's longitudinal nodes must number 1 to 16");
+  return q;
+}
+
 std::shared_ptr<Object> makeBarbule(const Properties& props, BarbuleBSDF::Role role) {
   std::optional<BarbuleParameterProblem> odd;
-  auto bsdf = std::make_shared<BarbuleBSDF>(readBarbuleParameters(props, odd), role);
+  auto bsdf = std::make_shared<BarbuleBSDF>(readBarbuleParameters(props, odd), role, readQuadrature(props));
   if (odd) warn(props.locationOf(odd->parameter), "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message);
   const BarbuleParameters& p = bsdf->parameters();
   BarbuleTextures textures{readFloatParameter(props, "b", p.b), readFloatParameter(props, "mu", p.mu),

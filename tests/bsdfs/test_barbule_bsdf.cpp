@@ -19,6 +19,7 @@
 #include "core/sampling.h"
 #include "optics/melanin.h"
 #include "optics/thin_film.h"
+#include "support/bsdf_test_support.h"
 #include "support/chi_square.h"
 
 using namespace columba;
@@ -920,20 +921,6 @@ TEST(BarbuleBSDF, TRTQuadratureIsCloseToAFineOne) {
 
 namespace {
 
-void setFloat(Properties& props, const std::string& name, float value) {
-  Properties::Value v;
-  v.kind = Properties::ValueKind::Float;
-  v.number = value;
-  props.set(name, v);
-}
-
-void setString(Properties& props, const std::string& name, const std::string& value) {
-  Properties::Value v;
-  v.kind = Properties::ValueKind::String;
-  v.text = value;
-  props.set(name, v);
-}
-
 Properties barbuleProperties(const std::string& type) {
   Properties props;
   props.tag = "bsdf";
@@ -999,6 +986,48 @@ TEST(BarbuleBSDF, FactoriesRejectInvalidParameters) {
   rejects("H", "", 0.0f, false);
   rejects("height", "", -0.5f, false);
   rejects("phi_1", "", 4.0f, false);  // arc of more than pi but less than the whole ellipse
+  rejects("profile_exponent", "", 1.5f, false);
+  for (const auto& [name, value] :
+       {std::pair<const char*, int>{"trt_offsets", 0}, {"trt_offsets", 65}, {"trt_angles", 17}}) {
+    Properties props = barbuleProperties("barbulebsdf");
+    setInt(props, name, value);
+    try {
+      makeBarbuleBSDF(props);
+      ADD_FAILURE() << name << " " << value << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("must number"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(BarbuleBSDF, TheSceneSetsTheTRTQuadrature) {
+  // trt_offsets and trt_angles reach the lobe: the plug-in's eval is the one of a BSDF built with
+  // that quadrature, and differs from the default's.
+  Properties props = barbuleProperties("barbulebsdf");
+  setFloat(props, "profile_exponent", 8.0f);
+  setInt(props, "trt_offsets", 16);
+  setInt(props, "trt_angles", 2);
+  auto fromScene = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(props));
+  ASSERT_TRUE(fromScene);
+  BarbuleParameters p = fromScene->parameters();
+  BarbuleBSDF fine(p, BarbuleBSDF::Role::CameraIncident, BarbuleQuadrature{16, 2, 4});
+  BarbuleBSDF usual(p, BarbuleBSDF::Role::CameraIncident);
+  const BSDFContext ctx;
+  int differing = 0;
+  for (const Vec3& wi : incidentDirections())
+    for (const Vec3& wo : incidentDirections()) {
+      const Vec3 out(-wo.x, wo.y, wo.z);
+      Spectrum a = fromScene->evalLobes(ctx, wi, out, kWavelengths).trt,
+               b = fine.evalLobes(ctx, wi, out, kWavelengths).trt;
+      Spectrum c = usual.evalLobes(ctx, wi, out, kWavelengths).trt;
+      bool same = true;
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        EXPECT_EQ(a[k], b[k]);
+        same = same && a[k] == c[k];
+      }
+      differing += !same;
+    }
+  EXPECT_GT(differing, 20);
 }
 
 // A NaN sample or wavelength indexed the TRT share's nodes with int(NaN) and crashed (clampf let

@@ -100,6 +100,13 @@ void setFloat(Properties& props, const std::string& name, float value) {
   setValue(props, name, v);
 }
 
+void setInt(Properties& props, const std::string& name, int value) {
+  Properties::Value v;
+  v.kind = Properties::ValueKind::Integer;
+  v.number = value;
+  setValue(props, name, v);
+}
+
 void setString(Properties& props, const std::string& name, const std::string& value) {
   Properties::Value v;
   v.kind = Properties::ValueKind::String;

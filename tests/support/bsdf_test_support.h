@@ -53,6 +53,7 @@ std::string loadBSDFError(const std::string& type, const std::string& parameters
 
 // Parameters of a plug-in as a scene file would give them.
 void setFloat(Properties& props, const std::string& name, float value);
+void setInt(Properties& props, const std::string& name, int value);
 void setString(Properties& props, const std::string& name, const std::string& value);
 void setBool(Properties& props, const std::string& name, bool value);
 void addNested(Properties& props, std::shared_ptr<Object> object);
