@@ -73,9 +73,11 @@ class PyBarbule {
   PyBarbule(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
             const py::object& phi0, const py::object& phi1, const py::object& filmIOR, const py::object& extIOR,
             const py::object& preset, const py::object& melanin, const py::object& layers,
-            const py::object& profileExponent, const std::string& role)
-      : bsdf_(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin, layers, profileExponent),
-              roleFrom(role)) {}
+            const py::object& profileExponent, const py::object& trtOffsets, const py::object& trtAngles,
+            const std::string& role)
+      : PyBarbule(resolve(b, H, mu, height, phi0, phi1, filmIOR, extIOR, preset, melanin, layers, profileExponent,
+                          trtOffsets, trtAngles),
+                  roleFrom(role)) {}
 
   const BarbuleBSDF& bsdf() const { return bsdf_; }
 
@@ -86,13 +88,19 @@ class PyBarbule {
     throw py::value_error("role must be 'camera' (barbulebsdf) or 'light' (barbulebsdfev), not '" + role + "'");
   }
 
+  struct Resolved {
+    BarbuleParameters params;
+    BarbuleQuadrature quadrature;
+  };
+  PyBarbule(const Resolved& r, BarbuleBSDF::Role role) : bsdf_(r.params, role, r.quadrature) {}
+
   // The keyword arguments as Properties, read as a scene's <bsdf type="barbulebsdf"> is (errors
   // are columba.InputError, a ValueError, worded as the plug-in's without a file position).
-  static BarbuleParameters resolve(const py::object& b, const py::object& H, const py::object& mu,
-                                   const py::object& height, const py::object& phi0, const py::object& phi1,
-                                   const py::object& filmIOR, const py::object& extIOR, const py::object& preset,
-                                   const py::object& melanin, const py::object& layers,
-                                   const py::object& profileExponent) {
+  static Resolved resolve(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
+                          const py::object& phi0, const py::object& phi1, const py::object& filmIOR,
+                          const py::object& extIOR, const py::object& preset, const py::object& melanin,
+                          const py::object& layers, const py::object& profileExponent, const py::object& trtOffsets,
+                          const py::object& trtAngles) {
     Properties props;
     props.tag = "bsdf";
     props.type = "barbulebsdf";
@@ -107,6 +115,8 @@ class PyBarbule {
     take("phi_0", phi0);
     take("phi_1", phi1);
     take("profile_exponent", profileExponent);
+    if (!trtOffsets.is_none()) props.setInt("trt_offsets", trtOffsets.cast<int>());
+    if (!trtAngles.is_none()) props.setInt("trt_angles", trtAngles.cast<int>());
     setIndex(props, "film_ior", filmIOR);
     setIndex(props, "ext_ior", extIOR);
     if (!melanin.is_none()) {
@@ -129,7 +139,7 @@ class PyBarbule {
       std::string text = "<bsdf> 'barbulebsdf', parameter '" + odd->parameter + "': " + odd->message;
       PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
     }
-    return p;
+    return {p, readBarbuleQuadrature(props)};
   }
 
   // An index given as a name or number (`name`), or for the film as (a, b) of Cauchy's law
@@ -527,12 +537,12 @@ void bindModel(py::module_& m) {
                         "N x 4.")
       .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
                     const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
-                    const py::object&, const py::object&, const std::string&>(),
+                    const py::object&, const py::object&, const py::object&, const py::object&, const std::string&>(),
            py::kw_only(), py::arg("b") = py::none(), py::arg("H") = py::none(), py::arg("mu") = py::none(),
            py::arg("height") = py::none(), py::arg("phi_0") = py::none(), py::arg("phi_1") = py::none(),
            py::arg("film_ior") = py::none(), py::arg("ext_ior") = py::none(), py::arg("preset") = py::none(),
            py::arg("melanin") = py::none(), py::arg("layers") = py::none(), py::arg("profile_exponent") = py::none(),
-           py::arg("role") = "camera")
+           py::arg("trt_offsets") = py::none(), py::arg("trt_angles") = py::none(), py::arg("role") = "camera")
       .def_property_readonly("parameters",
                              [](const PyBarbule& s) {
                                const BarbuleParameters& p = s.bsdf().parameters();

@@ -74,4 +74,15 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   return p;
 }
 
+BarbuleQuadrature readBarbuleQuadrature(const Properties& props) {
+  BarbuleQuadrature q;
+  q.offsetNodes = props.getInt("trt_offsets", q.offsetNodes);
+  q.thetaNodes = props.getInt("trt_angles", q.thetaNodes);
+  if (q.offsetNodes < 1 || q.offsetNodes > 64)
+    throw props.error("trt_offsets", "the TRT lobe's offset nodes must number 1 to 64");
+  if (q.thetaNodes < 1 || q.thetaNodes > 16)
+    throw props.error("trt_angles", "the TRT lobe's longitudinal nodes must number 1 to 16");
+  return q;
+}
+
 }  // namespace columba

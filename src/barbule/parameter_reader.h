@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "barbule/parameters.h"
+#include "barbule/point_model.h"
 #include "core/properties.h"
 
 namespace columba {
@@ -17,5 +18,8 @@ namespace columba {
 // (props.error) for values the model cannot take. Values it takes that are probably a mistake
 // are returned in `implausible` for the caller to warn about in its own way.
 BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<BarbuleParameterProblem>& implausible);
+
+// The TRT lobe's quadrature: trt_offsets (1 to 64, default 4) and trt_angles (1 to 16, default 1).
+BarbuleQuadrature readBarbuleQuadrature(const Properties& props);
 
 }  // namespace columba

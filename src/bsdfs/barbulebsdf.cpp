@@ -198,21 +198,9 @@ float BarbuleBSDF::coverage(const BSDFContext& ctx, const Vec3& omegaI) const {
 
 namespace {
 
-// The TRT lobe's quadrature: offsets across the lit arc and longitudinal angles.
-BarbuleQuadrature readQuadrature(const Properties& props) {
-  BarbuleQuadrature q;
-  q.offsetNodes = props.getInt("trt_offsets", q.offsetNodes);
-  q.thetaNodes = props.getInt("trt_angles", q.thetaNodes);
-  if (q.offsetNodes < 1 || q.offsetNodes > 64)
-    throw props.error("trt_offsets", "the TRT lobe's offset nodes must number 1 to 64");
-  if (q.thetaNodes < 1 || q.thetaNodes > 16)
-    throw props.error("trt_angles", "the TRT lobe's longitudinal nodes must number 1 to 16");
-  return q;
-}
-
 std::shared_ptr<Object> makeBarbule(const Properties& props, BarbuleBSDF::Role role) {
   std::optional<BarbuleParameterProblem> odd;
-  auto bsdf = std::make_shared<BarbuleBSDF>(readBarbuleParameters(props, odd), role, readQuadrature(props));
+  auto bsdf = std::make_shared<BarbuleBSDF>(readBarbuleParameters(props, odd), role, readBarbuleQuadrature(props));
   if (odd) warn(props.locationOf(odd->parameter), "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message);
   const BarbuleParameters& p = bsdf->parameters();
   BarbuleTextures textures{readFloatParameter(props, "b", p.b), readFloatParameter(props, "mu", p.mu),

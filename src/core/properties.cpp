@@ -222,6 +222,14 @@ void Properties::setFloat(const std::string& name, double value) {
   set(name, std::move(v));
 }
 
+void Properties::setInt(const std::string& name, int value) {
+  Value v;
+  v.kind = Kind::Integer;
+  v.location = location;
+  v.number = value;
+  set(name, std::move(v));
+}
+
 void Properties::setString(const std::string& name, const std::string& value) {
   Value v;
   v.kind = Kind::String;

@@ -125,6 +125,7 @@ class Properties {
   // Values given by a front end's options instead of a scene file (as Mitsuba's load_dict takes a
   // dictionary), at the element's own location.
   void setFloat(const std::string& name, double value);
+  void setInt(const std::string& name, int value);
   void setString(const std::string& name, const std::string& value);
   void setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest);
   void addChild(Child child) { children_.push_back(std::move(child)); }
