@@ -214,21 +214,17 @@ void Properties::set(const std::string& name, Value value) {
   values_.emplace(name, std::move(value));
 }
 
-void Properties::setFloat(const std::string& name, double value) {
+void Properties::setNumber(const std::string& name, ValueKind kind, double value) {
   Value v;
-  v.kind = Kind::Float;
+  v.kind = kind;
   v.location = location;
   v.number = value;
   set(name, std::move(v));
 }
 
-void Properties::setInt(const std::string& name, int value) {
-  Value v;
-  v.kind = Kind::Integer;
-  v.location = location;
-  v.number = value;
-  set(name, std::move(v));
-}
+void Properties::setFloat(const std::string& name, double value) { setNumber(name, Kind::Float, value); }
+
+void Properties::setInt(const std::string& name, int value) { setNumber(name, Kind::Integer, value); }
 
 void Properties::setString(const std::string& name, const std::string& value) {
   Value v;

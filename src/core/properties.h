@@ -131,6 +131,7 @@ class Properties {
   void addChild(Child child) { children_.push_back(std::move(child)); }
 
  private:
+  void setNumber(const std::string& name, ValueKind kind, double value);
   // The value of `name` (marked used), nullptr if absent; InputError if its kind is not one of
   // `kinds` (`expected` describes them for the message).
   const Value* find(const std::string& name, std::initializer_list<ValueKind> kinds, const char* expected) const;
