@@ -6,7 +6,6 @@
 #include <memory>
 #include "app/interruption.h"
 #include "barbule/parameter_reader.h"
-#include "core/number_text.h"
 #include "feather/feather_generator.h"
 #include "feather/rock_dove.h"
 
@@ -38,10 +37,7 @@ std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const 
                                                   "spacing H and tilt mu (a preset sets those; give b, phi_0 and "
                                                   "phi_1 instead)");
     if (props.has(name)) throw CLI::ValidationError("--barbule", "'" + name + "' is given twice");
-    if (std::optional<double> number = parseNumber<double>(value))
-      props.setFloat(name, float(*number));
-    else
-      props.setString(name, value);
+    props.setFromText(name, value);
     pairs.emplace_back(name, value);
   }
   std::optional<BarbuleParameterProblem> odd;

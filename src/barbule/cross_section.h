@@ -64,7 +64,6 @@ class BarbuleCrossSection {
   static float contactSpacing(float b, float mu, float exponent = 2.0f);
 
   float b() const { return b_; }
-  float exponent() const { return float(profile_.exponent()); }
   bool isEllipse() const { return ellipse_; }
   const Superellipse& profile() const { return profile_; }
   float spacing() const { return H_; }

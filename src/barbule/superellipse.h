@@ -20,9 +20,6 @@ class Superellipse {
  public:
   Superellipse(double b, double p);
 
-  double b() const { return b_; }
-  double exponent() const { return p_; }
-
   // F(x) = |x_u / b|^p + |x_v|^p: 1 on the profile, below 1 inside.
   double implicit(Vec2d x) const;
   // The outward normal direction (not normalised) at a point x: F's gradient over p.

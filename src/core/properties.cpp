@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/file_lookup.h"
+#include "core/number_text.h"
 
 namespace columba {
 
@@ -225,6 +226,13 @@ void Properties::setNumber(const std::string& name, ValueKind kind, double value
 void Properties::setFloat(const std::string& name, double value) { setNumber(name, Kind::Float, value); }
 
 void Properties::setInt(const std::string& name, int value) { setNumber(name, Kind::Integer, value); }
+
+void Properties::setFromText(const std::string& name, const std::string& text) {
+  if (std::optional<double> number = parseNumber<double>(text))
+    setFloat(name, *number);
+  else
+    setString(name, text);
+}
 
 void Properties::setString(const std::string& name, const std::string& value) {
   Value v;

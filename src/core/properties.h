@@ -126,6 +126,9 @@ class Properties {
   // dictionary), at the element's own location.
   void setFloat(const std::string& name, double value);
   void setInt(const std::string& name, int value);
+  // A value a front end has as text (NAME=VALUE on a command line): a number as a <float>,
+  // anything else as a <string>, as a scene file would have given it.
+  void setFromText(const std::string& name, const std::string& text);
   void setString(const std::string& name, const std::string& value);
   void setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest);
   void addChild(Child child) { children_.push_back(std::move(child)); }

@@ -6,7 +6,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -78,14 +77,7 @@ BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& val
   props.tag = "bsdf";
   props.type = "barbulebsdf";
   props.nameParameter = [](const std::string& name) { return "barbule parameter " + name; };
-  for (const auto& [name, text] : given) {
-    char* end = nullptr;
-    const double number = std::strtod(text.c_str(), &end);
-    if (!text.empty() && end == text.c_str() + text.size())
-      props.setFloat(name, number);
-    else
-      props.setString(name, text);  // a preset, a named index
-  }
+  for (const auto& [name, text] : given) props.setFromText(name, text);  // a number, a preset, a named index
   for (const auto& [name, value] : values) props.setFloat(name, value);
   std::optional<BarbuleParameterProblem> odd;
   BarbuleParameters p = readBarbuleParameters(props, odd);
