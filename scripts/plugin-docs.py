@@ -330,7 +330,8 @@ def analyse(src_dir):
         reads = reads_of(factory, definitions)
         read_names = {}
         for pname, rf, line in reads:
-            read_names.setdefault(pname, f"{rf.rel}:{line}")
+            # A literal ending in "_" is a prefix a number is appended to: documented as "prefix_N".
+            read_names.setdefault(pname + "N" if pname.endswith("_") else pname, f"{rf.rel}:{line}")
         for pname, at in sorted(read_names.items(), key=lambda kv: kv[1]):
             if pname not in documented:
                 problems.append(f"{at}: {kind} '{name}' reads parameter '{pname}', which its block "

@@ -137,8 +137,8 @@ def write_image(path, image):
 
 def read_feather_ply(path):
     """A feather PLY's faces (the rachis and barbs, 64 vertices each) as arrays: positions and
-    normals (B x 64 x 3), H, mu and height (B x 64, in the file's convention, or None) and the
-    recorded barb_width (or None)."""
+    normals (B x 64 x 3), H, mu and height (B x 64, in the file's convention, or None), stack (B x
+    64 uint8, each vertex's layer stack, or None) and the recorded barb_width (or None)."""
     return _columba.read_feather_ply(_os.fspath(path))
 
 
@@ -234,7 +234,8 @@ def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binar
 def write_feather_ply(path, barbs, binary=False):
     """Writes a feather PLY from arrays as read_feather_ply returns them (a dict, or anything with
     those keys): positions and normals (B x 64 x 3), H, mu and height (B x 64, the file's
-    convention, all three or None) and barb_width (or None). read_feather_ply reads back the same."""
+    convention, all three or None), stack (B x 64 whole numbers 0 to 255, the barbule BSDF's layer
+    stack at each vertex; optional) and barb_width (or None). read_feather_ply reads back the same."""
     positions = _np.ascontiguousarray(barbs["positions"], dtype=_np.float32)
     normals = _np.ascontiguousarray(barbs["normals"], dtype=_np.float32)
     if positions.ndim != 3 or positions.shape[1:] != (BARB_VERTICES, 3) or normals.shape != positions.shape:
@@ -253,10 +254,19 @@ def write_feather_ply(path, barbs, binary=False):
             raise ValueError(f"{name} must be finite numbers")
     if values[0] is not None and not (_np.all(values[0] > 0) and _np.all(values[2] >= 0)):
         raise ValueError("H must be positive and height at least 0 (docs/feather-ply.md)")
+    stack = barbs.get("stack")
+    if stack is not None:
+        stack = _np.asarray(stack)
+        if stack.shape != positions.shape[:2]:
+            raise ValueError(f"stack must be B x {BARB_VERTICES} ({positions.shape[:2]}), not {stack.shape}")
+        if not (_np.all(_np.isfinite(stack)) and _np.all(stack == _np.floor(stack)) and _np.all(stack >= 0)
+                and _np.all(stack <= 255)):
+            raise ValueError("stack must hold whole numbers from 0 to 255")
+        stack = _np.ascontiguousarray(stack, dtype=_np.uint8)
     width = barbs.get("barb_width")
     if width is not None and not (_np.isfinite(width) and width > 0):
         raise ValueError(f"barb_width must be positive, not {width}")
-    _columba._write_feather_ply(_os.fspath(path), positions, normals, values[0], values[1], values[2],
+    _columba._write_feather_ply(_os.fspath(path), positions, normals, values[0], values[1], values[2], stack,
                                 None if width is None else float(width), bool(binary))
 
 

@@ -500,20 +500,30 @@ py::dict featherPly(const std::string& path) {
     d["mu"] = py::none();
     d["height"] = py::none();
   }
+  if (!data.layerStack.empty()) {
+    py::array_t<uint8_t> stack({barbs, py::ssize_t(kBarbVertices)});
+    for (size_t i = 0; i < data.barbIndices.size(); ++i) stack.mutable_data()[i] = data.layerStack[data.barbIndices[i]];
+    d["stack"] = stack;
+  } else {
+    d["stack"] = py::none();
+  }
   d["barb_width"] = data.barbWidth ? py::object(py::float_(*data.barbWidth)) : py::object(py::none());
   return d;
 }
 
 // Writes arrays as read_feather_ply returns them (the Python wrapper has checked their shapes).
 void writeFeatherPlyArrays(const std::string& path, const FloatArray& positions, const FloatArray& normals,
-                           const py::object& H, const py::object& mu, const py::object& height,
+                           const py::object& H, const py::object& mu, const py::object& height, const py::object& stack,
                            std::optional<float> barbWidth, bool binary) {
   const size_t barbs = size_t(positions.shape(0));
-  const bool values = !H.is_none();
+  const bool values = !H.is_none(), stacks = !stack.is_none();
   FloatArray h = values ? H.cast<FloatArray>() : FloatArray(), m = values ? mu.cast<FloatArray>() : FloatArray(),
              t = values ? height.cast<FloatArray>() : FloatArray();
+  py::array_t<uint8_t, py::array::c_style | py::array::forcecast> s =
+      stacks ? stack.cast<py::array_t<uint8_t, py::array::c_style | py::array::forcecast>>()
+             : py::array_t<uint8_t, py::array::c_style | py::array::forcecast>();
   py::gil_scoped_release release;
-  FeatherPlyWriter writer(path, binary, barbs, barbWidth, values);
+  FeatherPlyWriter writer(path, binary, barbs, barbWidth, {values, stacks});
   BarbVertex vertices[kBarbVertices];
   const float *p = positions.data(), *n = normals.data();
   for (size_t b = 0; b < barbs; ++b) {
@@ -522,6 +532,7 @@ void writeFeatherPlyArrays(const std::string& path, const FloatArray& positions,
       vertices[k].position = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
       vertices[k].normal = Vec3(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
       if (values) vertices[k].fileH = h.data()[i], vertices[k].fileMu = m.data()[i], vertices[k].height = t.data()[i];
+      if (stacks) vertices[k].stack = s.data()[i];
     }
     writer.writeBarb(vertices);
   }

@@ -84,3 +84,21 @@ def test_write_feather_ply_writes_what_read_feather_ply_reads(tmp_path):
         columba.write_feather_ply(tmp_path / "bad.ply", {"positions": np.zeros((2, 10, 3)), "normals": np.zeros((2, 10, 3))})
     with pytest.raises(ValueError, match="height at least 0"):
         columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, height=-barbs["height"]))
+
+
+def test_layer_stacks_are_written_and_read_per_vertex(tmp_path):
+    barbs = columba.feather_barbs(barbs=5)
+    assert barbs["stack"] is None  # the generator chooses none
+    stack = (np.arange(barbs["height"].size).reshape(barbs["height"].shape) % 4).astype(np.int64)
+    for binary in (False, True):
+        path = tmp_path / f"s{int(binary)}.ply"
+        columba.write_feather_ply(path, dict(barbs, stack=stack), binary=binary)
+        back = columba.read_feather_ply(path)
+        assert back["stack"].dtype == np.uint8
+        np.testing.assert_array_equal(back["stack"], stack)
+        np.testing.assert_array_equal(back["height"], barbs["height"])
+    for bad in (stack + 0.5, stack - 1, stack + 256):
+        with pytest.raises(ValueError, match="whole numbers from 0 to 255"):
+            columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, stack=bad))
+    with pytest.raises(ValueError, match="stack must be B x 64"):
+        columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, stack=stack[:, :10]))

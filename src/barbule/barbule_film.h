@@ -12,10 +12,11 @@ namespace columba {
 
 class BarbuleFilm {
  public:
-  BarbuleFilm(const BarbuleParameters& params, float thicknessUm, const Wavelengths& wl)
+  // The cortex over the parameters' layer stack `layerStack` (BarbuleParameters::layerStack).
+  BarbuleFilm(const BarbuleParameters& params, float thicknessUm, const Wavelengths& wl, int layerStack = 0)
       : cortex_(params.filmIOR, params.extIOR, thicknessUm, wl) {
-    if (!params.layersBelow.empty())
-      layered_.emplace(params.filmIOR, params.extIOR, thicknessUm, params.layersBelow, wl);
+    const std::vector<FilmLayer>& below = params.layerStack(layerStack);
+    if (!below.empty()) layered_.emplace(params.filmIOR, params.extIOR, thicknessUm, below, wl);
   }
 
   FreeStandingFilm::Reflectance reflectance(float cosIncidence) const {

@@ -9,9 +9,9 @@ BarbuleModel::BarbuleModel(const BarbuleParameters& params, BarbuleQuadrature qu
       geometry_(params.b, params.phi0, params.phi1, params.mu, params.H, params.profileExponent),
       rules_(quadrature) {}
 
-BarbulePointModel BarbuleModel::at(std::optional<BarbuleCrossSection> own, float thicknessUm,
-                                   const Wavelengths& wl) const {
-  return BarbulePointModel(std::move(own), geometry_, params_, thicknessUm, wl, rules_);
+BarbulePointModel BarbuleModel::at(std::optional<BarbuleCrossSection> own, float thicknessUm, const Wavelengths& wl,
+                                   int layerStack) const {
+  return BarbulePointModel(std::move(own), geometry_, params_, thicknessUm, wl, rules_, layerStack);
 }
 
 BarbuleLobes BarbuleModel::lobes(const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const {

@@ -18,9 +18,10 @@ class BarbuleModel {
   const BarbuleParameters& parameters() const { return params_; }
   const BarbuleCrossSection& geometry() const { return geometry_; }
 
-  // The model at a point with its own cross-section (`own`, the shared one when empty) and film
-  // thickness (micrometres, at least 0).
-  BarbulePointModel at(std::optional<BarbuleCrossSection> own, float thicknessUm, const Wavelengths& wl) const;
+  // The model at a point with its own cross-section (`own`, the shared one when empty), film
+  // thickness (micrometres, at least 0) and layer stack (0 to parameters().layerStackCount() - 1).
+  BarbulePointModel at(std::optional<BarbuleCrossSection> own, float thicknessUm, const Wavelengths& wl,
+                       int layerStack = 0) const;
 
   // The two non-delta lobes f(omega_i, omega_o) (without any cosine) with the parameters' own
   // cross-section and thickness.

@@ -58,12 +58,25 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
   p.extIOR = ext.a;
   if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
-  if (props.has("layers")) {
+  auto readLayers = [&](const std::string& name) {
     try {
-      p.layersBelow = parseFilmLayers(expandLayerStack(props.getString("layers")));
+      return parseFilmLayers(expandLayerStack(props.getString(name)));
     } catch (const std::invalid_argument& e) {
-      throw props.error("layers", e.what());
+      throw props.error(name, e.what());
     }
+  };
+  if (props.has("layers")) p.layersBelow = readLayers("layers");
+  // layers_1, layers_2, ...: numbered without gaps, so that a stack's number is its place.
+  for (int k = 1; k < kMaxLayerStacks; ++k) {
+    const std::string name = layerStackParameter(k);
+    if (!props.has("layers_" + std::to_string(k))) {
+      for (int later = k + 1; later < kMaxLayerStacks; ++later)
+        if (props.has(layerStackParameter(later)))
+          throw props.error(layerStackParameter(later),
+                            "layer stacks are numbered from layers_1 without gaps, and " + name + " is missing");
+      break;
+    }
+    p.numberedLayerStacks.push_back(readLayers(name));
   }
 
   if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
@@ -73,6 +86,8 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   implausible = findImplausibility(p);
   return p;
 }
+
+std::string layerStackParameter(int index) { return index == 0 ? "layers" : "layers_" + std::to_string(index); }
 
 BarbuleQuadrature readBarbuleQuadrature(const Properties& props) {
   BarbuleQuadrature q;

@@ -28,13 +28,28 @@ struct BarbuleParameters {
   // Layers under the cortex, from the cortex down (docs/model.md, "Layered films"); none: the
   // cortex alone, the paper's film.
   std::vector<FilmLayer> layersBelow;
+  // Further stacks, which a feather's per-vertex `stack` chooses by number (the scene's layers_1,
+  // layers_2, ...); stack 0 is layersBelow.
+  std::vector<std::vector<FilmLayer>> numberedLayerStacks;
+
+  int layerStackCount() const { return 1 + int(numberedLayerStacks.size()); }
+  // Stack `index`, 0 to layerStackCount() - 1.
+  const std::vector<FilmLayer>& layerStack(int index) const {
+    return index == 0 ? layersBelow : numberedLayerStacks[size_t(index - 1)];
+  }
 };
+
+// Most layer stacks one barbule BSDF holds: layers and layers_1 to layers_15.
+inline constexpr int kMaxLayerStacks = 16;
 
 // The parameters a shape may give per point (a feather's per-vertex values), under their names
 // in a scene file.
 inline const SurfaceAttributeKey kBarbuleSpacingAttribute{"H"};
 inline const SurfaceAttributeKey kBarbuleTiltAttribute{"mu"};
 inline const SurfaceAttributeKey kCortexThicknessAttribute{"height"};
+// The layer stack a point chooses, by number (BarbuleParameters::layerStack): not interpolated,
+// the nearest vertex's.
+inline const SurfaceAttributeKey kLayerStackAttribute{"stack"};
 
 // A named set of shape parameters and film thickness, with where the values come from.
 struct BarbulePreset {

@@ -48,8 +48,11 @@ BarbuleQuadratureRules::BarbuleQuadratureRules(const BarbuleQuadrature& quadratu
 
 BarbulePointModel::BarbulePointModel(std::optional<BarbuleCrossSection> own, const BarbuleCrossSection& shared,
                                      const BarbuleParameters& params, float thicknessUm, const Wavelengths& wl,
-                                     const BarbuleQuadratureRules& rules)
-    : own_(std::move(own)), geometry_(own_ ? *own_ : shared), rules_(rules), film_(params, thicknessUm, wl) {
+                                     const BarbuleQuadratureRules& rules, int layerStack)
+    : own_(std::move(own)),
+      geometry_(own_ ? *own_ : shared),
+      rules_(rules),
+      film_(params, thicknessUm, wl, layerStack) {
   for (int i = 0; i < kSpectrumSamples; ++i)
     melanin_[i] = params.melanin ? params.melanin->eval(wl[i]) : melaninReflectance(wl[i]);
 }

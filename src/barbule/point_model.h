@@ -112,10 +112,11 @@ struct BarbuleSample {
 
 class BarbulePointModel {
  public:
-  // `own` is the point's cross-section where it has one of its own, `shared` the BSDF's otherwise.
+  // `own` is the point's cross-section where it has one of its own, `shared` the BSDF's otherwise;
+  // the film is the cortex over `params`' layer stack `layerStack`.
   BarbulePointModel(std::optional<BarbuleCrossSection> own, const BarbuleCrossSection& shared,
                     const BarbuleParameters& params, float thicknessUm, const Wavelengths& wl,
-                    const BarbuleQuadratureRules& rules);
+                    const BarbuleQuadratureRules& rules, int layerStack = 0);
   BarbulePointModel(const BarbulePointModel&) = delete;
   BarbulePointModel& operator=(const BarbulePointModel&) = delete;
 

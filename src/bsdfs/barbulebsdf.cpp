@@ -1,7 +1,7 @@
 /*! plugin bsdf barbulebsdf barbulebsdfev
 The barbule BSDF of rock dove neck feathers (Huang et al. 2022): a vane of parallel barbules with elliptical cross-sections, coated by a thin keratin film over melanin. Its lobes are R, the specular reflection off the film with thin-film interference (a microfacet lobe whose normals come from the cross-section's curvature), TRT, light through the film reflected by the melanin layer and back out, and T, light straight through the gaps between barbules (a pass-through). The frame has z along the vane normal and y along the barbule axis. `barbulebsdf` takes the camera side as the model's incident direction, as a BSDF-sampled path tracer needs; `barbulebsdfev` takes the light's, as the paper's emitter-sampled visualisations do, and returns what an imaging scatterometer records, f · |cos θ_camera|. The [model](../model.md) page derives the lobes.
 
-On a feather whose file gives per-vertex values of `H`, `mu` or `height`, those win over a constant given here (with a warning naming the line); a texture given here wins over them.
+On a feather whose file gives per-vertex values of `H`, `mu` or `height`, those win over a constant given here (with a warning naming the line); a texture given here wins over them. A feather whose file gives each vertex a `stack` (docs/feather-ply.md) chooses among this BSDF's layer stacks by number: `layers` is stack 0, `layers_1` stack 1, and so on; a stack the BSDF lacks is an error naming the vertex.
 Mitsuba 3: not in Mitsuba 3.
 | parameter | type | default | meaning | Mitsuba 3 |
 | preset | string | — | a named set of shape parameters and film thickness (`dove-green`, `dove-purple`); parameters given beside it override its values | not in Mitsuba 3 |
@@ -20,6 +20,7 @@ Mitsuba 3: not in Mitsuba 3.
 | trt_offsets | integer | 4 | the TRT lobe's Gauss–Legendre nodes across the lit arc, 1 to 64: more for squarer profiles, whose normal turns fast at the corners (at p = 16 the default 4 is 1.6 % high, 16 within 0.3 % of exact; docs/model.md) | not in Mitsuba 3 |
 | trt_angles | integer | 1 | the TRT lobe's nodes over the longitudinal angle, 1 to 16 (1: one node at the mean angle) | not in Mitsuba 3 |
 | layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin`, `melanin` (Stavenga et al. 2015's n and k) or a complex `N+Ki`; thickness in µm), or the name of a published stack: `parotia-occipital` (Stavenga et al. 2015): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
+| layers_N | string | — | further layer stacks, `layers_1` to `layers_15`, as `layers` takes them, for the vertices of a feather whose file chooses them by number (`stack` N); numbered from 1 without gaps | not in Mitsuba 3 |
 */
 #include "bsdfs/barbulebsdf.h"
 
@@ -51,7 +52,29 @@ BarbuleBSDF::BarbuleBSDF(const BarbuleParameters& params, Role role, BarbuleQuad
     : model_(params, quadrature), role_(role) {}
 
 BarbulePointModel BarbuleBSDF::pointModel(const BSDFContext& ctx, const Wavelengths& wl) const {
-  return model_.at(overriddenGeometry(ctx), cortexThickness(ctx), wl);
+  return model_.at(overriddenGeometry(ctx), cortexThickness(ctx), wl, layerStack(ctx));
+}
+
+int BarbuleBSDF::layerStack(const BSDFContext& ctx) const {
+  // Shapes choose only stacks the BSDF has (noteValuesGivenByShape refuses others).
+  std::optional<float> chosen = ctx.attribute(kLayerStackAttribute);
+  return chosen ? std::clamp(int(*chosen), 0, model_.parameters().layerStackCount() - 1) : 0;
+}
+
+void BarbuleBSDF::noteValuesGivenByShape(const ShapePointValues& given) const {
+  if (sceneSources_) sceneSources_->warnIfShadowed(given.everywhere, given.shape);
+  const int stacks = model_.parameters().layerStackCount();
+  if (given.largestLayerStack >= stacks)
+    throw InputError(given.largestLayerStackAt,
+                     given.shape + " chooses layer stack " + std::to_string(given.largestLayerStack) + " (" +
+                         given.largestLayerStackElement + "), but its barbulebsdf (" + declaredAt_.str() + ") has " +
+                         (stacks == 1 ? std::string("only stack 0, `layers`")
+                                      : "stacks 0 to " + std::to_string(stacks - 1) + ", `layers` to `" +
+                                            layerStackParameter(stacks - 1) + "`"));
+  if (given.largestLayerStack < 0 && stacks > 1)
+    warn(numberedStacksAt_,
+         "barbulebsdf, parameter '" + layerStackParameter(1) + "': " + given.shape +
+             " chooses no layer stack per vertex (no vertex property 'stack'), so only `layers` applies there");
 }
 
 float BarbuleBSDF::cortexThickness(const BSDFContext& ctx) const {
@@ -206,11 +229,12 @@ std::shared_ptr<Object> makeBarbule(const Properties& props, BarbuleBSDF::Role r
   BarbuleTextures textures{readFloatParameter(props, "b", p.b), readFloatParameter(props, "mu", p.mu),
                            readFloatParameter(props, "H", p.H), readFloatParameter(props, "height", p.height)};
   bsdf->setSceneSources(std::make_shared<PerPointParameterSources>(
-      props, "preset",
-      std::initializer_list<PerPointParameterSources::Parameter>{
-          {"H", kBarbuleSpacingAttribute, textures.H.isTextured()},
-          {"mu", kBarbuleTiltAttribute, textures.mu.isTextured()},
-          {"height", kCortexThicknessAttribute, textures.height.isTextured()}}));
+                            props, "preset",
+                            std::initializer_list<PerPointParameterSources::Parameter>{
+                                {"H", kBarbuleSpacingAttribute, textures.H.isTextured()},
+                                {"mu", kBarbuleTiltAttribute, textures.mu.isTextured()},
+                                {"height", kCortexThicknessAttribute, textures.height.isTextured()}}),
+                        props.location, props.locationOf(layerStackParameter(1)));
   bsdf->setTextures(std::move(textures));
   return bsdf;
 }

@@ -81,11 +81,16 @@ class BarbuleBSDF : public BSDF {
   Role role() const { return role_; }
 
   void setTextures(BarbuleTextures textures) { textures_ = std::move(textures); }
-  // Where a scene gave H, mu and height, for the warning when a shape's values win over them.
-  void setSceneSources(std::shared_ptr<const PerPointParameterSources> sources) { sceneSources_ = std::move(sources); }
-  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const override {
-    if (sceneSources_) sceneSources_->warnIfShadowed(everywhere, shape);
+  // Where a scene gave H, mu and height, for the warning when a shape's values win over them;
+  // where it declared the BSDF, for the error when a shape chooses a layer stack it lacks; and
+  // where it gave layers_1, for the warning when a shape chooses none.
+  void setSceneSources(std::shared_ptr<const PerPointParameterSources> sources, SourceLocation declaredAt,
+                       SourceLocation numberedStacksAt) {
+    sceneSources_ = std::move(sources);
+    declaredAt_ = std::move(declaredAt);
+    numberedStacksAt_ = std::move(numberedStacksAt);
   }
+  void noteValuesGivenByShape(const ShapePointValues& given) const override;
 
  private:
   // The model at the point: the cross-section with the point's own b, mu and H where textures or
@@ -93,6 +98,7 @@ class BarbuleBSDF : public BSDF {
   BarbulePointModel pointModel(const BSDFContext& ctx, const Wavelengths& wl) const;
   std::optional<BarbuleCrossSection> overriddenGeometry(const BSDFContext& ctx) const;
   float cortexThickness(const BSDFContext& ctx) const;  // micrometres
+  int layerStack(const BSDFContext& ctx) const;
 
   // f |cos theta_o| for the interface's (wi, wo), the role deciding which is omega_i; `fromWi`
   // holds wi's quantities, `woArc` wo's lit arc. With the density of the sampler (from wi) too.
@@ -109,6 +115,7 @@ class BarbuleBSDF : public BSDF {
   Role role_;
   BarbuleTextures textures_;
   std::shared_ptr<const PerPointParameterSources> sceneSources_;
+  SourceLocation declaredAt_, numberedStacksAt_;
 };
 
 // <bsdf type="barbulebsdf"> and <bsdf type="barbulebsdfev">: their parameters are in docs/reference/bsdfs.md.

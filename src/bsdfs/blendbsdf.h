@@ -20,9 +20,9 @@ class BlendBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return first_->hasPassThrough() || second_->hasPassThrough(); }
   bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
-  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const override {
-    first_->noteValuesGivenByShape(everywhere, shape);
-    second_->noteValuesGivenByShape(everywhere, shape);
+  void noteValuesGivenByShape(const ShapePointValues& given) const override {
+    first_->noteValuesGivenByShape(given);
+    second_->noteValuesGivenByShape(given);
   }
   bool samplesAllItScatters() const override {
     return first_->samplesAllItScatters() && second_->samplesAllItScatters();

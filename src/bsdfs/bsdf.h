@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include "core/object.h"
+#include "core/shape_point_values.h"
 #include "core/spectrum.h"
 #include "core/surface_attributes.h"
 #include "core/vector.h"
@@ -143,10 +144,11 @@ class BSDF : public Object {
   // that light it finds needs no emitter sample beside it (Scene::EmitterSet). False where a
   // user's parameters switch a strategy off.
   virtual bool samplesAllItScatters() const { return true; }
-  // Called by a shape that gives the parameters `everywhere` at every one of its points (a
-  // feather's per-vertex barbule values), which the BSDF's constants for them never reach there:
-  // a BSDF warns, once, for each such parameter the scene gave it. `shape` names the shape.
-  virtual void noteValuesGivenByShape(const SurfaceAttributeSet& /*everywhere*/, const std::string& /*shape*/) const {}
+  // Called by a shape that gives BSDF parameters at its points (a feather's per-vertex barbule
+  // values): a BSDF warns, once, for each parameter the scene gave it that `given.everywhere`
+  // leaves without effect there, and throws InputError for a choice it cannot honour (a layer
+  // stack it does not have).
+  virtual void noteValuesGivenByShape(const ShapePointValues& /*given*/) const {}
 };
 
 inline float cosTheta(const Vec3& w) { return w.z; }

@@ -19,9 +19,7 @@ class PerturbedFrameBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const final;
   bool hasPassThrough() const final { return nested_->hasPassThrough(); }
   bool isDeltaOnly() const final { return nested_->isDeltaOnly(); }
-  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const final {
-    nested_->noteValuesGivenByShape(everywhere, shape);
-  }
+  void noteValuesGivenByShape(const ShapePointValues& given) const final { nested_->noteValuesGivenByShape(given); }
   bool samplesAllItScatters() const final { return nested_->samplesAllItScatters(); }
 
   // The perturbed frame at the shading point, in the local shading frame.

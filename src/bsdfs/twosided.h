@@ -19,9 +19,9 @@ class TwoSidedBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
   bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
-  void noteValuesGivenByShape(const SurfaceAttributeSet& everywhere, const std::string& shape) const override {
-    front_->noteValuesGivenByShape(everywhere, shape);
-    back_->noteValuesGivenByShape(everywhere, shape);
+  void noteValuesGivenByShape(const ShapePointValues& given) const override {
+    front_->noteValuesGivenByShape(given);
+    back_->noteValuesGivenByShape(given);
   }
   bool samplesAllItScatters() const override { return front_->samplesAllItScatters() && back_->samplesAllItScatters(); }
 

@@ -14,7 +14,7 @@ namespace columba {
 namespace {
 
 // What each vertex property is used for.
-enum VertexRole { kX, kY, kZ, kNX, kNY, kNZ, kH, kMu, kHeight, kRoleCount, kIgnored = -1 };
+enum VertexRole { kX, kY, kZ, kNX, kNY, kNZ, kH, kMu, kHeight, kStack, kRoleCount, kIgnored = -1 };
 
 std::vector<int> vertexRoles(const PlyReader& ply, const PlyElement& e) {
   std::vector<int> roles(e.properties.size(), kIgnored);
@@ -51,6 +51,7 @@ std::vector<int> vertexRoles(const PlyReader& ply, const PlyElement& e) {
          "original implementation, Columba uses them only all together, so the feather's "
          "defaults apply");
   }
+  assign("stack", kStack);
   return roles;
 }
 
@@ -66,6 +67,7 @@ void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
     out.barbuleMu.resize(e.count);
     out.barbuleHeight.resize(e.count);
   }
+  if (hasRole(kStack)) out.layerStack.resize(e.count);
   for (size_t i = 0; i < e.count; ++i) {
     ply.next();
     float v[kRoleCount] = {};
@@ -85,6 +87,18 @@ void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
       out.barbuleH[i] = v[kH];
       out.barbuleMu[i] = v[kMu];
       out.barbuleHeight[i] = v[kHeight];
+    }
+    if (!out.layerStack.empty()) {
+      const float stack = v[kStack];
+      if (!(stack >= 0.0f && stack <= float(kMaxVertexLayerStack) && stack == std::floor(stack)))
+        ply.fail("stack is " + valueText(stack) + "; a layer stack is a whole number from 0 to " +
+                 std::to_string(kMaxVertexLayerStack));
+      out.layerStack[i] = uint8_t(stack);
+      if (int(stack) > out.largestLayerStack) {
+        out.largestLayerStack = int(stack);
+        out.largestLayerStackVertex = i;
+        out.largestLayerStackLine = ply.line();
+      }
     }
   }
 }

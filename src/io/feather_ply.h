@@ -5,7 +5,8 @@
 //   comment barbwidth W  optional: the barb width the barbs were laid out for (PLY units)
 //   element vertex N   float x y z, optional float H mu height (per-vertex barbule spacing,
 //                      tilt and cortex thickness, in the file convention of
-//                      feather_barbule_values.h), the vane normal as out1 out2 out3 (or nx ny nz)
+//                      feather_barbule_values.h), optional stack (the barbule BSDF's layer
+//                      stack, a whole number), the vane normal as out1 out2 out3 (or nx ny nz)
 //   element face M     property list uchar int vertex_indices (any integer types)
 //
 // ASCII and binary_little_endian; one element per line in ASCII. Other properties and elements
@@ -24,6 +25,8 @@ namespace columba {
 
 inline constexpr int kBarbVertices = 64;
 inline constexpr int kBarbSegments = kBarbVertices - 1;
+// The largest layer stack a vertex may choose; the BSDF decides which it has.
+inline constexpr int kMaxVertexLayerStack = 255;
 
 struct FeatherPlyData {
   std::string path;
@@ -31,6 +34,12 @@ struct FeatherPlyData {
   std::vector<Vec3> normals;  // unit
   // Per-vertex barbule values as the file gives them; all three empty when it has not all three.
   std::vector<float> barbuleH, barbuleMu, barbuleHeight;
+  // Per-vertex layer stack (0 to kMaxVertexLayerStack), empty when the file gives none; the
+  // largest, the first vertex choosing it and that vertex's line (ASCII; 0 in binary files).
+  std::vector<uint8_t> layerStack;
+  int largestLayerStack = -1;
+  size_t largestLayerStackVertex = 0;
+  int largestLayerStackLine = 0;
   // From a `comment barbwidth W` header line.
   std::optional<float> barbWidth;
   std::vector<uint32_t> barbIndices;  // kBarbVertices per barb

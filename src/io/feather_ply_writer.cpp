@@ -16,11 +16,11 @@ constexpr size_t kFlushSize = 1 << 20;
 }  // namespace
 
 FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount,
-                                   std::optional<float> barbWidth, bool barbuleValues)
+                                   std::optional<float> barbWidth, FeatherPlyVertexProperties properties)
     : path_(path),
       tempPath_(path + ".tmp" + std::to_string(getpid())),
       binary_(binary),
-      barbuleValues_(barbuleValues),
+      properties_(properties),
       barbCount_(barbCount) {
   file_ = std::fopen(tempPath_.c_str(), "wb");
   if (!file_) throw std::runtime_error("cannot create '" + tempPath_ + "': " + std::strerror(errno));
@@ -31,11 +31,13 @@ FeatherPlyWriter::FeatherPlyWriter(const std::string& path, bool binary, size_t 
       "element vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
       "{}"
       "property float out1\nproperty float out2\nproperty float out3\n"
+      "{}"
       "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
       binary ? "binary_little_endian" : "ascii",
       barbWidth ? fmt::format("comment {} {}\n", kBarbWidthComment, *barbWidth) : std::string(),
-      barbCount * kBarbVertices, barbuleValues ? "property float H\nproperty float mu\nproperty float height\n" : "",
-      barbCount);
+      barbCount * kBarbVertices,
+      properties.barbuleValues ? "property float H\nproperty float mu\nproperty float height\n" : "",
+      properties.layerStack ? "property uchar stack\n" : "", barbCount);
   put(header.data(), header.size());
 }
 
@@ -62,14 +64,16 @@ void FeatherPlyWriter::writeBarb(const BarbVertex* vertices) {
     const float values[9] = {v.position.x, v.position.y, v.position.z, v.fileH,   v.fileMu,
                              v.height,     v.normal.x,   v.normal.y,   v.normal.z};
     const float withoutValues[6] = {v.position.x, v.position.y, v.position.z, v.normal.x, v.normal.y, v.normal.z};
-    const float* record = barbuleValues_ ? values : withoutValues;
-    const size_t count = barbuleValues_ ? 9 : 6;
+    const float* record = properties_.barbuleValues ? values : withoutValues;
+    const size_t count = properties_.barbuleValues ? 9 : 6;
     if (binary_) {
       put(reinterpret_cast<const char*>(record), count * sizeof(float));
+      if (properties_.layerStack) put(reinterpret_cast<const char*>(&v.stack), 1);
     } else {
       // Shortest representation that reads back to the same float.
       fmt::memory_buffer line;
       for (size_t k = 0; k < count; ++k) fmt::format_to(std::back_inserter(line), k ? " {}" : "{}", record[k]);
+      if (properties_.layerStack) fmt::format_to(std::back_inserter(line), " {}", int(v.stack));
       line.push_back('\n');
       put(line.data(), line.size());
     }

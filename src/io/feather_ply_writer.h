@@ -4,6 +4,7 @@
 // just number the vertices in order, are written at the end. Nothing is kept in memory, so
 // files of any size can be written. The file appears under its name only when complete: it is
 // written beside it under a temporary name and renamed by commit().
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -18,15 +19,21 @@ struct BarbVertex {
   Vec3 normal;  // vane normal
   // In the file's convention (shapes/feather_barbule_values.h), not the model's.
   float fileH = 0.0f, fileMu = 0.0f, height = 0.0f;
+  uint8_t stack = 0;  // the barbule BSDF's layer stack
+};
+
+// Which optional vertex properties a file has: H, mu and height (all three), and stack.
+struct FeatherPlyVertexProperties {
+  bool barbuleValues = true;
+  bool layerStack = false;
 };
 
 class FeatherPlyWriter {
  public:
   // Throws std::runtime_error if the temporary file cannot be created. `barbWidth` is recorded
-  // in the header (`comment barbwidth W`) for the feather shape to use when the scene sets none;
-  // without `barbuleValues` the vertices have no H, mu and height.
+  // in the header (`comment barbwidth W`) for the feather shape to use when the scene sets none.
   FeatherPlyWriter(const std::string& path, bool binary, size_t barbCount, std::optional<float> barbWidth,
-                   bool barbuleValues = true);
+                   FeatherPlyVertexProperties properties = {});
   ~FeatherPlyWriter();
   FeatherPlyWriter(const FeatherPlyWriter&) = delete;
   FeatherPlyWriter& operator=(const FeatherPlyWriter&) = delete;
@@ -41,7 +48,8 @@ class FeatherPlyWriter {
   void put(const char* data, size_t size);
 
   std::string path_, tempPath_;
-  bool binary_, barbuleValues_;
+  bool binary_;
+  FeatherPlyVertexProperties properties_;
   size_t barbCount_, written_ = 0;
   std::FILE* file_ = nullptr;
   std::vector<char> buffer_;

@@ -117,7 +117,12 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     gather(ply.barbuleH, ply.barbIndices);
     gather(ply.barbuleMu, ply.barbIndices);
     gather(ply.barbuleHeight, ply.barbIndices);
+    gather(ply.layerStack, ply.barbIndices);
   }
+  layerStacks_ = std::move(ply.layerStack);
+  largestLayerStack_ = ply.largestLayerStack;
+  largestLayerStackAt_ = {ply.path, ply.largestLayerStackLine};
+  largestLayerStackVertex_ = ply.largestLayerStackVertex;
   if (ply.hasBarbuleValues()) {
     // In the model's terms and interleaved, so that a hit reads its parameters from one place.
     barbuleValues_.resize(ply.positions.size());
@@ -251,11 +256,26 @@ SurfaceInteraction FeatherShape::interaction(const Ray& ray, const HitRecord& hi
   si.attributes.set(kBarbuleSpacingAttribute, values.h);
   si.attributes.set(kBarbuleTiltAttribute, values.mu);
   si.attributes.set(kCortexThicknessAttribute, values.height);
+  // A choice, not a quantity: the nearer vertex's.
+  if (!layerStacks_.empty())
+    si.attributes.set(kLayerStackAttribute,
+                      float(layerStacks_[barb * kBarbVertices + size_t(seg) + (along < 0.5f ? 0 : 1)]));
   return si;
 }
 
 size_t FeatherShape::memoryBytes() const {
-  return strips_.capacity() * sizeof(PackedStrip) + barbuleValues_.capacity() * sizeof(BarbuleValues);
+  return strips_.capacity() * sizeof(PackedStrip) + barbuleValues_.capacity() * sizeof(BarbuleValues) +
+         layerStacks_.capacity();
+}
+
+ShapePointValues FeatherShape::givenValues(const std::string& name) const {
+  ShapePointValues given;
+  given.shape = name;
+  given.everywhere = givenEverywhere_;
+  given.largestLayerStack = largestLayerStack_;
+  given.largestLayerStackAt = largestLayerStackAt_;
+  given.largestLayerStackElement = "vertex " + std::to_string(largestLayerStackVertex_);
+  return given;
 }
 
 }  // namespace columba

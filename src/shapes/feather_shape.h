@@ -43,6 +43,7 @@
 #include <memory>
 #include <vector>
 #include "core/properties.h"
+#include "core/shape_point_values.h"
 #include "core/transform.h"
 #include "io/feather_ply.h"
 #include "shapes/barb_strip.h"
@@ -85,10 +86,11 @@ class FeatherShape : public Shape {
     strips_[primID].bounds(profiles_[primID % kBarbSegments], lo, hi);
   }
   float radius() const { return radius_; }
-  // The BSDF parameters the feather gives at every point, so that a BSDF's own constants for them
-  // have no effect on it: H always, mu and height unless some segment has 0 at both ends (a zero
-  // leaves the BSDF's own, as in the original).
-  const SurfaceAttributeSet& valuesGivenEverywhere() const { return givenEverywhere_; }
+  // What the feather gives its BSDF at its points, for BSDF::noteValuesGivenByShape; `name` names
+  // the feather in messages. Given at every point, so that a BSDF's own constants for them have
+  // no effect on it: H always, mu and height unless some segment has 0 at both ends (a zero leaves
+  // the BSDF's own, as in the original). The layer stack, where the file gives one.
+  ShapePointValues givenValues(const std::string& name) const;
   // Bytes held by the loaded geometry (not counting Embree's BVH).
   size_t memoryBytes() const;
 
@@ -106,6 +108,11 @@ class FeatherShape : public Shape {
                                                        modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
   std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
   SurfaceAttributeSet givenEverywhere_;
+  // Per vertex, the barbule BSDF's layer stack (the file's `stack`), or empty when it has none.
+  std::vector<uint8_t> layerStacks_;
+  int largestLayerStack_ = -1;
+  SourceLocation largestLayerStackAt_;
+  size_t largestLayerStackVertex_ = 0;
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };

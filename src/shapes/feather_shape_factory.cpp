@@ -1,5 +1,5 @@
 /*! plugin shape feather
-Feathers: barbs read from a feather PLY file (the [feather PLY format](../feather-ply.md); `columba feather` writes them), each segment a cylindrical strip intersected exactly. `to_world` is applied to the vertices and normals when the file is loaded; the widths are in the file's units and scale with the cube root of to_world's determinant. The strip radius is (barbwidth / 2) / sin(cover), and barbs taper toward their tips. Per-vertex barbule values in the file (H, mu, height) are given to the nested BSDF (default: `diffuse`). A feather takes no emitter.
+Feathers: barbs read from a feather PLY file (the [feather PLY format](../feather-ply.md); `columba feather` writes them), each segment a cylindrical strip intersected exactly. `to_world` is applied to the vertices and normals when the file is loaded; the widths are in the file's units and scale with the cube root of to_world's determinant. The strip radius is (barbwidth / 2) / sin(cover), and barbs taper toward their tips. Per-vertex barbule values in the file (H, mu, height) and layer stacks (stack, the nearer vertex's) are given to the nested BSDF (default: `diffuse`). A feather takes no emitter.
 Mitsuba 3: not in Mitsuba 3.
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | required | the feather PLY file | not in Mitsuba 3 |
@@ -55,8 +55,7 @@ std::shared_ptr<Object> makeFeatherShape(const Properties& props) {
   shape->bsdf = props.child<BSDF>();
   // Mitsuba's default material when none is nested.
   if (!shape->bsdf) shape->bsdf = makeDefaultPlugin<BSDF>(makeDiffuseBSDF, "bsdf", "diffuse", props.location);
-  shape->bsdf->noteValuesGivenByShape(shape->valuesGivenEverywhere(),
-                                      "the feather '" + props.getString("filename") + "'");
+  shape->bsdf->noteValuesGivenByShape(shape->givenValues("the feather '" + props.getString("filename") + "'"));
   return shape;
 }
 

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "io/feather_ply.h"
@@ -309,5 +310,53 @@ TEST_F(FeatherPlyTest, ReadsTheRecordedBarbWidth) {
     std::string err = errorOf(f);
     EXPECT_NE(err.find(f + ":3"), std::string::npos) << bad << ": " << err;
     EXPECT_NE(err.find("barb width"), std::string::npos) << err;
+  }
+}
+
+namespace {
+
+// One barb whose vertices carry a layer stack of `type`, vertex i's value given by `stack`.
+std::string oneBarbWithStacks(const std::string& type, const std::function<std::string(int)>& stack) {
+  std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 64\nproperty float x\nproperty float y\nproperty float z\n"
+      "property " +
+      type +
+      " stack\nproperty float out1\nproperty float out2\nproperty float out3\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < kBarbVertices; ++i) text += std::to_string(0.01 * i) + " 0 0 " + stack(i) + " 0 0 1\n";
+  text += "64";
+  for (int i = 0; i < kBarbVertices; ++i) text += " " + std::to_string(i);
+  return text + "\n";
+}
+constexpr int kStackHeaderLines = 13;  // of oneBarbWithStacks
+
+}  // namespace
+
+TEST_F(FeatherPlyTest, ReadsPerVertexLayerStacksAndWhereTheLargestIsChosen) {
+  const std::string f = path("stacks.ply");
+  std::ofstream(f) << oneBarbWithStacks("uchar", [](int i) { return std::to_string(i == 40 || i == 50 ? 3 : i % 2); });
+  FeatherPlyData d = readFeatherPly(f);
+  ASSERT_EQ(d.layerStack.size(), 64u);
+  EXPECT_EQ(d.layerStack[7], 1);
+  EXPECT_EQ(d.layerStack[8], 0);
+  EXPECT_EQ(d.layerStack[50], 3);
+  EXPECT_EQ(d.largestLayerStack, 3);
+  EXPECT_EQ(d.largestLayerStackVertex, 40u);
+  EXPECT_EQ(d.largestLayerStackLine, kStackHeaderLines + 41);
+  EXPECT_FALSE(d.hasBarbuleValues());  // a stack needs no H, mu and height
+  // Files without the property choose none.
+  FeatherPlyData plain = readFeatherPly(writeAscii("plain.ply", twoBarbs(), 128));
+  EXPECT_TRUE(plain.layerStack.empty());
+  EXPECT_EQ(plain.largestLayerStack, -1);
+}
+
+TEST_F(FeatherPlyTest, RefusesLayerStacksThatAreNotWholeNumbersFrom0To255) {
+  const std::string f = path("badstack.ply");
+  for (const auto& [type, value] :
+       {std::pair<std::string, std::string>{"float", "1.5"}, {"float", "-1"}, {"int", "256"}, {"float", "nan"}}) {
+    std::ofstream(f) << oneBarbWithStacks(type, [&](int i) { return i == 9 ? value : std::string("0"); });
+    const std::string err = errorOf(f);
+    EXPECT_NE(err.find(f + ":" + std::to_string(kStackHeaderLines + 10)), std::string::npos) << value << ": " << err;
+    EXPECT_NE(err.find("stack"), std::string::npos) << err;
   }
 }

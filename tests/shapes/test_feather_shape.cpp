@@ -297,3 +297,28 @@ TEST(FeatherShape, RejectsDegenerateBarbs) {
   folded.positions[10] = folded.positions[8];
   EXPECT_THROW(FeatherShape(std::move(folded), FeatherShapeParams()), InputError);
 }
+
+TEST(FeatherShape, AHitChoosesTheLayerStackOfTheNearerVertex) {
+  FeatherPlyData ply = syntheticBarbs(1, 0.5f, 0.0f, 0.0f);
+  for (int k = 0; k < kBarbVertices; ++k) ply.layerStack.push_back(uint8_t(k % 3));
+  ply.largestLayerStack = 2;
+  FeatherShape shape(std::move(ply), FeatherShapeParams());
+  EmbreeScene scene(shape);
+  for (int seg : {0, 20, 61}) {
+    BarbStrip s = shape.strip(seg);
+    const float angle = 0.5f * std::asin(s.halfWidthEnd / s.radius);
+    for (float along : {0.2f, 0.45f, 0.55f, 0.8f}) {
+      auto hit = scene.intersect(rayToward(s.point(along, angle), s.normal(angle), 0.02f));
+      ASSERT_TRUE(hit.has_value());
+      const int nearer = seg + (along < 0.5f ? 0 : 1);
+      EXPECT_EQ(attribute(hit->second, "stack"), float(nearer % 3)) << "segment " << seg << ", along " << along;
+    }
+  }
+  // A feather without stacks gives none.
+  FeatherShape plain(syntheticBarbs(1, 0.5f, 0.0f, 0.0f), FeatherShapeParams());
+  EmbreeScene plainScene(plain);
+  BarbStrip s = plain.strip(5);
+  auto hit = plainScene.intersect(rayToward(s.point(0.5f, 0.0f), s.normal(0.0f), 0.02f));
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_TRUE(std::isnan(attribute(hit->second, "stack")));
+}
