@@ -207,28 +207,31 @@ def fresnel_amplitudes(cos_i, eta):
 
 def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binary=False,
                       height=GREEN_CORTEX_THICKNESS, purple_height=None, height_spread=0.0, purple_below=None,
-                      colour_blend=None):
+                      colour_blend=None, purple_stack=None):
     """Writes procedural feathers as a feather PLY (as `columba feather`): one feather, or with
     neck=True a neck of `feathers` (60) feathers. barbs: per side (default: edge to edge).
     The colour: height, the cortex thickness of the green barbules (a single feather's, µm);
     height_spread, how much each feather's thickness varies (±, µm); on a neck purple_height
     (PURPLE_CORTEX_THICKNESS), the purple barbules' thickness, purple_below (PURPLE_BELOW), the
     height y on the neck around which green turns purple, and colour_blend (COLOUR_BLEND), the
-    width of that change on either side (0: sharp).
+    width of that change on either side (0: sharp), and purple_stack (1 to 15, or None), the layer
+    stack the purple barbules choose (written per vertex as `stack`; docs/feather-ply.md).
     Returns a summary dict (feathers, barbs, faces, vertices, tiling_barb_width)."""
     for name, value in (("feathers", feathers), ("purple_height", purple_height), ("purple_below", purple_below),
-                        ("colour_blend", colour_blend)):
+                        ("colour_blend", colour_blend), ("purple_stack", purple_stack)):
         if value is not None and not neck:
             raise ValueError(f"{name} applies to a neck (neck=True)")
     if feathers is not None and feathers < 1:
         raise ValueError(f"feathers must be positive, not {feathers}")
     if barbs is not None and barbs < 1:
         raise ValueError(f"barbs must be positive, not {barbs}")
+    if purple_stack is not None and not (isinstance(purple_stack, int) and 1 <= purple_stack <= 15):
+        raise ValueError(f"purple_stack must be a whole number from 1 to 15, not {purple_stack}")
     return _columba._generate_feathers(
         _os.fspath(path), bool(neck), 60 if feathers is None else int(feathers), 0 if barbs is None else int(barbs),
         int(seed), bool(binary), float(height), float(PURPLE_CORTEX_THICKNESS if purple_height is None else purple_height),
         float(height_spread), float(PURPLE_BELOW if purple_below is None else purple_below),
-        float(COLOUR_BLEND if colour_blend is None else colour_blend))
+        float(COLOUR_BLEND if colour_blend is None else colour_blend), 0 if purple_stack is None else purple_stack)
 
 
 def write_feather_ply(path, barbs, binary=False):

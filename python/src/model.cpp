@@ -656,11 +656,11 @@ void bindModel(py::module_& m) {
 
   m.def("_generate_feathers",
         [](const std::string& path, bool neck, int feathers, int barbs, uint64_t seed, bool binary, float height,
-           float purpleHeight, float heightSpread, float purpleBelow, float colourBlend) {
+           float purpleHeight, float heightSpread, float purpleBelow, float colourBlend, int purpleStack) {
           FeatherGenerationOptions o;
           o.neck = neck, o.feathers = feathers, o.barbsPerSide = barbs, o.seed = seed, o.binary = binary;
           o.greenHeight = height, o.purpleHeight = purpleHeight, o.heightSpread = heightSpread;
-          o.purpleBelow = purpleBelow, o.colourBlend = colourBlend;
+          o.purpleBelow = purpleBelow, o.colourBlend = colourBlend, o.purpleStack = purpleStack;
           FeatherGenerationSummary s;
           try {
             py::gil_scoped_release release;

@@ -86,7 +86,7 @@ def test_write_feather_ply_writes_what_read_feather_ply_reads(tmp_path):
         columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, height=-barbs["height"]))
 
 
-def test_layer_stacks_are_written_and_read_per_vertex(tmp_path):
+def test_layer_stacks_are_written_and_read_per_vertex(cli, tmp_path):
     barbs = columba.feather_barbs(barbs=5)
     assert barbs["stack"] is None  # the generator chooses none
     stack = (np.arange(barbs["height"].size).reshape(barbs["height"].shape) % 4).astype(np.int64)
@@ -100,5 +100,12 @@ def test_layer_stacks_are_written_and_read_per_vertex(tmp_path):
     for bad in (stack + 0.5, stack - 1, stack + 256):
         with pytest.raises(ValueError, match="whole numbers from 0 to 255"):
             columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, stack=bad))
+    # The generator's purple stack, as `columba feather --neck --purple-stack` writes it.
+    columba.generate_feathers(tmp_path / "py.ply", neck=True, feathers=3, barbs=4, purple_stack=2)
+    cli("feather", "--neck", "--feathers", "3", "--barbs", "4", "--purple-stack", "2", "-o", tmp_path / "cli.ply")
+    assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    assert set(np.unique(columba.read_feather_ply(tmp_path / "py.ply")["stack"])) <= {0, 2}
+    with pytest.raises(ValueError, match="purple_stack must be a whole number from 1 to 15"):
+        columba.generate_feathers(tmp_path / "x.ply", neck=True, purple_stack=16)
     with pytest.raises(ValueError, match="stack must be B x 64"):
         columba.write_feather_ply(tmp_path / "bad.ply", dict(barbs, stack=stack[:, :10]))

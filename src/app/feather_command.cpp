@@ -103,6 +103,11 @@ void addFeatherCommand(CLI::App& app) {
                   "Height on the neck (y, -1.6 at the top to 3 at the bottom) around which green turns purple")
       ->capture_default_str()
       ->needs(neck);
+  cmd->add_option("--purple-stack", o.purpleStack,
+                  "The layer stack (1 to 15) the purple barbules choose, written per vertex as 'stack': their "
+                  "barbulebsdf's layers_N (docs/feather-ply.md)")
+      ->check(CLI::Range(1, kMaxLayerStacks - 1))
+      ->needs(neck);
   cmd->add_option("--colour-blend", o.colourBlend,
                   "Width of the change from green to purple on either side of the boundary (0: sharp)")
       ->capture_default_str()

@@ -46,6 +46,9 @@ struct FeatherGenerationOptions {
   // Neck only: the height on the neck (surface coordinate Y, -1.6 at the top to 3.0 at the bottom)
   // around which green turns purple, and the width of the change on either side (0: sharp).
   float purpleBelow = NeckColouring::kDefaultBoundary, colourBlend = NeckColouring::kDefaultBlend;
+  // Neck only: the barbule BSDF's layer stack of the purple barbules (where more than half
+  // purple), the green ones taking stack 0; 0: the file gives no per-vertex stack.
+  int purpleStack = 0;
 };
 
 struct FeatherGenerationSummary {

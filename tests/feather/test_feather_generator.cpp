@@ -291,3 +291,33 @@ TEST_F(FeatherGeneratorTest, ColourOptionsThatMakeNoFeathersAreErrors) {
   std::reverse(args.begin(), args.end());
   EXPECT_THROW(app.parse(args), CLI::ParseError);
 }
+
+TEST_F(FeatherGeneratorTest, APurpleStackIsWrittenWhereTheBarbulesAreMorePurpleThanGreen) {
+  FeatherGenerationOptions o = neckOptions(12, 4, 5);
+  o.purpleStack = 3;
+  generateFeatherPly(o, path("stacks.ply"));
+  FeatherPlyData ply = readFeatherPly(path("stacks.ply"));
+  ASSERT_EQ(ply.layerStack.size(), ply.barbuleHeight.size());
+  // Half way between the colours' thicknesses lies the switch; each barb's own spread blurs it.
+  const float middle = 0.5f * (kGreenCortexThickness + kPurpleCortexThickness);
+  int purple = 0, green = 0;
+  for (size_t i = 0; i < ply.layerStack.size(); ++i) {
+    const float h = ply.barbuleHeight[i];
+    if (h < middle - kBarbThicknessSpread) {
+      EXPECT_EQ(ply.layerStack[i], 3) << "vertex " << i << ", height " << h;
+    } else if (h > middle + kBarbThicknessSpread) {
+      EXPECT_EQ(ply.layerStack[i], 0) << "vertex " << i << ", height " << h;
+    }
+    purple += ply.layerStack[i] == 3;
+    green += ply.layerStack[i] == 0;
+  }
+  EXPECT_GT(purple, 1000);
+  EXPECT_GT(green, 1000);
+  EXPECT_EQ(purple + green, int(ply.layerStack.size()));
+  // Without a purple stack the file has no stack property, as before.
+  FeatherGenerationOptions plain = neckOptions(12, 4, 5);
+  generateFeatherPly(plain, path("plain.ply"));
+  EXPECT_TRUE(readFeatherPly(path("plain.ply")).layerStack.empty());
+  o.neck = false;
+  EXPECT_THROW(generateFeatherPly(o, path("single.ply")), std::invalid_argument);
+}
