@@ -3,6 +3,7 @@
 Everything is computed by Columba's C++ library (the extension ``columba._columba``); this
 module only adapts arguments. See docs/python.md for the API with examples.
 """
+import numbers as _numbers
 import os as _os
 import tempfile as _tempfile
 import warnings as _warnings
@@ -225,13 +226,14 @@ def generate_feathers(path, neck=False, feathers=None, barbs=None, seed=1, binar
         raise ValueError(f"feathers must be positive, not {feathers}")
     if barbs is not None and barbs < 1:
         raise ValueError(f"barbs must be positive, not {barbs}")
-    if purple_stack is not None and not (isinstance(purple_stack, int) and 1 <= purple_stack <= 15):
+    if purple_stack is not None and not (isinstance(purple_stack, _numbers.Integral) and not isinstance(purple_stack, bool)
+                                         and 1 <= purple_stack <= 15):
         raise ValueError(f"purple_stack must be a whole number from 1 to 15, not {purple_stack}")
     return _columba._generate_feathers(
         _os.fspath(path), bool(neck), 60 if feathers is None else int(feathers), 0 if barbs is None else int(barbs),
         int(seed), bool(binary), float(height), float(PURPLE_CORTEX_THICKNESS if purple_height is None else purple_height),
         float(height_spread), float(PURPLE_BELOW if purple_below is None else purple_below),
-        float(COLOUR_BLEND if colour_blend is None else colour_blend), 0 if purple_stack is None else purple_stack)
+        float(COLOUR_BLEND if colour_blend is None else colour_blend), 0 if purple_stack is None else int(purple_stack))
 
 
 def write_feather_ply(path, barbs, binary=False):
@@ -260,6 +262,8 @@ def write_feather_ply(path, barbs, binary=False):
     stack = barbs.get("stack")
     if stack is not None:
         stack = _np.asarray(stack)
+        if stack.dtype.kind not in "iuf":
+            raise ValueError(f"stack must hold whole numbers from 0 to 255, not values of type {stack.dtype}")
         if stack.shape != positions.shape[:2]:
             raise ValueError(f"stack must be B x {BARB_VERTICES} ({positions.shape[:2]}), not {stack.shape}")
         if not (_np.all(_np.isfinite(stack)) and _np.all(stack == _np.floor(stack)) and _np.all(stack >= 0)

@@ -420,9 +420,7 @@ std::function<std::complex<double>(double)> complexIndexFrom(const py::object& v
     return [n](double) { return n; };
   }
   if (py::isinstance<py::str>(value) && value.cast<std::string>() == "melanin")
-    return [melanin = melaninLayer(0.0f)](double lambda) {
-      return std::complex<double>(melanin.n(float(lambda)), melanin.extinction(float(lambda)));
-    };
+    return [m = melanin()](double lambda) { return m.index(float(lambda)); };
   const RefractiveIndex n = indexFrom(value, what);
   return [n](double lambda) { return std::complex<double>(n(float(lambda)), 0.0); };
 }

@@ -462,7 +462,8 @@ void addBSDFCommand(CLI::App& app) {
   cmd->add_option("--melanin", o->melaninFile, "Melanin reflectance file: lines of 'wavelength_nm reflectance'");
   cmd->add_option("--layers", o->layers,
                   "Layers under the cortex, from it down: 'INDEX:THICKNESS_UM, ...' (INDEX a number, a named index, "
-                  "keratin, melanin or N+Ki), or a published stack: parotia-occipital");
+                  "keratin, melanin or N+Ki), rows of rods 'rods(INDEX, DIAMETER_UM, SPACING_UM[, MATRIX])', "
+                  "repeats '[...] x N', or a published stack: parotia-occipital");
   cmd->add_option("--angles", o->angles, "Light polar angles from the vane normal, degrees (default 0,20,40,60)")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.9));

@@ -13,8 +13,7 @@ const std::vector<LayerStackPreset>& layerStackPresets() {
        "10.1038/lsa.2015.16), abstract: occipital-feather barbules of Lawes' parotia, ~3 um thick, with 6-7 "
        "layers of melanin rodlets forming effectively ~0.2 um melanin layers separated by ~0.2 um keratin "
        "layers; measured reflectance peak ~1.3 um",
-       "melanin:0.2, keratin:0.2, melanin:0.2, keratin:0.2, melanin:0.2, keratin:0.2, melanin:0.2, keratin:0.2, "
-       "melanin:0.2, keratin:0.2, melanin:0.2, keratin:0.2, melanin:0.2"},
+       "[melanin:0.2, keratin:0.2] x 6, melanin:0.2"},
   };
   return presets;
 }

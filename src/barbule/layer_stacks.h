@@ -11,7 +11,7 @@ namespace columba {
 struct LayerStackPreset {
   const char* name;
   const char* source;  // publication, and where in it the numbers are
-  const char* layers;  // as `layers` takes them: "INDEX:THICKNESS, ..." (optics/layered_film.h)
+  const char* layers;  // as `layers` takes them: "INDEX:THICKNESS, ..." (optics/film_layer_text.h)
 };
 
 const std::vector<LayerStackPreset>& layerStackPresets();

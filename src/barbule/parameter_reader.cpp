@@ -4,7 +4,7 @@
 
 #include "barbule/layer_stacks.h"
 #include "optics/dispersion.h"
-#include "optics/layered_film.h"
+#include "optics/film_layer_text.h"
 
 namespace columba {
 
@@ -28,6 +28,15 @@ RefractiveIndex readIOR(const Properties& props, const std::string& name, const 
     throw props.error(name, "unknown index of refraction '" + text +
                                 "' (give a number, a named material such as 'air', or 'keratin')");
   return *ior;
+}
+
+// The layers of parameter `name` (a stack's name or its layers).
+std::vector<FilmLayer> readLayerStack(const Properties& props, const std::string& name) {
+  try {
+    return parseFilmLayers(expandLayerStack(props.getString(name)));
+  } catch (const std::invalid_argument& e) {
+    throw props.error(name, e.what());
+  }
 }
 
 }  // namespace
@@ -58,26 +67,7 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
   p.extIOR = ext.a;
   if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
-  auto readLayers = [&](const std::string& name) {
-    try {
-      return parseFilmLayers(expandLayerStack(props.getString(name)));
-    } catch (const std::invalid_argument& e) {
-      throw props.error(name, e.what());
-    }
-  };
-  if (props.has("layers")) p.layersBelow = readLayers("layers");
-  // layers_1, layers_2, ...: numbered without gaps, so that a stack's number is its place.
-  for (int k = 1; k < kMaxLayerStacks; ++k) {
-    const std::string name = layerStackParameter(k);
-    if (!props.has("layers_" + std::to_string(k))) {
-      for (int later = k + 1; later < kMaxLayerStacks; ++later)
-        if (props.has(layerStackParameter(later)))
-          throw props.error(layerStackParameter(later),
-                            "layer stacks are numbered from layers_1 without gaps, and " + name + " is missing");
-      break;
-    }
-    p.numberedLayerStacks.push_back(readLayers(name));
-  }
+  if (props.has("layers")) p.layersBelow = readLayerStack(props, "layers");
 
   if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
     bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
@@ -88,6 +78,23 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
 }
 
 std::string layerStackParameter(int index) { return index == 0 ? "layers" : "layers_" + std::to_string(index); }
+
+std::vector<std::vector<FilmLayer>> readNumberedLayerStacks(const Properties& props) {
+  std::vector<std::vector<FilmLayer>> stacks;
+  // Numbered without gaps, so that a stack's number is its place. The literal "layers_" is how
+  // scripts/plugin-docs.py sees that layers_N is read.
+  for (int k = 1; k < kMaxLayerStacks; ++k) {
+    if (!props.has("layers_" + std::to_string(k))) {
+      for (int later = k + 1; later < kMaxLayerStacks; ++later)
+        if (props.has(layerStackParameter(later)))
+          throw props.error(layerStackParameter(later), "layer stacks are numbered from layers_1 without gaps, and " +
+                                                            layerStackParameter(k) + " is missing");
+      break;
+    }
+    stacks.push_back(readLayerStack(props, layerStackParameter(k)));
+  }
+  return stacks;
+}
 
 BarbuleQuadrature readBarbuleQuadrature(const Properties& props) {
   BarbuleQuadrature q;

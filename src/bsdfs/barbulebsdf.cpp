@@ -19,7 +19,7 @@ Mitsuba 3: not in Mitsuba 3.
 | melanin | spectrum or float | measured table | the melanin layer's intensity reflectance against wavelength, 0 to 1; by default the embedded measured table | not in Mitsuba 3 |
 | trt_offsets | integer | 4 | the TRT lobe's Gauss–Legendre nodes across the lit arc, 1 to 64: more for squarer profiles, whose normal turns fast at the corners (at p = 16 the default 4 is 1.6 % high, 16 within 0.3 % of exact; docs/model.md) | not in Mitsuba 3 |
 | trt_angles | integer | 1 | the TRT lobe's nodes over the longitudinal angle, 1 to 16 (1: one node at the mean angle) | not in Mitsuba 3 |
-| layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin`, `melanin` (Stavenga et al. 2015's n and k) or a complex `N+Ki`; thickness in µm), or the name of a published stack: `parotia-occipital` (Stavenga et al. 2015): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
+| layers | string | — | layers under the cortex, from the cortex down, as `INDEX:THICKNESS, ...` (INDEX a number, a named index, `keratin`, `melanin` (Stavenga et al. 2015's n and k) or a complex `N+Ki`; thickness in µm), with rows of rods as `rods(INDEX, DIAMETER, SPACING[, MATRIX])` (effective layers, docs/model.md, "Rows of melanosomes as effective layers") and repeats as `[...] x N`, or the name of a published stack: `parotia-occipital` (Stavenga et al. 2015): R is then the whole stack's reflectance and TRT crosses the whole stack (transfer matrices; docs/model.md, "Layered films"), the medium below it `ext_ior` | not in Mitsuba 3 |
 | layers_N | string | — | further layer stacks, `layers_1` to `layers_15`, as `layers` takes them, for the vertices of a feather whose file chooses them by number (`stack` N); numbered from 1 without gaps | not in Mitsuba 3 |
 */
 #include "bsdfs/barbulebsdf.h"
@@ -57,8 +57,9 @@ BarbulePointModel BarbuleBSDF::pointModel(const BSDFContext& ctx, const Waveleng
 
 int BarbuleBSDF::layerStack(const BSDFContext& ctx) const {
   // Shapes choose only stacks the BSDF has (noteValuesGivenByShape refuses others).
-  std::optional<float> chosen = ctx.attribute(kLayerStackAttribute);
-  return chosen ? std::clamp(int(*chosen), 0, model_.parameters().layerStackCount() - 1) : 0;
+  const std::optional<float> chosen = ctx.attribute(kLayerStackAttribute);
+  if (!chosen || !(*chosen >= 0.0f)) return 0;
+  return int(std::min(*chosen, float(model_.parameters().layerStackCount() - 1)));
 }
 
 void BarbuleBSDF::noteValuesGivenByShape(const ShapePointValues& given) const {
@@ -71,10 +72,11 @@ void BarbuleBSDF::noteValuesGivenByShape(const ShapePointValues& given) const {
                          (stacks == 1 ? std::string("only stack 0, `layers`")
                                       : "stacks 0 to " + std::to_string(stacks - 1) + ", `layers` to `" +
                                             layerStackParameter(stacks - 1) + "`"));
-  if (given.largestLayerStack < 0 && stacks > 1)
+  if (given.largestLayerStack < 0 && stacks > 1 && !warnedNoStacks_->exchange(true))
     warn(numberedStacksAt_,
          "barbulebsdf, parameter '" + layerStackParameter(1) + "': " + given.shape +
-             " chooses no layer stack per vertex (no vertex property 'stack'), so only `layers` applies there");
+             " chooses no layer stack per vertex (no vertex property 'stack'), so only `layers` applies there (said "
+             "once, for the first such feather)");
 }
 
 float BarbuleBSDF::cortexThickness(const BSDFContext& ctx) const {
@@ -223,7 +225,9 @@ namespace {
 
 std::shared_ptr<Object> makeBarbule(const Properties& props, BarbuleBSDF::Role role) {
   std::optional<BarbuleParameterProblem> odd;
-  auto bsdf = std::make_shared<BarbuleBSDF>(readBarbuleParameters(props, odd), role, readBarbuleQuadrature(props));
+  BarbuleParameters params = readBarbuleParameters(props, odd);
+  params.numberedLayerStacks = readNumberedLayerStacks(props);
+  auto bsdf = std::make_shared<BarbuleBSDF>(params, role, readBarbuleQuadrature(props));
   if (odd) warn(props.locationOf(odd->parameter), "barbulebsdf, parameter '" + odd->parameter + "': " + odd->message);
   const BarbuleParameters& p = bsdf->parameters();
   BarbuleTextures textures{readFloatParameter(props, "b", p.b), readFloatParameter(props, "mu", p.mu),

@@ -32,6 +32,7 @@
 // - Normalisation (derived in barbulebsdf.cpp): the integral of f_R cos(theta_o) over omega_o is
 //   r times the mean over visible normals of I_R times the visibility toward omega_o, and the
 //   same holds for TRT; with T = 1 - r the total never exceeds 1.
+#include <atomic>
 #include <memory>
 #include <vector>
 #include "barbule/model.h"
@@ -116,6 +117,8 @@ class BarbuleBSDF : public BSDF {
   BarbuleTextures textures_;
   std::shared_ptr<const PerPointParameterSources> sceneSources_;
   SourceLocation declaredAt_, numberedStacksAt_;
+  // Whether a feather choosing no stack was warned of (shared, so that the BSDF stays movable).
+  std::shared_ptr<std::atomic<bool>> warnedNoStacks_ = std::make_shared<std::atomic<bool>>(false);
 };
 
 // <bsdf type="barbulebsdf"> and <bsdf type="barbulebsdfev">: their parameters are in docs/reference/bsdfs.md.

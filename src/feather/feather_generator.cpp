@@ -142,10 +142,11 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
     throw std::invalid_argument("the height where purple begins must be a number, not " + number(options.purpleBelow));
   if (!(std::isfinite(options.colourBlend) && options.colourBlend >= 0.0f))
     throw std::invalid_argument("the colour blend must be a width of at least 0, not " + number(options.colourBlend));
-  if (options.purpleStack < 0 || options.purpleStack > kMaxVertexLayerStack || (options.purpleStack && !options.neck))
+  if (options.purpleStack < 0 || options.purpleStack > kMaxVertexLayerStack)
     throw std::invalid_argument("a purple layer stack is a whole number from 0 to " +
-                                std::to_string(kMaxVertexLayerStack) + ", for a neck, not " +
-                                std::to_string(options.purpleStack));
+                                std::to_string(kMaxVertexLayerStack) + ", not " + std::to_string(options.purpleStack));
+  if (options.purpleStack != 0 && !options.neck)
+    throw std::invalid_argument("a purple layer stack applies to a neck: a single feather has no purple barbules");
   const float barbWidth = FeatherShapeParams().barbWidth;
 
   FeatherDesign design;

@@ -71,8 +71,17 @@ void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
   for (size_t i = 0; i < e.count; ++i) {
     ply.next();
     float v[kRoleCount] = {};
+    double stack = 0.0;
     for (size_t k = 0; k < e.properties.size(); ++k) {
       if (roles[k] == kIgnored) continue;
+      if (roles[k] == kStack) {
+        // Checked as the file gives it, before any rounding.
+        stack = ply.scalar(k);
+        if (!(stack >= 0.0 && stack <= double(kMaxVertexLayerStack) && stack == std::floor(stack)))
+          ply.fail("stack is " + valueText(stack) + "; a layer stack is a whole number from 0 to " +
+                   std::to_string(kMaxVertexLayerStack));
+        continue;
+      }
       v[roles[k]] = float(ply.scalar(k));
       if (!std::isfinite(v[roles[k]])) ply.fail("property '" + e.properties[k].name + "' is not a finite float");
     }
@@ -88,18 +97,8 @@ void readVertices(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
       out.barbuleMu[i] = v[kMu];
       out.barbuleHeight[i] = v[kHeight];
     }
-    if (!out.layerStack.empty()) {
-      const float stack = v[kStack];
-      if (!(stack >= 0.0f && stack <= float(kMaxVertexLayerStack) && stack == std::floor(stack)))
-        ply.fail("stack is " + valueText(stack) + "; a layer stack is a whole number from 0 to " +
-                 std::to_string(kMaxVertexLayerStack));
-      out.layerStack[i] = uint8_t(stack);
-      if (int(stack) > out.largestLayerStack) {
-        out.largestLayerStack = int(stack);
-        out.largestLayerStackVertex = i;
-        out.largestLayerStackLine = ply.line();
-      }
-    }
+    if (!out.layerStack.empty()) out.layerStack[i] = uint8_t(stack);
+    if (i == 0) out.firstVertexLine = ply.line();
   }
 }
 
@@ -116,6 +115,21 @@ void readFaces(PlyReader& ply, const PlyElement& e, FeatherPlyData& out) {
                std::to_string(kBarbVertices));
     for (double index : indices) out.barbIndices.push_back(ply.vertexIndex(index, vertexCount));
   }
+}
+
+// The largest stack a barb's vertex chooses (vertices no barb uses choose nothing), and the first
+// vertex in the file choosing it.
+void findLargestLayerStack(FeatherPlyData& out) {
+  for (uint32_t v : out.barbIndices) {
+    const int stack = out.layerStack.empty() ? -1 : out.layerStack[v];
+    if (stack > out.largestLayerStack || (stack == out.largestLayerStack && v < out.largestLayerStackVertex)) {
+      out.largestLayerStack = stack;
+      out.largestLayerStackVertex = v;
+    }
+  }
+  // One vertex to a line in ASCII files.
+  if (out.largestLayerStack >= 0 && out.firstVertexLine > 0)
+    out.largestLayerStackLine = out.firstVertexLine + int(out.largestLayerStackVertex);
 }
 
 void readBody(PlyReader& ply, FeatherPlyData& out) {
@@ -135,6 +149,7 @@ void readBody(PlyReader& ply, FeatherPlyData& out) {
   if (!sawVertex) throw InputError({out.path, ply.endHeaderLine()}, "the file has no element vertex");
   if (!sawFace) throw InputError({out.path, ply.endHeaderLine()}, "the file has no element face (the barbs)");
   ply.finish();
+  findLargestLayerStack(out);
 }
 
 // `comment barbwidth W`: W positive and finite.

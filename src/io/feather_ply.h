@@ -35,7 +35,8 @@ struct FeatherPlyData {
   // Per-vertex barbule values as the file gives them; all three empty when it has not all three.
   std::vector<float> barbuleH, barbuleMu, barbuleHeight;
   // Per-vertex layer stack (0 to kMaxVertexLayerStack), empty when the file gives none; the
-  // largest, the first vertex choosing it and that vertex's line (ASCII; 0 in binary files).
+  // largest a barb's vertex chooses (-1: none), the first vertex choosing it and that vertex's
+  // line (ASCII; 0 in binary files).
   std::vector<uint8_t> layerStack;
   int largestLayerStack = -1;
   size_t largestLayerStackVertex = 0;
@@ -44,6 +45,7 @@ struct FeatherPlyData {
   std::optional<float> barbWidth;
   std::vector<uint32_t> barbIndices;  // kBarbVertices per barb
   int firstFaceLine = 0;              // ASCII: line of face 0; binary: 0
+  int firstVertexLine = 0;            // ASCII: line of vertex 0; binary: 0
 
   size_t barbCount() const { return barbIndices.size() / kBarbVertices; }
   bool hasBarbuleValues() const { return !barbuleH.empty(); }

@@ -6,72 +6,23 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/number_text.h"
 #include "optics/melanin_index.h"
 
 namespace columba {
 
-namespace {
-std::string trimmed(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+LayerMaterial melanin() {
+  LayerMaterial m;
+  m.n = RefractiveIndex::cauchy(MelaninIndex::kCauchyA, MelaninIndex::kCauchyB);
+  m.k = MelaninIndex::kExtinction;
+  m.kDecayNm = MelaninIndex::kExtinctionDecay;
+  return m;
 }
 
-// "N+Ki" as (N, K); nullopt where `text` is not of that form.
-std::optional<std::pair<float, float>> complexIndex(const std::string& text) {
-  if (text.size() < 4 || text.back() != 'i') return std::nullopt;
-  const size_t plus = text.find('+', 1);
-  if (plus == std::string::npos) return std::nullopt;
-  const std::optional<float> n = parseNumber<float>(text.substr(0, plus));
-  const std::optional<float> k = parseNumber<float>(text.substr(plus + 1, text.size() - plus - 2));
-  if (!n || !k) return std::nullopt;
-  return std::pair{*n, *k};
-}
-}  // namespace
-
-FilmLayer melaninLayer(float thicknessUm) {
-  FilmLayer layer;
-  layer.n = RefractiveIndex::cauchy(MelaninIndex::kCauchyA, MelaninIndex::kCauchyB);
-  layer.k = MelaninIndex::kExtinction;
-  layer.kDecayNm = MelaninIndex::kExtinctionDecay;
-  layer.thicknessUm = thicknessUm;
-  return layer;
-}
-
-std::vector<FilmLayer> parseFilmLayers(const std::string& text) {
-  std::vector<FilmLayer> layers;
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t comma = text.find(',', start);
-    const std::string piece =
-        trimmed(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    start = comma == std::string::npos ? text.size() + 1 : comma + 1;
-    if (piece.empty() && comma == std::string::npos && !layers.empty()) break;
-    const size_t colon = piece.rfind(':');
-    if (colon == std::string::npos)
-      throw std::invalid_argument("layer '" + piece + "': give INDEX:THICKNESS (thickness in um)");
-    const std::string index = trimmed(piece.substr(0, colon));
-    const std::optional<float> thickness = parseNumber<float>(trimmed(piece.substr(colon + 1)));
-    if (!thickness || !(*thickness >= 0.0f))
-      throw std::invalid_argument("layer '" + piece + "': the thickness must be a number of micrometres, not negative");
-    FilmLayer layer;
-    layer.thicknessUm = *thickness;
-    if (const std::optional<std::pair<float, float>> c = complexIndex(index)) {
-      if (!(c->first > 0.0f) || !(c->second >= 0.0f))
-        throw std::invalid_argument("layer '" + piece + "': an index N+Ki needs N > 0 and K >= 0");
-      layer.n = RefractiveIndex::constant(c->first);
-      layer.k = c->second;
-    } else if (index == "melanin") {
-      layer = melaninLayer(*thickness);
-    } else if (const std::optional<RefractiveIndex> n = iorFromName(index)) {
-      layer.n = *n;
-    } else {
-      throw std::invalid_argument("layer '" + piece + "': unknown index '" + index +
-                                  "' (a number, a named index such as air, keratin, melanin, or N+Ki)");
-    }
-    layers.push_back(layer);
-  }
-  return layers;
+std::complex<double> FilmLayer::index(float lambdaNm) const {
+  if (fraction == 1.0f) return material.index(lambdaNm);
+  const std::complex<double> a = material.index(lambdaNm), b = matrix.index(lambdaNm);
+  const double f = fraction;
+  return std::sqrt(f * a * a + (1.0 - f) * b * b);  // the root with k >= 0
 }
 
 LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm,
@@ -83,8 +34,7 @@ LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float co
     stack.substrateIndex = nOutside;
     stack.layers.reserve(below.size() + 1);  // one allocation a wavelength, at every hit
     stack.layers.push_back({cortex(wl[k]), cortexThicknessUm});
-    for (const FilmLayer& layer : below)
-      stack.layers.push_back({std::complex<double>(layer.n(wl[k]), layer.extinction(wl[k])), layer.thicknessUm});
+    for (const FilmLayer& layer : below) stack.layers.push_back({layer.index(wl[k]), layer.thicknessUm});
   }
 }
 

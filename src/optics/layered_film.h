@@ -7,6 +7,7 @@
 // docs/model.md, "Layered films".
 #include <array>
 #include <cmath>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -18,25 +19,34 @@
 
 namespace columba {
 
-// A layer below the cortex: its index n(lambda) + i k(lambda) and its thickness. The extinction
+// What a layer is made of: its index n(lambda) + i k(lambda). The extinction
 // k(lambda) = k exp(-lambda / kDecayNm) falls with wavelength as melanin's does; kDecayNm = 0 keeps
 // it constant.
-struct FilmLayer {
+struct LayerMaterial {
   RefractiveIndex n;
   float k = 0.0f;
   float kDecayNm = 0.0f;
-  float thicknessUm = 0.0f;
 
   float extinction(float lambdaNm) const { return kDecayNm > 0.0f ? k * std::exp(-lambdaNm / kDecayNm) : k; }
+  std::complex<double> index(float lambdaNm) const { return {n(lambdaNm), extinction(lambdaNm)}; }
 };
 
-// A layer of melanin (optics/melanin_index.h: a Cauchy n and an exponentially falling k).
-FilmLayer melaninLayer(float thicknessUm);
+// Melanin (optics/melanin_index.h: a Cauchy n and an exponentially falling k).
+LayerMaterial melanin();
 
-// "INDEX:THICKNESS, INDEX:THICKNESS, ...", the layers from the cortex down: INDEX a number, a named
-// index (air, water, ...), `keratin`, `melanin` (optics/melanin_index.h) or a complex N+Ki (an
-// absorbing layer, K >= 0); THICKNESS in micrometres, not negative. Throws std::invalid_argument naming the piece that is wrong.
-std::vector<FilmLayer> parseFilmLayers(const std::string& text);
+// A layer below the cortex: one material, or (`fraction` < 1) an effective medium of `material`
+// taking that share of the layer's volume within `matrix` (a slice of a row of melanosomes,
+// optics/rod_layer.h), and its thickness.
+struct FilmLayer {
+  LayerMaterial material;
+  float thicknessUm = 0.0f;
+  float fraction = 1.0f;
+  LayerMaterial matrix;
+
+  // The layer's complex index: the material's, or the effective medium's, whose permittivity is
+  // the volume average of the two (docs/model.md, "Rows of melanosomes as effective layers").
+  std::complex<double> index(float lambdaNm) const;
+};
 
 class LayeredFilm {
  public:

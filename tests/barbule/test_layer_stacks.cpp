@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 #include "barbule/layer_stacks.h"
-#include "optics/layered_film.h"
+#include "optics/film_layer_text.h"
 #include "optics/multilayer.h"
 
 using namespace columba;
@@ -13,7 +13,7 @@ namespace {
 LayerStack stackAt(const std::string& name, float lambdaNm) {
   LayerStack stack;
   for (const FilmLayer& layer : parseFilmLayers(expandLayerStack(name)))
-    stack.layers.push_back({std::complex<double>(layer.n(lambdaNm), layer.extinction(lambdaNm)), layer.thicknessUm});
+    stack.layers.push_back({layer.index(lambdaNm), layer.thicknessUm});
   return stack;
 }
 }  // namespace
@@ -23,14 +23,14 @@ TEST(LayerMaterials, MelaninHasStavengaEtAlsIndex) {
   // and 1.696 at 700 nm.
   const std::vector<FilmLayer> layers = parseFilmLayers("melanin:0.1");
   ASSERT_EQ(layers.size(), 1u);
-  EXPECT_NEAR(layers[0].n(400.0f), 1.648f + 23700.0f / 160000.0f, 1e-6f);
-  EXPECT_GT(layers[0].n(400.0f), 1.79f);
-  EXPECT_LT(layers[0].n(700.0f), 1.70f);
+  EXPECT_NEAR(layers[0].material.n(400.0f), 1.648f + 23700.0f / 160000.0f, 1e-6f);
+  EXPECT_GT(layers[0].material.n(400.0f), 1.79f);
+  EXPECT_LT(layers[0].material.n(700.0f), 1.70f);
   EXPECT_EQ(layers[0].thicknessUm, 0.1f);
-  EXPECT_NEAR(layers[0].extinction(550.0f), 0.56f * std::exp(-550.0f / 270.0f), 1e-7f);
+  EXPECT_NEAR(layers[0].material.extinction(550.0f), 0.56f * std::exp(-550.0f / 270.0f), 1e-7f);
   // A constant N+Ki keeps its K at every wavelength.
-  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].extinction(300.0f), 0.1f);
-  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].extinction(800.0f), 0.1f);
+  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].material.extinction(300.0f), 0.1f);
+  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].material.extinction(800.0f), 0.1f);
 }
 
 TEST(LayerStacks, ANameStandsForItsLayersAndAnythingElseIsKept) {

@@ -17,6 +17,7 @@
 #include "core/frame.h"
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "optics/film_layer_text.h"
 #include "optics/melanin.h"
 #include "optics/thin_film.h"
 #include "support/bsdf_test_support.h"

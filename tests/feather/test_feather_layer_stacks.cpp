@@ -117,11 +117,25 @@ TEST_F(FeatherLayerStackTest, NumberedStacksHaveNoGapsAndAreWarnedOfWhereNoVerte
   EXPECT_NE(err.find("layers_3"), std::string::npos) << err;
   EXPECT_NE(err.find("layers_2 is missing"), std::string::npos) << err;
 
+  // Said once, though the BSDF is reached twice through twosided and by two feathers.
+  const std::string plain = barbs({}, "plain.ply");
+  std::string twoFeathers = scene(plain, "\n" + layers("layers_1", kKeratinGap));
+  const std::string opening = "<bsdf type=\"barbulebsdf\">";
+  twoFeathers.replace(twoFeathers.find(opening), opening.size(),
+                      "<bsdf type=\"twosided\"><bsdf type=\"barbulebsdf\" id=\"b\">");
+  twoFeathers.replace(twoFeathers.find("</bsdf></shape>"), 15,
+                      "</bsdf></bsdf></shape><shape type=\"feather\"><string name=\"filename\" value=\"" + plain +
+                          "\"/><ref id=\"b\"/></shape>");
   ::testing::internal::CaptureStderr();
-  EXPECT_EQ(loadError(scene(barbs({}, "plain.ply"), "\n" + layers("layers_1", kKeratinGap))), "");
+  EXPECT_EQ(loadError(twoFeathers), "");
   const std::string warnings = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(warnings.find("scene.xml:10: barbulebsdf, parameter 'layers_1'"), std::string::npos) << warnings;
   EXPECT_NE(warnings.find("chooses no layer stack per vertex"), std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("warning:"), warnings.rfind("warning:")) << warnings;
+  // A file whose vertices all choose stack 0 chooses: no warning.
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(loadError(scene(barbs([](int) { return 0; }), layers("layers_1", kKeratinGap))), "");
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 }  // namespace

@@ -304,7 +304,7 @@ TEST(FeatherShape, AHitChoosesTheLayerStackOfTheNearerVertex) {
   ply.largestLayerStack = 2;
   FeatherShape shape(std::move(ply), FeatherShapeParams());
   EmbreeScene scene(shape);
-  for (int seg : {0, 20, 61}) {
+  for (int seg : {0, 20, 61, 62}) {
     BarbStrip s = shape.strip(seg);
     const float angle = 0.5f * std::asin(s.halfWidthEnd / s.radius);
     for (float along : {0.2f, 0.45f, 0.55f, 0.8f}) {
