@@ -446,7 +446,7 @@ py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const p
   for (int k = 0; k < 7; ++k) out.emplace_back(n);
   for (py::ssize_t i = 0; i < n; ++i) {
     const double l = lambda.data()[i];
-    LayerStack stack{outer(float(l)), {}, inner(l)};
+    LayerStack stack{outer(float(l)), {}, inner(l), {}};
     for (size_t j = 0; j < indices.size(); ++j) stack.layers.push_back({indices[j](l), thicknesses[j]});
     MultilayerResponse r;
     try {

@@ -15,7 +15,7 @@ class BarbuleFilm {
   // The cortex over the parameters' layer stack `layerStack` (BarbuleParameters::layerStack).
   BarbuleFilm(const BarbuleParameters& params, float thicknessUm, const Wavelengths& wl, int layerStack = 0)
       : cortex_(params.filmIOR, params.extIOR, thicknessUm, wl) {
-    const std::vector<FilmLayer>& below = params.layerStack(layerStack);
+    const FilmStack& below = params.layerStack(layerStack);
     if (!below.empty()) layered_.emplace(params.filmIOR, params.extIOR, thicknessUm, below, wl);
   }
 

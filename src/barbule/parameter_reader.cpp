@@ -31,7 +31,7 @@ RefractiveIndex readIOR(const Properties& props, const std::string& name, const 
 }
 
 // The layers of parameter `name` (a stack's name or its layers).
-std::vector<FilmLayer> readLayerStack(const Properties& props, const std::string& name) {
+FilmStack readLayerStack(const Properties& props, const std::string& name) {
   try {
     return parseFilmLayers(expandLayerStack(props.getString(name)));
   } catch (const std::invalid_argument& e) {
@@ -79,8 +79,8 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
 
 std::string layerStackParameter(int index) { return index == 0 ? "layers" : "layers_" + std::to_string(index); }
 
-std::vector<std::vector<FilmLayer>> readNumberedLayerStacks(const Properties& props) {
-  std::vector<std::vector<FilmLayer>> stacks;
+std::vector<FilmStack> readNumberedLayerStacks(const Properties& props) {
+  std::vector<FilmStack> stacks;
   // Numbered without gaps, so that a stack's number is its place. The literal "layers_" is how
   // scripts/plugin-docs.py sees that layers_N is read.
   for (int k = 1; k < kMaxLayerStacks; ++k) {

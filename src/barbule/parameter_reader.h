@@ -25,7 +25,7 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
 std::string layerStackParameter(int index);
 // layers_1 to layers_15, numbered without gaps (BarbuleParameters::numberedLayerStacks): read by
 // the scene's barbule BSDF alone, since only a feather's vertices choose among them.
-std::vector<std::vector<FilmLayer>> readNumberedLayerStacks(const Properties& props);
+std::vector<FilmStack> readNumberedLayerStacks(const Properties& props);
 
 // The TRT lobe's quadrature: trt_offsets (1 to 64, default 4) and trt_angles (1 to 16, default 1).
 BarbuleQuadrature readBarbuleQuadrature(const Properties& props);

@@ -27,14 +27,14 @@ struct BarbuleParameters {
   std::optional<SpectralDistribution> melanin;
   // Layers under the cortex, from the cortex down (docs/model.md, "Layered films"); none: the
   // cortex alone, the paper's film.
-  std::vector<FilmLayer> layersBelow;
+  FilmStack layersBelow;
   // Further stacks, which a feather's per-vertex `stack` chooses by number (the scene's layers_1,
   // layers_2, ...); stack 0 is layersBelow.
-  std::vector<std::vector<FilmLayer>> numberedLayerStacks;
+  std::vector<FilmStack> numberedLayerStacks;
 
   int layerStackCount() const { return 1 + int(numberedLayerStacks.size()); }
   // Stack `index`, 0 to layerStackCount() - 1.
-  const std::vector<FilmLayer>& layerStack(int index) const {
+  const FilmStack& layerStack(int index) const {
     return index == 0 ? layersBelow : numberedLayerStacks[size_t(index - 1)];
   }
 };

@@ -74,21 +74,35 @@ float positiveNumber(const std::string& text, const std::string& what, const std
   return *v;
 }
 
-void append(std::vector<FilmLayer>& to, const std::vector<FilmLayer>& layers, const std::string& piece) {
-  if (to.size() + layers.size() > kMaxFilmLayers)
-    throw std::invalid_argument("layer '" + piece + "': the stack would have more than " +
-                                std::to_string(kMaxFilmLayers) + " layers");
-  to.insert(to.end(), layers.begin(), layers.end());
-}
-
-std::vector<FilmLayer> parseStack(const std::string& text, int depth) {
-  if (depth > 8) throw std::invalid_argument("'" + text + "': repetitions nest more than 8 deep");
+// Layers as written: runs of layers, each repeated some number of times.
+struct Run {
   std::vector<FilmLayer> layers;
+  int times = 1;
+};
+struct Runs {
+  std::vector<Run> runs;
+  size_t expandedLayers = 0;  // the layers with every repeat written out
+
+  void add(Run run, const std::string& piece) {
+    expandedLayers += run.layers.size() * size_t(run.times);
+    if (expandedLayers > kMaxFilmLayers)
+      throw std::invalid_argument("layer '" + piece + "': the stack would have more than " +
+                                  std::to_string(kMaxFilmLayers) + " layers");
+    if (run.times == 1 && !runs.empty() && runs.back().times == 1)
+      runs.back().layers.insert(runs.back().layers.end(), run.layers.begin(), run.layers.end());
+    else
+      runs.push_back(std::move(run));
+  }
+};
+
+Runs parseRuns(const std::string& text, int depth) {
+  if (depth > 8) throw std::invalid_argument("'" + text + "': repetitions nest more than 8 deep");
+  Runs out;
   const std::vector<std::string> items = topLevelItems(text);
   for (size_t i = 0; i < items.size(); ++i) {
     const std::string& piece = items[i];
     if (piece.empty()) {
-      if (i + 1 == items.size() && !layers.empty()) break;  // a trailing comma
+      if (i + 1 == items.size() && !out.runs.empty()) break;  // a trailing comma
       throw std::invalid_argument("'" + text + "': an empty layer");
     }
     if (piece.front() == '[') {
@@ -100,8 +114,14 @@ std::vector<FilmLayer> parseStack(const std::string& text, int depth) {
       if (!n || *n < 1 || *n > kMaxRepeats)
         throw std::invalid_argument("layer '" + piece + "': the repeat count must be a whole number from 1 to " +
                                     std::to_string(kMaxRepeats));
-      const std::vector<FilmLayer> group = parseStack(piece.substr(1, close - 1), depth + 1);
-      for (int k = 0; k < *n; ++k) append(layers, group, piece);
+      Runs group = parseRuns(piece.substr(1, close - 1), depth + 1);
+      if (group.runs.size() == 1 && group.runs[0].times == 1) {
+        group.runs[0].times = *n;  // layers that repeat: one run
+        out.add(std::move(group.runs[0]), piece);
+      } else {
+        for (int k = 0; k < *n; ++k)
+          for (const Run& run : group.runs) out.add(run, piece);
+      }
       continue;
     }
     if (piece.rfind("rods(", 0) == 0) {
@@ -115,7 +135,7 @@ std::vector<FilmLayer> parseStack(const std::string& text, int depth) {
       const LayerMaterial matrix =
           args.size() == 4 ? material(args[3], piece) : LayerMaterial{RefractiveIndex::keratin()};
       try {
-        append(layers, rodRow(material(args[0], piece), matrix, diameter, spacing), piece);
+        out.add({rodRow(material(args[0], piece), matrix, diameter, spacing), 1}, piece);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("layer '" + piece + "': " + e.what());
       }
@@ -130,13 +150,22 @@ std::vector<FilmLayer> parseStack(const std::string& text, int depth) {
     FilmLayer layer;
     layer.material = material(trimmed(piece.substr(0, colon)), piece);
     layer.thicknessUm = *thickness;
-    append(layers, {layer}, piece);
+    out.add({{layer}, 1}, piece);
   }
-  return layers;
+  return out;
 }
 
 }  // namespace
 
-std::vector<FilmLayer> parseFilmLayers(const std::string& text) { return parseStack(text, 0); }
+FilmStack parseFilmLayers(const std::string& text) {
+  const Runs written = parseRuns(text, 0);
+  FilmStack stack;
+  const bool repeats = written.runs.size() > 1 || (written.runs.size() == 1 && written.runs[0].times > 1);
+  for (const Run& run : written.runs) {
+    stack.layers.insert(stack.layers.end(), run.layers.begin(), run.layers.end());
+    if (repeats) stack.runs.push_back({run.layers.size(), run.times});
+  }
+  return stack;
+}
 
 }  // namespace columba

@@ -20,7 +20,8 @@ namespace columba {
 
 inline constexpr size_t kMaxFilmLayers = 4096;
 
-// Throws std::invalid_argument naming the piece that is wrong.
-std::vector<FilmLayer> parseFilmLayers(const std::string& text);
+// The layers, each repeated part listed once with its count. Throws std::invalid_argument naming
+// the piece that is wrong.
+FilmStack parseFilmLayers(const std::string& text);
 
 }  // namespace columba

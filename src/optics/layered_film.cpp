@@ -25,16 +25,32 @@ std::complex<double> FilmLayer::index(float lambdaNm) const {
   return std::sqrt(f * a * a + (1.0 - f) * b * b);  // the root with k >= 0
 }
 
-LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm,
-                         const std::vector<FilmLayer>& below, const Wavelengths& wl) {
+std::vector<FilmLayer> FilmStack::expanded() const {
+  if (runs.empty()) return layers;
+  std::vector<FilmLayer> all;
+  auto first = layers.begin();
+  for (const LayerRun& run : runs) {
+    for (int k = 0; k < run.times; ++k) all.insert(all.end(), first, first + std::ptrdiff_t(run.count));
+    first += std::ptrdiff_t(run.count);
+  }
+  return all;
+}
+
+LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm, const FilmStack& below,
+                         const Wavelengths& wl) {
   for (int k = 0; k < kSpectrumSamples; ++k) {
     lambdas_[k] = wl[k];
     LayerStack& stack = stacks_[k];
     stack.incidentIndex = nOutside;
     stack.substrateIndex = nOutside;
-    stack.layers.reserve(below.size() + 1);  // one allocation a wavelength, at every hit
+    stack.layers.reserve(below.layers.size() + 1);  // one allocation a wavelength, at every hit
     stack.layers.push_back({cortex(wl[k]), cortexThicknessUm});
-    for (const FilmLayer& layer : below) stack.layers.push_back({layer.index(wl[k]), layer.thicknessUm});
+    for (const FilmLayer& layer : below.layers) stack.layers.push_back({layer.index(wl[k]), layer.thicknessUm});
+    if (below.runs.empty()) continue;
+    // The cortex once, then the stack's own runs (a second allocation, only for stacks that repeat).
+    stack.runs.reserve(below.runs.size() + 1);
+    stack.runs.push_back({1, 1});
+    stack.runs.insert(stack.runs.end(), below.runs.begin(), below.runs.end());
   }
 }
 

@@ -48,10 +48,21 @@ struct FilmLayer {
   std::complex<double> index(float lambdaNm) const;
 };
 
+// The layers below the cortex, from it down, with the repeats they were written with: each run's
+// layers are listed once (optics/multilayer.h, LayerRun).
+struct FilmStack {
+  std::vector<FilmLayer> layers;
+  std::vector<LayerRun> runs;  // covering `layers` in order; empty where nothing repeats
+
+  bool empty() const { return layers.empty(); }
+  // Every layer, the repeats written out.
+  std::vector<FilmLayer> expanded() const;
+};
+
 class LayeredFilm {
  public:
-  LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm,
-              const std::vector<FilmLayer>& below, const Wavelengths& wl);
+  LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm, const FilmStack& below,
+              const Wavelengths& wl);
 
   // As FreeStandingFilm's, per polarisation, at incidence cosine `cosIncidence` (clamped to
   // [1e-4, 1] as there).

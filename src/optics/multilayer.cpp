@@ -38,15 +38,20 @@ Admittance admittance(Complex n, Complex q) { return {q, over(n * n, q)}; }
 // tangential wave-vector component is `tangential`. A layer's phase thickness, and so its cosine
 // and sine, is the same for s and p: computed once for both. Nothing is allocated: the lobes of a
 // layered barbule film call this at every quadrature node.
-void response(const LayerStack& stack, double tangential, double lambdaNm, MultilayerResponse& r) {
-  const double n0 = stack.incidentIndex;
-  Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
-  const Complex minusI(0.0, -1.0);
-  // Each layer's matrix is kept divided by e^b, b = Im(delta) >= 0 (the wave decays along the
-  // branch chosen), and the sum of the b kept apart: an absorbing layer however thick then
-  // neither overflows nor spoils R, which the common factor does not change; T takes it back.
+// The product of the matrices of `count` layers from `first`, per polarisation, each kept divided
+// by e^b, b = Im(delta) >= 0 (the wave decays along the branch chosen), and the sum of the b
+// apart: an absorbing layer however thick then neither overflows nor spoils R, which the common
+// factor does not change; T takes it back.
+struct RunMatrices {
+  Matrix s{1.0, 0.0, 0.0, 1.0}, p{1.0, 0.0, 0.0, 1.0};
   double attenuation = 0.0;
-  for (const Layer& layer : stack.layers) {
+};
+RunMatrices runMatrices(const Layer* first, size_t count, double tangential, double lambdaNm) {
+  RunMatrices m;
+  Matrix &ms = m.s, &mp = m.p;
+  const Complex minusI(0.0, -1.0);
+  for (const Layer* layerPointer = first; layerPointer != first + count; ++layerPointer) {
+    const Layer& layer = *layerPointer;
     const Complex q = normalComponent(layer.index, tangential);
     const Complex delta = 2.0 * M_PI / lambdaNm * (layer.thicknessUm * 1000.0) * q;
     const Admittance e = admittance(layer.index, q);
@@ -56,12 +61,38 @@ void response(const LayerStack& stack, double tangential, double lambdaNm, Multi
     const double cosA = std::cos(delta.real()), sinA = std::sin(delta.real());
     const double decaySqr = std::exp(-2.0 * delta.imag());
     const double coshB = 0.5 * (1.0 + decaySqr), sinhB = 0.5 * (1.0 - decaySqr);
-    attenuation += delta.imag();
+    m.attenuation += delta.imag();
     const Complex c(cosA * coshB, -sinA * sinhB), sn(sinA * coshB, cosA * sinhB);
     // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
     // matrix carries -i; Macleod's +i goes with n - ik.
     ms = multiply(ms, {c, over(minusI * sn, e.s), minusI * e.s * sn, c});
     mp = multiply(mp, {c, over(minusI * sn, e.p), minusI * e.p * sn, c});
+  }
+  return m;
+}
+
+// M^times by squaring.
+Matrix power(Matrix m, int times) {
+  Matrix result{1.0, 0.0, 0.0, 1.0};
+  for (; times > 0; times >>= 1) {
+    if (times & 1) result = multiply(result, m);
+    if (times > 1) m = multiply(m, m);
+  }
+  return result;
+}
+
+void response(const LayerStack& stack, double tangential, double lambdaNm, MultilayerResponse& r) {
+  const double n0 = stack.incidentIndex;
+  Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
+  double attenuation = 0.0;
+  const LayerRun everyLayerOnce{stack.layers.size(), 1};
+  const LayerRun* run = stack.runs.empty() ? &everyLayerOnce : stack.runs.data();
+  const LayerRun* end = stack.runs.empty() ? &everyLayerOnce + 1 : stack.runs.data() + stack.runs.size();
+  for (const Layer* first = stack.layers.data(); run != end; first += run->count, ++run) {
+    const RunMatrices m = runMatrices(first, run->count, tangential, lambdaNm);
+    ms = multiply(ms, run->times == 1 ? m.s : power(m.s, run->times));
+    mp = multiply(mp, run->times == 1 ? m.p : power(m.p, run->times));
+    attenuation += run->times * m.attenuation;
   }
   const Admittance eta0 = admittance(n0, normalComponent(n0, tangential));
   const Admittance etaS = admittance(stack.substrateIndex, normalComponent(stack.substrateIndex, tangential));
@@ -89,6 +120,13 @@ MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncid
     check(layer.index, "a layer");
     if (!(layer.thicknessUm >= 0.0)) throw std::invalid_argument("a layer's thickness must not be negative");
   }
+  size_t covered = 0;
+  for (const LayerRun& run : stack.runs) {
+    if (run.times < 1) throw std::invalid_argument("a run of layers repeats at least once");
+    covered += run.count;
+  }
+  if (!stack.runs.empty() && covered != stack.layers.size())
+    throw std::invalid_argument("the runs of layers must cover the stack's layers");
   MultilayerResponse r;
   response(stack, stack.incidentIndex * std::sin(thetaIncident), lambdaNm, r);
   return r;
@@ -100,6 +138,7 @@ LayerStack reversed(const LayerStack& stack) {
   LayerStack back;
   back.incidentIndex = stack.substrateIndex.real();
   back.layers.assign(stack.layers.rbegin(), stack.layers.rend());
+  back.runs.assign(stack.runs.rbegin(), stack.runs.rend());  // a run reversed repeats its reverse
   back.substrateIndex = stack.incidentIndex;
   return back;
 }

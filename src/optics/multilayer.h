@@ -15,12 +15,21 @@ struct Layer {
   double thicknessUm = 0.0;
 };
 
+// Layers that repeat: the next `count` layers of a stack's list, taken `times` times in a row.
+struct LayerRun {
+  size_t count = 0;
+  int times = 1;
+};
+
 // The stack between an incident medium (real index, where the light comes from) and a substrate
 // (complex index; the light that reaches it is transmitted), layers listed from the incident side.
+// `runs`, when given, cover the list in order and say how often each part repeats (a repeated
+// part's matrix is raised to its power by squaring); without them each layer is taken once.
 struct LayerStack {
   double incidentIndex = 1.0;
   std::vector<Layer> layers;
   std::complex<double> substrateIndex = 1.0;
+  std::vector<LayerRun> runs;
 };
 
 struct MultilayerResponse {
@@ -34,7 +43,8 @@ struct MultilayerResponse {
 
 // The stack's response to light of vacuum wavelength `lambdaNm` meeting it at `thetaIncident`
 // (radians from the normal, in the incident medium). Throws std::invalid_argument for a layer of
-// negative thickness or an index with negative real or imaginary part.
+// negative thickness, an index with negative real or imaginary part, or runs that do not cover
+// the layers.
 MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncident, double lambdaNm);
 
 // The same stack seen from the substrate's side (the layers in reverse, the substrate as the

@@ -12,8 +12,9 @@ namespace {
 // The named stack in air on both sides, without a cortex, at one wavelength.
 LayerStack stackAt(const std::string& name, float lambdaNm) {
   LayerStack stack;
-  for (const FilmLayer& layer : parseFilmLayers(expandLayerStack(name)))
-    stack.layers.push_back({layer.index(lambdaNm), layer.thicknessUm});
+  const FilmStack layers = parseFilmLayers(expandLayerStack(name));
+  for (const FilmLayer& layer : layers.layers) stack.layers.push_back({layer.index(lambdaNm), layer.thicknessUm});
+  stack.runs = layers.runs;
   return stack;
 }
 }  // namespace
@@ -21,7 +22,7 @@ LayerStack stackAt(const std::string& name, float lambdaNm) {
 TEST(LayerMaterials, MelaninHasStavengaEtAlsIndex) {
   // The paper's abstract: n is 1.7-1.8 over the visible; the Cauchy law gives 1.796 at 400 nm
   // and 1.696 at 700 nm.
-  const std::vector<FilmLayer> layers = parseFilmLayers("melanin:0.1");
+  const std::vector<FilmLayer> layers = parseFilmLayers("melanin:0.1").layers;
   ASSERT_EQ(layers.size(), 1u);
   EXPECT_NEAR(layers[0].material.n(400.0f), 1.648f + 23700.0f / 160000.0f, 1e-6f);
   EXPECT_GT(layers[0].material.n(400.0f), 1.79f);
@@ -29,8 +30,8 @@ TEST(LayerMaterials, MelaninHasStavengaEtAlsIndex) {
   EXPECT_EQ(layers[0].thicknessUm, 0.1f);
   EXPECT_NEAR(layers[0].material.extinction(550.0f), 0.56f * std::exp(-550.0f / 270.0f), 1e-7f);
   // A constant N+Ki keeps its K at every wavelength.
-  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].material.extinction(300.0f), 0.1f);
-  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1")[0].material.extinction(800.0f), 0.1f);
+  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1").layers[0].material.extinction(300.0f), 0.1f);
+  EXPECT_EQ(parseFilmLayers("1.7+0.1i:0.1").layers[0].material.extinction(800.0f), 0.1f);
 }
 
 TEST(LayerStacks, ANameStandsForItsLayersAndAnythingElseIsKept) {

@@ -1076,7 +1076,7 @@ TEST(BarbuleBSDF, ALayeredFilmWithAnEmptyLayerIsTheCortexAlone) {
   auto plain = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(plainProps));
   auto empty = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(emptyLayer));
   auto real = std::dynamic_pointer_cast<BarbuleBSDF>(makeBarbuleBSDF(realLayer));
-  ASSERT_EQ(empty->parameters().layersBelow.size(), 1u);
+  ASSERT_EQ(empty->parameters().layersBelow.layers.size(), 1u);
   BSDFContext ctx;
   int changed = 0;
   for (const Vec3& wi : incidentDirections())

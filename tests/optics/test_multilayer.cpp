@@ -1,6 +1,7 @@
 // Layered films by transfer matrices: a single film is the Airy film, lossless stacks conserve
 // energy and lossy ones absorb what is missing, a quarter-wave stack reflects as its closed form
-// says, a bare interface is Fresnel's, and transmittance is the same from either side.
+// says, a bare interface is Fresnel's, transmittance is the same from either side, and a run of
+// layers raised to its power is the run written out.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,14 +32,14 @@ TEST(Multilayer, ASingleFilmIsTheAiryFilm) {
   for (double theta : {0.0, 0.3, 0.8, 1.3})
     for (double d : {0.1, 0.51, 0.6, 2.0})
       for (double lambda : {300.0, 410.0, 550.0, 700.0, 830.0}) {
-        LayerStack stack{1.000277, {{keratin(lambda), d}}, 1.000277};
+        LayerStack stack{1.000277, {{keratin(lambda), d}}, 1.000277, {}};
         const MultilayerResponse r = multilayerResponse(stack, theta, lambda);
         const double c = std::cos(theta);
         EXPECT_NEAR(r.reflectance(), thinFilmReflectance(c, 1.000277, keratin(lambda), 1.000277, d, lambda), 1e-9)
             << theta << " " << d << " " << lambda;
         EXPECT_NEAR(r.transmittance(), thinFilmTransmittance(c, 1.000277, keratin(lambda), 1.000277, d, lambda), 1e-9);
         // On a substrate of another index too (keratin on melanin's real part).
-        LayerStack onSubstrate{1.0, {{keratin(lambda), d}}, 1.7};
+        LayerStack onSubstrate{1.0, {{keratin(lambda), d}}, 1.7, {}};
         EXPECT_NEAR(multilayerResponse(onSubstrate, theta, lambda).reflectance(),
                     thinFilmReflectance(c, 1.0, keratin(lambda), 1.7, d, lambda), 1e-9);
       }
@@ -60,7 +61,7 @@ TEST(Multilayer, LosslessStacksConserveEnergyAndLossyOnesAbsorbTheRest) {
     }
   }
   // A thick absorbing layer (melanin-like, k = 0.2, 5 um) lets nothing through.
-  LayerStack absorber{1.0, {{{1.7, 0.2}, 5.0}}, 1.5};
+  LayerStack absorber{1.0, {{{1.7, 0.2}, 5.0}}, 1.5, {}};
   EXPECT_LT(multilayerResponse(absorber, 0.2, 500.0).transmittance(), 1e-9);
 }
 
@@ -70,7 +71,7 @@ TEST(Multilayer, AQuarterWaveStackReflectsAsItsClosedFormSays) {
   // R = ((n0 - Y) / (n0 + Y))^2.
   const double lambda = 550.0, nH = 1.8, nL = 1.4, n0 = 1.0, nS = 1.52;
   for (int pairs : {1, 2, 5, 8}) {
-    LayerStack stack{n0, {}, nS};
+    LayerStack stack{n0, {}, nS, {}};
     for (int k = 0; k < pairs; ++k) {
       stack.layers.push_back({nH, lambda / (4.0 * nH) / 1000.0});
       stack.layers.push_back({nL, lambda / (4.0 * nL) / 1000.0});
@@ -92,12 +93,12 @@ TEST(Multilayer, ABareInterfaceIsFresnels) {
     const double c1 = std::cos(theta), c2 = std::sqrt(1.0 - std::pow(n1 / n2 * std::sin(theta), 2));
     const double rs = std::pow((n1 * c1 - n2 * c2) / (n1 * c1 + n2 * c2), 2);
     const double rp = std::pow((n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2), 2);
-    const MultilayerResponse r = multilayerResponse({n1, {}, n2}, theta, 500.0);
+    const MultilayerResponse r = multilayerResponse({n1, {}, n2, {}}, theta, 500.0);
     EXPECT_NEAR(r.rs, rs, 1e-12) << theta;
     EXPECT_NEAR(r.rp, rp, 1e-12) << theta;
   }
   // Beyond the critical angle, inside the denser medium, everything is reflected.
-  const MultilayerResponse total = multilayerResponse({1.56, {}, 1.0}, 1.0, 500.0);
+  const MultilayerResponse total = multilayerResponse({1.56, {}, 1.0, {}}, 1.0, 500.0);
   EXPECT_NEAR(total.rs, 1.0, 1e-12);
   EXPECT_NEAR(total.rp, 1.0, 1e-12);
   EXPECT_EQ(total.ts, 0.0);
@@ -124,10 +125,10 @@ TEST(Multilayer, TransmittanceIsTheSameFromEitherSide) {
 }
 
 TEST(Multilayer, BadLayersAreRefused) {
-  EXPECT_THROW(multilayerResponse({1.0, {{1.5, -0.1}}, 1.0}, 0.0, 500.0), std::invalid_argument);
-  EXPECT_THROW(multilayerResponse({1.0, {{{1.5, -0.1}, 0.1}}, 1.0}, 0.0, 500.0), std::invalid_argument);
-  EXPECT_THROW(multilayerResponse({1.0, {}, {0.0, 1.0}}, 0.0, 500.0), std::invalid_argument);
-  EXPECT_THROW(reversed({1.0, {}, {1.5, 0.1}}), std::invalid_argument);
+  EXPECT_THROW(multilayerResponse({1.0, {{1.5, -0.1}}, 1.0, {}}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(multilayerResponse({1.0, {{{1.5, -0.1}, 0.1}}, 1.0, {}}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(multilayerResponse({1.0, {}, {0.0, 1.0}, {}}, 0.0, 500.0), std::invalid_argument);
+  EXPECT_THROW(reversed({1.0, {}, {1.5, 0.1}, {}}), std::invalid_argument);
 }
 
 TEST(Multilayer, AThickAbsorberIsASemiInfiniteOne) {
@@ -144,4 +145,47 @@ TEST(Multilayer, AThickAbsorberIsASemiInfiniteOne) {
     EXPECT_LT(r.transmittance(), 1e-100) << thickness;
     EXPECT_NEAR(r.absorptance(), 1.0 - bare, 1e-12) << thickness;
   }
+}
+
+TEST(Multilayer, ARunRaisedToItsPowerIsTheRunWrittenOut) {
+  PCG32 rng(11);
+  for (int i = 0; i < 200; ++i) {
+    const bool lossy = i % 2 == 1;
+    // Runs of 1 to 3 layers, each taken 1 to 40 times.
+    LayerStack runs = randomStack(rng, lossy), flat = runs;
+    runs.layers.clear();
+    flat.layers.clear();
+    const int runCount = 1 + int(rng.nextFloat() * 4.0f);
+    for (int r = 0; r < runCount; ++r) {
+      const size_t count = 1 + size_t(rng.nextFloat() * 3.0f);
+      const int times = 1 + int(rng.nextFloat() * 40.0f);
+      LayerStack part = randomStack(rng, lossy);
+      part.layers.resize(std::min(count, part.layers.size()));
+      runs.layers.insert(runs.layers.end(), part.layers.begin(), part.layers.end());
+      runs.runs.push_back({part.layers.size(), times});
+      for (int t = 0; t < times; ++t) flat.layers.insert(flat.layers.end(), part.layers.begin(), part.layers.end());
+    }
+    for (double theta : {0.0, 0.7, 1.3})
+      for (double lambda : {380.0, 610.0}) {
+        const MultilayerResponse a = multilayerResponse(runs, theta, lambda),
+                                 b = multilayerResponse(flat, theta, lambda);
+        EXPECT_NEAR(a.rs, b.rs, 1e-9) << i;
+        EXPECT_NEAR(a.rp, b.rp, 1e-9) << i;
+        EXPECT_NEAR(a.ts, b.ts, 1e-9) << i;
+        EXPECT_NEAR(a.tp, b.tp, 1e-9) << i;
+        // Seen from the other side too.
+        if (!lossy || runs.substrateIndex.imag() == 0.0) {
+          EXPECT_NEAR(multilayerResponse(reversed(runs), theta, lambda).reflectance(),
+                      multilayerResponse(reversed(flat), theta, lambda).reflectance(), 1e-9)
+              << i;
+        }
+      }
+  }
+  // Runs must cover the layers, each taken at least once.
+  LayerStack bad{1.0, {{1.5, 0.1}, {1.3, 0.2}}, 1.0, {{1, 3}}};
+  EXPECT_THROW(multilayerResponse(bad, 0.0, 500.0), std::invalid_argument);
+  bad.runs = {{2, 0}};
+  EXPECT_THROW(multilayerResponse(bad, 0.0, 500.0), std::invalid_argument);
+  bad.runs = {{2, 5}};
+  EXPECT_NO_THROW(multilayerResponse(bad, 0.0, 500.0));
 }

@@ -113,20 +113,36 @@ TEST(RodRow, TheDefaultSlicingHasConverged) {
 }
 
 TEST(FilmLayerText, RepeatsAndRowsExpandToTheirLayers) {
-  const std::vector<FilmLayer> repeated = parseFilmLayers("[melanin:0.2, keratin:0.15] x 3, air:0.1");
+  const std::vector<FilmLayer> repeated = parseFilmLayers("[melanin:0.2, keratin:0.15] x 3, air:0.1").expanded();
   const std::vector<FilmLayer> written =
-      parseFilmLayers("melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, air:0.1");
+      parseFilmLayers("melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, air:0.1")
+          .layers;
   ASSERT_EQ(repeated.size(), written.size());
   for (size_t i = 0; i < written.size(); ++i) {
     EXPECT_EQ(repeated[i].thicknessUm, written[i].thicknessUm);
     EXPECT_EQ(repeated[i].index(500.0f), written[i].index(500.0f)) << i;
   }
-  const std::vector<FilmLayer> rows = parseFilmLayers("[rods(melanin, 0.11, 0.15), keratin:0.04] x 9");
+  const std::vector<FilmLayer> rows = parseFilmLayers("[rods(melanin, 0.11, 0.15), keratin:0.04] x 9").expanded();
   const std::vector<FilmLayer> direct = nineRows(kRodRowSlices);
   ASSERT_EQ(rows.size(), direct.size());
   for (size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i].index(430.0f), direct[i].index(430.0f)) << i;
+  // Repeats within repeats.
+  const std::vector<FilmLayer> nested = parseFilmLayers("[[melanin:0.2, air:0.05] x 2, keratin:0.1] x 3").expanded();
+  const std::vector<FilmLayer> out =
+      parseFilmLayers(
+          "melanin:0.2, air:0.05, melanin:0.2, air:0.05, keratin:0.1, melanin:0.2, air:0.05, melanin:0.2, air:0.05, "
+          "keratin:0.1, melanin:0.2, air:0.05, melanin:0.2, air:0.05, keratin:0.1")
+          .layers;
+  ASSERT_EQ(nested.size(), out.size());
+  for (size_t i = 0; i < out.size(); ++i) EXPECT_EQ(nested[i].index(500.0f), out[i].index(500.0f)) << i;
+  // A stack without repeats keeps no runs; one with them lists each repeated part once.
+  EXPECT_TRUE(parseFilmLayers("melanin:0.2, air:0.05").runs.empty());
+  const FilmStack rowsStack = parseFilmLayers("[rods(melanin, 0.11, 0.15), keratin:0.04] x 9");
+  EXPECT_EQ(rowsStack.layers.size(), size_t(kRodRowSlices + 1));
+  ASSERT_EQ(rowsStack.runs.size(), 1u);
+  EXPECT_EQ(rowsStack.runs[0].times, 9);
   // A matrix of its own: air channels in melanin.
-  const std::vector<FilmLayer> channels = parseFilmLayers("rods(air, 0.05, 0.1, melanin)");
+  const std::vector<FilmLayer> channels = parseFilmLayers("rods(air, 0.05, 0.1, melanin)").layers;
   ASSERT_EQ(channels.size(), size_t(kRodRowSlices));
   EXPECT_EQ(channels[0].matrix.index(500.0f), melanin().index(500.0f));
 }
@@ -147,5 +163,5 @@ TEST(FilmLayerText, RefusesWhatItCannotRead) {
   }
   EXPECT_THROW(parseFilmLayers("[[[[[[[[[[keratin:0.1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1"),
                std::invalid_argument);
-  EXPECT_EQ(parseFilmLayers("keratin:0.1,").size(), 1u);  // a trailing comma, as before
+  EXPECT_EQ(parseFilmLayers("keratin:0.1,").layers.size(), 1u);  // a trailing comma, as before
 }
