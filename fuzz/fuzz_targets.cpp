@@ -20,6 +20,7 @@
 #include "io/image.h"
 #include "io/image_file_reader.h"
 #include "io/volume_grid_file.h"
+#include "optics/film_layer_text.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "shapes/feather_shape.h"
@@ -206,6 +207,25 @@ void manifestFromBytes(const uint8_t* data, size_t size) {
 void spectraCSVFromBytes(const uint8_t* data, size_t size) {
   std::string path = writeScratchFile(data, size, ".csv");
   (void)readSpectraCSV(path);
+}
+
+void layerTextFromBytes(const uint8_t* data, size_t size) {
+  FilmStack stack;
+  try {
+    stack = parseFilmLayers(std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const std::invalid_argument& e) {
+    throw InputError({}, e.what());
+  }
+  const LayeredFilm film(RefractiveIndex::keratin(), 1.000277f, 0.6f, stack,
+                         Wavelengths::fixed({310.0f, 450.0f, 600.0f, 820.0f}));
+  for (float cosine : {1.0f, 0.5f, 0.01f}) {
+    const FreeStandingFilm::Reflectance r = film.reflectance(cosine);
+    const Spectrum t = film.transmittanceProduct(cosine, 1.0f);
+    for (int k = 0; k < kSpectrumSamples; ++k)
+      for (float v : {r.s[k], r.p[k], t[k]})
+        if (!(v >= -1e-4f && v <= 1.0f + 1e-4f))
+          throw std::logic_error("a film's reflectance or transmittance is " + std::to_string(v));
+  }
 }
 
 }  // namespace columba::fuzz

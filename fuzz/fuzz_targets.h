@@ -44,6 +44,10 @@ void mergePieceFromBytes(const uint8_t* data, size_t size);
 void manifestFromBytes(const uint8_t* data, size_t size);
 // A table of measured spectra (readSpectraCSV).
 void spectraCSVFromBytes(const uint8_t* data, size_t size);
+// A barbule's layer text (parseFilmLayers, which rejects bad text with std::invalid_argument:
+// reported as an InputError), then the film of a keratin cortex over it at a few wavelengths and
+// angles, whose R and T must be numbers in [0, 1] (else std::logic_error).
+void layerTextFromBytes(const uint8_t* data, size_t size);
 
 // The readers take paths: the bytes are written to a file of this process named with `suffix`
 // (".ply", ".obj", ".exr"), which is returned.

@@ -21,6 +21,13 @@ std::optional<T> parseNumber(const std::string& text) {
   return value;
 }
 
+// `text` without the white space around it.
+inline std::string trimmed(const std::string& text) {
+  const char* space = " \t\r\n\f\v";
+  const size_t first = text.find_first_not_of(space), last = text.find_last_not_of(space);
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
 // The items of a list separated by commas and/or white space, empty items dropped: how scene files
 // write lists of numbers and biologists' CSV and whitespace tables mix.
 inline std::vector<std::string> listItems(const std::string& text) {

@@ -13,10 +13,11 @@ namespace {
 
 constexpr int kMaxRepeats = 1000;
 
-std::string trimmed(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+// `text` for a message: its first 60 characters.
+std::string quoted(const std::string& text) {
+  return "'" + (text.size() > 60 ? text.substr(0, 60) + "..." : text) + "'";
 }
+constexpr float kMaxLayerIndex = 100.0f;
 
 // "N+Ki" as (N, K); nullopt where `text` is not of that form.
 std::optional<std::pair<float, float>> complexIndex(const std::string& text) {
@@ -34,7 +35,7 @@ LayerMaterial material(const std::string& index, const std::string& piece) {
   LayerMaterial m;
   if (const std::optional<std::pair<float, float>> c = complexIndex(index)) {
     if (!(c->first > 0.0f) || !(c->second >= 0.0f))
-      throw std::invalid_argument("layer '" + piece + "': an index N+Ki needs N > 0 and K >= 0");
+      throw std::invalid_argument("layer " + quoted(piece) + ": an index N+Ki needs N > 0 and K >= 0");
     m.n = RefractiveIndex::constant(c->first);
     m.k = c->second;
   } else if (index == "melanin") {
@@ -42,9 +43,15 @@ LayerMaterial material(const std::string& index, const std::string& piece) {
   } else if (const std::optional<RefractiveIndex> n = iorFromName(index)) {
     m.n = *n;
   } else {
-    throw std::invalid_argument("layer '" + piece + "': unknown index '" + index +
+    throw std::invalid_argument("layer " + quoted(piece) + ": unknown index '" + index +
                                 "' (a number, a named index such as air, keratin, melanin, or N+Ki)");
   }
+  // Far beyond any material of a feather, or a metal (n and k below 10 over 300-830 nm), and where
+  // the transfer matrices of a thick stack would overflow. The text's indices are constants or
+  // Cauchy laws, largest at one end of the range.
+  if (!(m.n(kSpectralMin) <= kMaxLayerIndex && m.n(kLambdaMax) <= kMaxLayerIndex && m.k <= kMaxLayerIndex))
+    throw std::invalid_argument("layer " + quoted(piece) + ": an index above " + std::to_string(int(kMaxLayerIndex)) +
+                                " (n or k) is no material's");
   return m;
 }
 
@@ -57,20 +64,21 @@ std::vector<std::string> topLevelItems(const std::string& text) {
     const char c = i < text.size() ? text[i] : ',';
     if (c == '(' || c == '[') ++depth;
     if (c == ')' || c == ']') --depth;
-    if (depth < 0) throw std::invalid_argument("'" + text + "': a ')' or ']' closes nothing");
+    if (depth < 0) throw std::invalid_argument(quoted(text) + ": a ')' or ']' closes nothing");
     if (c == ',' && depth == 0) {
       items.push_back(trimmed(text.substr(start, i - start)));
       start = i + 1;
     }
   }
-  if (depth != 0) throw std::invalid_argument("'" + text + "': a '(' or '[' is not closed");
+  if (depth != 0) throw std::invalid_argument(quoted(text) + ": a '(' or '[' is not closed");
   return items;
 }
 
 float positiveNumber(const std::string& text, const std::string& what, const std::string& piece) {
   const std::optional<float> v = parseNumber<float>(trimmed(text));
   if (!v || !(*v > 0.0f) || !std::isfinite(*v))
-    throw std::invalid_argument("layer '" + piece + "': the " + what + " must be a positive number of micrometres");
+    throw std::invalid_argument("layer " + quoted(piece) + ": the " + what +
+                                " must be a positive number of micrometres");
   return *v;
 }
 
@@ -86,7 +94,7 @@ struct Runs {
   void add(Run run, const std::string& piece) {
     expandedLayers += run.layers.size() * size_t(run.times);
     if (expandedLayers > kMaxFilmLayers)
-      throw std::invalid_argument("layer '" + piece + "': the stack would have more than " +
+      throw std::invalid_argument("layer " + quoted(piece) + ": the stack would have more than " +
                                   std::to_string(kMaxFilmLayers) + " layers");
     if (run.times == 1 && !runs.empty() && runs.back().times == 1)
       runs.back().layers.insert(runs.back().layers.end(), run.layers.begin(), run.layers.end());
@@ -96,29 +104,29 @@ struct Runs {
 };
 
 Runs parseRuns(const std::string& text, int depth) {
-  if (depth > 8) throw std::invalid_argument("'" + text + "': repetitions nest more than 8 deep");
+  if (depth > 8) throw std::invalid_argument(quoted(text) + ": repetitions nest more than 8 deep");
   Runs out;
   const std::vector<std::string> items = topLevelItems(text);
   for (size_t i = 0; i < items.size(); ++i) {
     const std::string& piece = items[i];
     if (piece.empty()) {
       if (i + 1 == items.size() && !out.runs.empty()) break;  // a trailing comma
-      throw std::invalid_argument("'" + text + "': an empty layer");
+      throw std::invalid_argument(quoted(text) + ": an empty layer");
     }
     if (piece.front() == '[') {
       const size_t close = piece.rfind(']');
       std::string count = trimmed(piece.substr(close + 1));
       if (count.empty() || (count[0] != 'x' && count[0] != 'X'))
-        throw std::invalid_argument("layer '" + piece + "': give [LAYERS] x N");
+        throw std::invalid_argument("layer " + quoted(piece) + ": give [LAYERS] x N");
       const std::optional<int> n = parseNumber<int>(trimmed(count.substr(1)));
       if (!n || *n < 1 || *n > kMaxRepeats)
-        throw std::invalid_argument("layer '" + piece + "': the repeat count must be a whole number from 1 to " +
+        throw std::invalid_argument("layer " + quoted(piece) + ": the repeat count must be a whole number from 1 to " +
                                     std::to_string(kMaxRepeats));
       Runs group = parseRuns(piece.substr(1, close - 1), depth + 1);
-      if (group.runs.size() == 1 && group.runs[0].times == 1) {
-        group.runs[0].times = *n;  // layers that repeat: one run
+      if (group.runs.size() == 1) {
+        group.runs[0].times *= *n;  // one run repeated: one run (at most 4096 x 1000 times)
         out.add(std::move(group.runs[0]), piece);
-      } else {
+      } else {  // runs within the repeat: written out (runs do not nest)
         for (int k = 0; k < *n; ++k)
           for (const Run& run : group.runs) out.add(run, piece);
       }
@@ -126,10 +134,10 @@ Runs parseRuns(const std::string& text, int depth) {
     }
     if (piece.rfind("rods(", 0) == 0) {
       if (piece.back() != ')')
-        throw std::invalid_argument("layer '" + piece + "': give rods(INDEX, DIAMETER, SPACING)");
+        throw std::invalid_argument("layer " + quoted(piece) + ": give rods(INDEX, DIAMETER, SPACING)");
       const std::vector<std::string> args = topLevelItems(piece.substr(5, piece.size() - 6));
       if (args.size() < 3 || args.size() > 4)
-        throw std::invalid_argument("layer '" + piece + "': give rods(INDEX, DIAMETER, SPACING[, MATRIX])");
+        throw std::invalid_argument("layer " + quoted(piece) + ": give rods(INDEX, DIAMETER, SPACING[, MATRIX])");
       const float diameter = positiveNumber(args[1], "diameter", piece);
       const float spacing = positiveNumber(args[2], "spacing", piece);
       const LayerMaterial matrix =
@@ -137,16 +145,17 @@ Runs parseRuns(const std::string& text, int depth) {
       try {
         out.add({rodRow(material(args[0], piece), matrix, diameter, spacing), 1}, piece);
       } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("layer '" + piece + "': " + e.what());
+        throw std::invalid_argument("layer " + quoted(piece) + ": " + e.what());
       }
       continue;
     }
     const size_t colon = piece.rfind(':');
     if (colon == std::string::npos)
-      throw std::invalid_argument("layer '" + piece + "': give INDEX:THICKNESS (thickness in um)");
+      throw std::invalid_argument("layer " + quoted(piece) + ": give INDEX:THICKNESS (thickness in um)");
     const std::optional<float> thickness = parseNumber<float>(trimmed(piece.substr(colon + 1)));
     if (!thickness || !(*thickness >= 0.0f))
-      throw std::invalid_argument("layer '" + piece + "': the thickness must be a number of micrometres, not negative");
+      throw std::invalid_argument("layer " + quoted(piece) +
+                                  ": the thickness must be a number of micrometres, not negative");
     FilmLayer layer;
     layer.material = material(trimmed(piece.substr(0, colon)), piece);
     layer.thicknessUm = *thickness;

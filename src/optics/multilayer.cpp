@@ -1,5 +1,6 @@
 #include "optics/multilayer.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -34,21 +35,38 @@ struct Admittance {
 };
 Admittance admittance(Complex n, Complex q) { return {q, over(n * n, q)}; }
 
-// R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate], for light whose
-// tangential wave-vector component is `tangential`. A layer's phase thickness, and so its cosine
-// and sine, is the same for s and p: computed once for both. Nothing is allocated: the lobes of a
-// layered barbule film call this at every quadrature node.
-// The product of the matrices of `count` layers from `first`, per polarisation, each kept divided
-// by e^b, b = Im(delta) >= 0 (the wave decays along the branch chosen), and the sum of the b
-// apart: an absorbing layer however thick then neither overflows nor spoils R, which the common
-// factor does not change; T takes it back.
+// A product of layer matrices, per polarisation, kept as e^logScale times `m`. Each layer's matrix
+// is divided by e^b, b = Im(delta) >= 0 (the wave decays along the branch chosen), and a product
+// whose entries leave [1e-50, 1e50] in modulus is divided by its largest: R does not change with
+// a common factor, and T takes it back (divided by e^(2 logScale)). An absorbing layer however
+// thick, thousands of absorbing layers, or many periods deep in a band gap at grazing incidence
+// (where the entries grow as a power of the periods) then neither overflow nor underflow.
+struct ScaledMatrix {
+  Matrix m{1.0, 0.0, 0.0, 1.0};
+  double logScale = 0.0;
+};
+
+ScaledMatrix product(const ScaledMatrix& a, const ScaledMatrix& b) {
+  ScaledMatrix r{multiply(a.m, b.m), a.logScale + b.logScale};
+  double largest = 0.0;
+  for (const Complex& v : r.m) largest = std::max(largest, std::norm(v));
+  // Moduli kept within 1e-50 to 1e50: a product of two such matrices stays far from overflow, and
+  // so do the squared moduli compared here.
+  if (largest > 1e100 || (largest < 1e-100 && largest > 0.0)) {
+    const double scale = std::sqrt(largest);
+    for (Complex& v : r.m) v /= scale;
+    r.logScale += std::log(scale);
+  }
+  return r;
+}
+
+// The products of the matrices of `count` layers from `first`, s and p. A layer's phase thickness,
+// and so its cosine and sine, is the same for s and p: computed once for both.
 struct RunMatrices {
-  Matrix s{1.0, 0.0, 0.0, 1.0}, p{1.0, 0.0, 0.0, 1.0};
-  double attenuation = 0.0;
+  ScaledMatrix s, p;
 };
 RunMatrices runMatrices(const Layer* first, size_t count, double tangential, double lambdaNm) {
   RunMatrices m;
-  Matrix &ms = m.s, &mp = m.p;
   const Complex minusI(0.0, -1.0);
   for (const Layer* layerPointer = first; layerPointer != first + count; ++layerPointer) {
     const Layer& layer = *layerPointer;
@@ -61,47 +79,47 @@ RunMatrices runMatrices(const Layer* first, size_t count, double tangential, dou
     const double cosA = std::cos(delta.real()), sinA = std::sin(delta.real());
     const double decaySqr = std::exp(-2.0 * delta.imag());
     const double coshB = 0.5 * (1.0 + decaySqr), sinhB = 0.5 * (1.0 - decaySqr);
-    m.attenuation += delta.imag();
     const Complex c(cosA * coshB, -sinA * sinhB), sn(sinA * coshB, cosA * sinhB);
     // With indices n + ik (time dependence e^{-i omega t}, Born & Wolf's convention) the layer's
     // matrix carries -i; Macleod's +i goes with n - ik.
-    ms = multiply(ms, {c, over(minusI * sn, e.s), minusI * e.s * sn, c});
-    mp = multiply(mp, {c, over(minusI * sn, e.p), minusI * e.p * sn, c});
+    m.s = product(m.s, {{c, over(minusI * sn, e.s), minusI * e.s * sn, c}, delta.imag()});
+    m.p = product(m.p, {{c, over(minusI * sn, e.p), minusI * e.p * sn, c}, delta.imag()});
   }
   return m;
 }
 
 // M^times by squaring.
-Matrix power(Matrix m, int times) {
-  Matrix result{1.0, 0.0, 0.0, 1.0};
+ScaledMatrix power(ScaledMatrix m, int times) {
+  ScaledMatrix result;
   for (; times > 0; times >>= 1) {
-    if (times & 1) result = multiply(result, m);
-    if (times > 1) m = multiply(m, m);
+    if (times & 1) result = product(result, m);
+    if (times > 1) m = product(m, m);
   }
   return result;
 }
 
+// R and T of both polarisations from the stack's [B, C] = M [1, eta_substrate], for light whose
+// tangential wave-vector component is `tangential`. Nothing is allocated: the lobes of a layered
+// barbule film call this at every quadrature node.
 void response(const LayerStack& stack, double tangential, double lambdaNm, MultilayerResponse& r) {
   const double n0 = stack.incidentIndex;
-  Matrix ms{1.0, 0.0, 0.0, 1.0}, mp = ms;
-  double attenuation = 0.0;
+  ScaledMatrix ms, mp;
   const LayerRun everyLayerOnce{stack.layers.size(), 1};
   const LayerRun* run = stack.runs.empty() ? &everyLayerOnce : stack.runs.data();
   const LayerRun* end = stack.runs.empty() ? &everyLayerOnce + 1 : stack.runs.data() + stack.runs.size();
   for (const Layer* first = stack.layers.data(); run != end; first += run->count, ++run) {
     const RunMatrices m = runMatrices(first, run->count, tangential, lambdaNm);
-    ms = multiply(ms, run->times == 1 ? m.s : power(m.s, run->times));
-    mp = multiply(mp, run->times == 1 ? m.p : power(m.p, run->times));
-    attenuation += run->times * m.attenuation;
+    ms = product(ms, run->times == 1 ? m.s : power(m.s, run->times));
+    mp = product(mp, run->times == 1 ? m.p : power(m.p, run->times));
   }
   const Admittance eta0 = admittance(n0, normalComponent(n0, tangential));
   const Admittance etaS = admittance(stack.substrateIndex, normalComponent(stack.substrateIndex, tangential));
-  const double transmitted = std::exp(-2.0 * attenuation);
-  auto finish = [transmitted](const Matrix& m, Complex incident, Complex substrate, double& R, double& T) {
+  auto finish = [](const ScaledMatrix& scaled, Complex incident, Complex substrate, double& R, double& T) {
+    const Matrix& m = scaled.m;
     const Complex B = m[0] + m[1] * substrate, C = m[2] + m[3] * substrate;
     const double denominator = std::norm(incident * B + C);
     R = std::norm(incident * B - C) / denominator;
-    T = 4.0 * incident.real() * substrate.real() / denominator * transmitted;
+    T = 4.0 * incident.real() * substrate.real() / denominator * std::exp(-2.0 * scaled.logScale);
   };
   finish(ms, eta0.s, etaS.s, r.rs, r.ts);
   finish(mp, eta0.p, etaS.p, r.rp, r.tp);

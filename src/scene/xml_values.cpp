@@ -15,11 +15,6 @@ namespace columba {
 
 namespace {
 
-std::string trim(const std::string& s) {
-  size_t b = s.find_first_not_of(" \t\r\n"), e = s.find_last_not_of(" \t\r\n");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
-
 InputError badValue(const std::string& kind, const std::string& text, const std::string& what,
                     const SourceLocation& loc) {
   return InputError(loc, "invalid " + kind + " '" + text + "' for " + what);
@@ -27,7 +22,7 @@ InputError badValue(const std::string& kind, const std::string& text, const std:
 
 // std::from_chars accepts neither a leading '+' nor surrounding spaces; the scene format allows both.
 std::string numberBody(const std::string& text) {
-  std::string t = trim(text);
+  std::string t = trimmed(text);
   if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.erase(0, 1);
   return t;
 }
@@ -53,7 +48,7 @@ double parseFloat(const std::string& text, const std::string& what, const Source
     throw badValue("number", text, what, loc);
   // Scene values are used as floats: a larger one would silently become infinite.
   if (std::abs(v) > double(std::numeric_limits<float>::max()))
-    throw InputError(loc, "number '" + trim(text) + "' for " + what + " is out of the range of a float (at most " +
+    throw InputError(loc, "number '" + trimmed(text) + "' for " + what + " is out of the range of a float (at most " +
                               "3.4e38 in magnitude)");
   return v;
 }
@@ -67,7 +62,7 @@ long long parseInteger(const std::string& text, const std::string& what, const S
 }
 
 bool parseBoolean(const std::string& text, const std::string& what, const SourceLocation& loc) {
-  std::string t = trim(text);
+  std::string t = trimmed(text);
   for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (t == "true") return true;
   if (t == "false") return false;
@@ -122,7 +117,7 @@ GivenSpectrum readSpectrumFile(const std::string& path, const std::string& what,
     std::vector<std::string> tokens = listItems(line);
     if (tokens.empty()) continue;
     SourceLocation here{path, lineNo};
-    if (tokens.size() != 2) throw InputError(here, "expected 'wavelength value', got '" + trim(line) + "'");
+    if (tokens.size() != 2) throw InputError(here, "expected 'wavelength value', got '" + trimmed(line) + "'");
     lambdas.push_back(float(parseFloat(tokens[0], "the wavelength", here)));
     values.push_back(float(parseFloat(tokens[1], "the value", here)));
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include "core/math.h"
 #include "optics/film_layer_text.h"
 #include "optics/multilayer.h"
 #include "optics/rod_layer.h"
@@ -13,8 +14,6 @@
 using namespace columba;
 
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 // `layers` between air above and below, at one wavelength.
 LayerStack inAir(const std::vector<FilmLayer>& layers, float lambdaNm) {
@@ -60,7 +59,7 @@ TEST(RodRow, ItsSlicesHoldTheCylindersVolume) {
           thickness += slice.thicknessUm;
         }
         // Per unit length of the row: the cylinder's cross-section over its spacing.
-        EXPECT_NEAR(volume, kPiD * diameter * diameter / (4.0 * spacing), 2e-6 * diameter);
+        EXPECT_NEAR(volume, kPiDouble * diameter * diameter / (4.0 * spacing), 2e-6 * diameter);
         EXPECT_NEAR(thickness, diameter, 1e-6 * diameter);
       }
   // The middle of a touching row is all rod, its top and bottom edges all matrix.
@@ -141,6 +140,10 @@ TEST(FilmLayerText, RepeatsAndRowsExpandToTheirLayers) {
   EXPECT_EQ(rowsStack.layers.size(), size_t(kRodRowSlices + 1));
   ASSERT_EQ(rowsStack.runs.size(), 1u);
   EXPECT_EQ(rowsStack.runs[0].times, 9);
+  const FilmStack twice = parseFilmLayers("[[melanin:0.2, air:0.05] x 2] x 3");  // one run of six
+  ASSERT_EQ(twice.runs.size(), 1u);
+  EXPECT_EQ(twice.runs[0].times, 6);
+  EXPECT_EQ(parseFilmLayers(" keratin:0.1\n,\tair:0.2\r\n").layers.size(), 2u);  // any white space
   // A matrix of its own: air channels in melanin.
   const std::vector<FilmLayer> channels = parseFilmLayers("rods(air, 0.05, 0.1, melanin)").layers;
   ASSERT_EQ(channels.size(), size_t(kRodRowSlices));
@@ -148,10 +151,11 @@ TEST(FilmLayerText, RepeatsAndRowsExpandToTheirLayers) {
 }
 
 TEST(FilmLayerText, RefusesWhatItCannotRead) {
-  for (const char* bad : {"rods(melanin, 0.2, 0.1)", "rods(melanin, 0.1)", "rods(melanin, 0.1, 0.2, keratin, 3)",
-                          "rods(melanin, -0.1, 0.2)", "rods(unobtainium, 0.1, 0.2)", "rods(melanin, 0.1, 0.2",
-                          "[melanin:0.1 x 2", "melanin:0.1] x 2", "[melanin:0.1] x 0", "[melanin:0.1] x 1001",
-                          "[melanin:0.1] 3", "[melanin:0.1] x 2.5", "", "melanin:0.1,, keratin:0.1"}) {
+  for (const char* bad :
+       {"rods(melanin, 0.2, 0.1)", "rods(melanin, 0.1)", "rods(melanin, 0.1, 0.2, keratin, 3)",
+        "rods(melanin, -0.1, 0.2)", "rods(unobtainium, 0.1, 0.2)", "rods(melanin, 0.1, 0.2", "[melanin:0.1 x 2",
+        "melanin:0.1] x 2", "[melanin:0.1] x 0", "[melanin:0.1] x 1001", "[melanin:0.1] 3", "[melanin:0.1] x 2.5", "",
+        "melanin:0.1,, keratin:0.1", "1e30:0.1", "1.5+101i:0.1", "rods(1000, 0.1, 0.2)"}) {
     EXPECT_THROW(parseFilmLayers(bad), std::invalid_argument) << bad;
   }
   // Memory stays bounded: a stack may not grow past kMaxFilmLayers, however the repeats nest.
@@ -161,7 +165,36 @@ TEST(FilmLayerText, RefusesWhatItCannotRead) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find(std::to_string(kMaxFilmLayers)), std::string::npos) << e.what();
   }
-  EXPECT_THROW(parseFilmLayers("[[[[[[[[[[keratin:0.1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1"),
-               std::invalid_argument);
+  EXPECT_NO_THROW(parseFilmLayers("[[[[[[[[keratin:0.1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1"));  // 8 deep
+  EXPECT_THROW(parseFilmLayers("[[[[[[[[[keratin:0.1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1] x 1"),
+               std::invalid_argument);  // 9
+  // Messages quote at most 60 characters of what they name.
+  try {
+    parseFilmLayers(std::string(5000, '[') + "keratin:0.1");
+  } catch (const std::invalid_argument& e) {
+    EXPECT_LT(std::string(e.what()).size(), 200u) << e.what();
+  }
   EXPECT_EQ(parseFilmLayers("keratin:0.1,").layers.size(), 1u);  // a trailing comma, as before
+}
+
+TEST(FilmLayerText, ARepeatingStacksFilmIsItsLayersWrittenOut) {
+  // The film of a keratin cortex over a stack that keeps its repeats (the cortex prepended as a
+  // run of its own) against the same stack written out layer by layer.
+  const Wavelengths wl = Wavelengths::fixed({330.0f, 480.0f, 610.0f, 790.0f});
+  for (const char* text : {"[rods(melanin, 0.11, 0.15), keratin:0.04] x 9", "air:0.1, [melanin:0.08, keratin:0.1] x 5",
+                           "[[melanin:0.2, air:0.05] x 2, keratin:0.1] x 3, air:0.2"}) {
+    const FilmStack repeating = parseFilmLayers(text);
+    const FilmStack written{repeating.expanded(), {}};
+    const LayeredFilm a(RefractiveIndex::keratin(), 1.000277f, 0.6f, repeating, wl);
+    const LayeredFilm b(RefractiveIndex::keratin(), 1.000277f, 0.6f, written, wl);
+    for (float cosine : {1.0f, 0.6f, 0.1f}) {
+      const FreeStandingFilm::Reflectance ra = a.reflectance(cosine), rb = b.reflectance(cosine);
+      const Spectrum ta = a.transmittanceProduct(cosine, 0.8f), tb = b.transmittanceProduct(cosine, 0.8f);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        EXPECT_NEAR(ra.s[k], rb.s[k], 1e-6f) << text;
+        EXPECT_NEAR(ra.p[k], rb.p[k], 1e-6f) << text;
+        EXPECT_NEAR(ta[k], tb[k], 1e-6f * (tb[k] + 1e-30f)) << text;
+      }
+    }
+  }
 }
