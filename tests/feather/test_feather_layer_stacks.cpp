@@ -6,7 +6,7 @@
 
 #include <functional>
 #include <string>
-#include "io/feather_ply_writer.h"
+#include "support/feather_test_util.h"
 #include "support/render_test_support.h"
 #include "support/temp_dir_test.h"
 
@@ -21,25 +21,10 @@ constexpr const char* kKeratinGap = "melanin:0.08, keratin:0.12, melanin:0.08";
 
 class FeatherLayerStackTest : public columba::testing::TempDirTest {
  protected:
-  // Eight straight barbs side by side along y (barb b at y = -0.245 + 0.07 b), every vertex of
-  // barb b with layer stack stackOf(b); no stack property when stackOf is empty.
+  // Eight straight barbs side by side along y (support/feather_test_util.h), every vertex of barb b
+  // with layer stack stackOf(b); no stack property when stackOf is empty.
   std::string barbs(const std::function<int(int)>& stackOf, const std::string& name = "barbs.ply") {
-    std::string file = (dir_ / name).string();
-    FeatherPlyWriter writer(file, false, 8, 0.07f, {true, bool(stackOf)});
-    BarbVertex barb[kBarbVertices];
-    for (int b = 0; b < 8; ++b) {
-      for (int k = 0; k < kBarbVertices; ++k) {
-        barb[k].position = Vec3(-0.3f + 0.6f * float(k) / float(kBarbSegments), -0.245f + 0.07f * float(b), 0.0f);
-        barb[k].normal = Vec3(0, 0, 1);
-        barb[k].fileH = 0.5f;
-        barb[k].fileMu = 0.35f;
-        barb[k].height = 0.6f;
-        barb[k].stack = stackOf ? uint8_t(stackOf(b)) : 0;
-      }
-      writer.writeBarb(barb);
-    }
-    writer.commit();
-    return file;
+    return columba::test::writeStraightBarbs((dir_ / name).string(), 0.6f, stackOf);
   }
 
   // The feather in `file` under a directional light, 24 x 24 pixels (a box filter, so that each
@@ -86,7 +71,7 @@ TEST_F(FeatherLayerStackTest, EachBarbRendersWithTheStackItsVerticesChoose) {
   EXPECT_TRUE(samePixels(allOne, keratinGap));
   EXPECT_FALSE(samePixels(allOne, thinMelanin));
 
-  // The upper four barbs (y > 0, the image's upper rows) choose stack 1, the lower four stack 0:
+  // The upper four barbs (y > -0.03, the image's upper rows) choose stack 1, the lower four stack 0:
   // away from the boundary each half is the render of its stack alone.
   const Image halves = renderSceneString(scene(barbs([](int b) { return b >= 4 ? 1 : 0; }),
                                                layers("layers", kThinMelanin) + layers("layers_1", kKeratinGap)));

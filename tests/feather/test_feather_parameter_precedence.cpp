@@ -6,7 +6,7 @@
 
 #include <string>
 #include "feather/feather_generator.h"
-#include "io/feather_ply_writer.h"
+#include "support/feather_test_util.h"
 #include "support/render_test_support.h"
 #include "support/temp_dir_test.h"
 
@@ -26,21 +26,7 @@ class FeatherParameterPrecedenceTest : public columba::testing::TempDirTest {
 
   // Eight straight barbs side by side along y, cortex `height` (um) at every vertex.
   std::string straightBarbs(float height) {
-    std::string file = (dir_ / "barbs.ply").string();
-    FeatherPlyWriter writer(file, false, 8, 0.07f);
-    BarbVertex barb[kBarbVertices];
-    for (int b = 0; b < 8; ++b) {
-      for (int k = 0; k < kBarbVertices; ++k) {
-        barb[k].position = Vec3(-0.3f + 0.6f * float(k) / float(kBarbSegments), -0.25f + 0.07f * float(b), 0.0f);
-        barb[k].normal = Vec3(0, 0, 1);
-        barb[k].fileH = 0.5f;
-        barb[k].fileMu = 0.35f;
-        barb[k].height = height;
-      }
-      writer.writeBarb(barb);
-    }
-    writer.commit();
-    return file;
+    return columba::test::writeStraightBarbs((dir_ / "barbs.ply").string(), height);
   }
 
   // A scene of `feathers` feathers read from `file`, all with the BSDF whose parameters are

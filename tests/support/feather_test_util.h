@@ -6,10 +6,13 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 #include "core/rng.h"
+#include "io/feather_ply_writer.h"
 #include "shapes/feather_shape.h"
 
 namespace columba::test {
@@ -43,6 +46,28 @@ inline FeatherPlyData syntheticBarbs(int barbs, float bend, float lift, float zi
   }
   for (uint32_t i = 0; i < ply.positions.size(); ++i) ply.barbIndices.push_back(i);
   return ply;
+}
+
+// Writes `file`: eight straight barbs side by side along y (barb b at y = -0.25 + 0.07 b, 0.6 long
+// along x, facing +z), file H 0.5 and mu 0.35 and cortex `height` at every vertex, and where
+// `stackOf` is given, every vertex of barb b with layer stack stackOf(b).
+inline std::string writeStraightBarbs(const std::string& file, float height,
+                                      const std::function<int(int)>& stackOf = {}) {
+  FeatherPlyWriter writer(file, false, 8, 0.07f, {true, bool(stackOf)});
+  BarbVertex barb[kBarbVertices];
+  for (int b = 0; b < 8; ++b) {
+    for (int k = 0; k < kBarbVertices; ++k) {
+      barb[k].position = Vec3(-0.3f + 0.6f * float(k) / float(kBarbSegments), -0.25f + 0.07f * float(b), 0.0f);
+      barb[k].normal = Vec3(0, 0, 1);
+      barb[k].fileH = 0.5f;
+      barb[k].fileMu = 0.35f;
+      barb[k].height = height;
+      barb[k].stack = stackOf ? uint8_t(stackOf(b)) : 0;
+    }
+    writer.writeBarb(barb);
+  }
+  writer.commit();
+  return file;
 }
 
 // An Embree device and scene holding one shape.
