@@ -178,12 +178,14 @@ def multilayer(theta_deg, wavelength, layers, n_outside=1.000277, substrate_ior=
     theta_deg: angle of incidence (degrees) in the outer medium; wavelength in nm; both broadcast.
     layers: a list of (index, thickness_um) from the outer side; an index is a complex number
     n + ik (k > 0 absorbs), "keratin", "melanin" (Stavenga et al. 2015's n(lambda) + i k(lambda)),
-    a named index, a number or Cauchy's (a, b).
+    a named index, a number or Cauchy's (a, b). Or the text a barbule BSDF's `layers` takes, e.g.
+    "[rods(melanin, 0.11, 0.15), keratin:0.04] x 9" or "parotia-occipital".
     substrate_ior: the medium behind the stack (complex allowed). Returns a dict of float64 arrays
     Rs, Rp, R, Ts, Tp, T and A (absorbed, 1 - R - T).
     """
     t, w = _np.broadcast_arrays(_np.asarray(theta_deg, dtype=_np.float64), _np.asarray(wavelength, dtype=_np.float64))
-    out = _columba._multilayer(t.ravel(), w.ravel(), list(layers), n_outside, substrate_ior)
+    out = _columba._multilayer(t.ravel(), w.ravel(), layers if isinstance(layers, str) else list(layers), n_outside,
+                               substrate_ior)
     return {k: v.reshape(t.shape) for k, v in out.items()}
 
 

@@ -22,6 +22,8 @@
 #include "io/feather_ply_writer.h"
 #include "optics/dispersion.h"
 #include "optics/fresnel.h"
+#include "barbule/layer_stacks.h"
+#include "optics/film_layer_text.h"
 #include "optics/layered_film.h"
 #include "optics/melanin.h"
 #include "optics/multilayer.h"
@@ -426,17 +428,33 @@ std::function<std::complex<double>(double)> complexIndexFrom(const py::object& v
 }
 
 // Intensity reflectance and transmittance of a stack of layers (optics/multilayer.h) at each
-// (angle, wavelength) pair.
-py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const py::list& layers,
+// (angle, wavelength) pair: `layers` a list of (index, thickness_um), or the text a scene's
+// `layers` takes (optics/film_layer_text.h, or a named stack), whose repeats are kept.
+py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const py::object& layers,
                     const py::object& outside, const py::object& substrate) {
   equalLengths({&theta, &lambda});
   std::vector<std::function<std::complex<double>(double)>> indices;
   std::vector<double> thicknesses;
-  for (const py::handle& item : layers) {
-    const py::tuple layer = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
-    if (layer.size() != 2) throw py::value_error("a layer is (index, thickness_um)");
-    indices.push_back(complexIndexFrom(layer[0], "layer index"));
-    thicknesses.push_back(layer[1].cast<double>());
+  std::vector<LayerRun> runs;
+  if (py::isinstance<py::str>(layers)) {
+    FilmStack text;
+    try {
+      text = parseFilmLayers(expandLayerStack(layers.cast<std::string>()));
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());
+    }
+    for (const FilmLayer& layer : text.layers) {
+      indices.push_back([layer](double l) { return layer.index(float(l)); });
+      thicknesses.push_back(layer.thicknessUm);
+    }
+    runs = text.runs;
+  } else {
+    for (const py::handle& item : layers.cast<py::list>()) {
+      const py::tuple layer = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+      if (layer.size() != 2) throw py::value_error("a layer is (index, thickness_um)");
+      indices.push_back(complexIndexFrom(layer[0], "layer index"));
+      thicknesses.push_back(layer[1].cast<double>());
+    }
   }
   const RefractiveIndex outer = indexFrom(outside, "n_outside");
   const auto inner = complexIndexFrom(substrate, "substrate_ior");
@@ -446,7 +464,7 @@ py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const p
   for (int k = 0; k < 7; ++k) out.emplace_back(n);
   for (py::ssize_t i = 0; i < n; ++i) {
     const double l = lambda.data()[i];
-    LayerStack stack{outer(float(l)), {}, inner(l), {}};
+    LayerStack stack{outer(float(l)), {}, inner(l), runs};
     for (size_t j = 0; j < indices.size(); ++j) stack.layers.push_back({indices[j](l), thicknesses[j]});
     MultilayerResponse r;
     try {

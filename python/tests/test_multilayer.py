@@ -31,3 +31,22 @@ def test_bad_layers_are_value_errors():
         columba.multilayer(0.0, 500.0, [(1.5 - 0.1j, 0.1)])
     with pytest.raises(ValueError, match="layer"):
         columba.multilayer(0.0, 500.0, [("keratin",)])
+
+
+def test_layer_text_is_the_stack_it_describes():
+    # Plain layers as text and as a list: the same numbers.
+    text = columba.multilayer(25.0, WL, "keratin:0.2, 1.7+0.3i:0.2, air:0.1")
+    listed = columba.multilayer(25.0, WL, [("keratin", 0.2), (1.7 + 0.3j, 0.2), ("air", 0.1)])
+    for key in ("R", "T", "A"):
+        np.testing.assert_allclose(text[key], listed[key], rtol=1e-6, atol=1e-9)
+    # Repeats and rows of rods as written out.
+    rows = columba.multilayer(10.0, WL, "[rods(melanin, 0.11, 0.15), keratin:0.04] x 3")
+    once = "rods(melanin, 0.11, 0.15), keratin:0.04"
+    written = columba.multilayer(10.0, WL, ", ".join([once] * 3))
+    np.testing.assert_allclose(rows["R"], written["R"], atol=1e-9)
+    # The named stack peaks where the C++ test finds it (docs/model.md: 1281 nm).
+    wl = np.arange(900.0, 1701.0)
+    peak = wl[np.argmax(columba.multilayer(0.0, wl, "parotia-occipital")["R"])]
+    assert abs(peak - 1281.0) <= 1.0
+    with pytest.raises(ValueError, match="rods"):
+        columba.multilayer(0.0, WL, "rods(melanin, 0.2, 0.1)")
