@@ -13,6 +13,7 @@
 #include <functional>
 #include <string>
 
+#include "barbule/layer_stacks.h"
 #include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
 #include "bsdfs/barbulebsdf.h"
@@ -21,9 +22,8 @@
 #include "io/feather_ply.h"
 #include "io/feather_ply_writer.h"
 #include "optics/dispersion.h"
-#include "optics/fresnel.h"
-#include "barbule/layer_stacks.h"
 #include "optics/film_layer_text.h"
+#include "optics/fresnel.h"
 #include "optics/layered_film.h"
 #include "optics/melanin.h"
 #include "optics/multilayer.h"
