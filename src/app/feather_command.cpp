@@ -14,8 +14,10 @@ namespace columba {
 namespace {
 
 // --barbule's NAME=VALUE pairs, read as a scene's <bsdf type="barbulebsdf"> is, so that a mistake
-// is refused (naming the option) before anything is written.
-std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const std::vector<std::string>& given) {
+// is refused (naming the option) before anything is written. Numbered layer stacks are taken
+// where the purple feathers choose one (`purpleStack` > 0), and must then reach it.
+std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const std::vector<std::string>& given,
+                                                                          int purpleStack) {
   std::vector<std::pair<std::string, std::string>> pairs;
   Properties props;
   props.tag = "bsdf";
@@ -42,6 +44,14 @@ std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const 
   }
   std::optional<BarbuleParameterProblem> odd;
   readBarbuleParameters(props, odd);
+  if (purpleStack > 0) {
+    const size_t stacks = readNumberedLayerStacks(props).size();
+    if (stacks != size_t(purpleStack))
+      throw CLI::ValidationError(
+          "--purple-stack", fmt::format("the purple feathers choose layer stack {}: give --barbule layers_1=... to "
+                                        "{}=... (numbered without gaps), and none beyond it ({} given)",
+                                        purpleStack, layerStackParameter(purpleStack), stacks));
+  }
   try {
     props.checkAllUsed();
   } catch (const std::exception& e) {
@@ -103,11 +113,12 @@ void addFeatherCommand(CLI::App& app) {
                   "Height on the neck (y, -1.6 at the top to 3 at the bottom) around which green turns purple")
       ->capture_default_str()
       ->needs(neck);
-  cmd->add_option("--purple-stack", o.purpleStack,
-                  "The layer stack (1 to 15) the purple barbules choose, written per vertex as 'stack': their "
-                  "barbulebsdf's layers_N (docs/feather-ply.md)")
-      ->check(CLI::Range(1, kMaxLayerStacks - 1))
-      ->needs(neck);
+  auto* purpleStack =
+      cmd->add_option("--purple-stack", o.purpleStack,
+                      "The layer stack (1 to 15) the purple barbules choose, written per vertex as 'stack': their "
+                      "barbulebsdf's layers_N (docs/feather-ply.md); with --bird, give it as --barbule layers_N=...")
+          ->check(CLI::Range(1, kMaxLayerStacks - 1));
+  purpleStack->excludes(single);
   cmd->add_option("--colour-blend", o.colourBlend,
                   "Width of the change from green to purple on either side of the boundary (0: sharp)")
       ->capture_default_str()
@@ -128,7 +139,8 @@ void addFeatherCommand(CLI::App& app) {
       dove.greenHeight = settings->options.greenHeight;
       dove.purpleHeight = settings->options.purpleHeight;
       if (cmd->count("--height-spread") > 0) dove.heightSpread = settings->options.heightSpread;
-      dove.barbule = checkedBarbuleParameters(settings->barbule);
+      dove.purpleStack = settings->options.purpleStack;
+      dove.barbule = checkedBarbuleParameters(settings->barbule, dove.purpleStack);
       dove.cancel = settings->options.cancel;
       RockDoveSummary s = writeRockDove(dove, settings->output);
       if (!s.written) throw CLI::RuntimeError(128 + interruption.signalNumber());

@@ -89,7 +89,7 @@ bool writeFeather(const FeatherDesign& design, const VaneMapping& mapping, const
         purple = colouring->purple(st.x, st.y);
       }
       v.height = lerp(purple, options.greenHeight, options.purpleHeight) + thicknessOffset + featherOffset;
-      v.stack = uint8_t(purple > 0.5f ? options.purpleStack : 0);
+      v.stack = uint8_t(purple > 0.5f && options.purpleStack > 0 ? options.purpleStack : options.stack.value_or(0));
     }
     writer.writeBarb(vertices);
   };
@@ -142,9 +142,10 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
     throw std::invalid_argument("the height where purple begins must be a number, not " + number(options.purpleBelow));
   if (!(std::isfinite(options.colourBlend) && options.colourBlend >= 0.0f))
     throw std::invalid_argument("the colour blend must be a width of at least 0, not " + number(options.colourBlend));
-  if (options.purpleStack < 0 || options.purpleStack > kMaxVertexLayerStack)
-    throw std::invalid_argument("a purple layer stack is a whole number from 0 to " +
-                                std::to_string(kMaxVertexLayerStack) + ", not " + std::to_string(options.purpleStack));
+  for (int stack : {options.purpleStack, options.stack.value_or(0)})
+    if (stack < 0 || stack > kMaxVertexLayerStack)
+      throw std::invalid_argument("a layer stack is a whole number from 0 to " + std::to_string(kMaxVertexLayerStack) +
+                                  ", not " + std::to_string(stack));
   if (options.purpleStack != 0 && !options.neck)
     throw std::invalid_argument("a purple layer stack applies to a neck: a single feather has no purple barbules");
   const float barbWidth = FeatherShapeParams().barbWidth;
@@ -181,7 +182,7 @@ FeatherGenerationSummary generateFeatherPly(const FeatherGenerationOptions& opti
   NeckSurface neck;
   NeckColouring colouring(options.seed, options.purpleBelow, options.colourBlend);
   FeatherPlyWriter writer(path, options.binary, summary.faces, summary.tilingBarbWidth,
-                          {/*barbuleValues=*/true, /*layerStack=*/options.purpleStack > 0});
+                          {/*barbuleValues=*/true, /*layerStack=*/options.stack || options.purpleStack > 0});
   for (const FeatherPlacement& placement : layout.feathers) {
     VaneMapping mapping(options.neck ? &neck : nullptr, placement, design);
     if (!writeFeather(design, mapping, options.neck ? &colouring : nullptr, options, placement.seed, writer)) {

@@ -19,6 +19,7 @@
 // edge to edge (`comment barbwidth W`), which the feather shape uses when the scene sets none.
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include "feather/neck_layout.h"
 #include "io/feather_ply.h"
@@ -46,8 +47,10 @@ struct FeatherGenerationOptions {
   // Neck only: the height on the neck (surface coordinate Y, -1.6 at the top to 3.0 at the bottom)
   // around which green turns purple, and the width of the change on either side (0: sharp).
   float purpleBelow = NeckColouring::kDefaultBoundary, colourBlend = NeckColouring::kDefaultBlend;
-  // Neck only: the barbule BSDF's layer stack of the purple barbules (where more than half
-  // purple), the green ones taking stack 0; 0: the file gives no per-vertex stack.
+  // The barbule BSDF's layer stack of every vertex (on a neck, of the green barbules; 0 when not
+  // given), and on a neck of the purple barbules (where more than half purple; 0: as the green).
+  // The file has the per-vertex `stack` only where one of them is given.
+  std::optional<int> stack;
   int purpleStack = 0;
 };
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "barbule/parameters.h"
 #include "core/math.h"
 #include "core/number_text.h"
 #include "core/rng.h"
@@ -216,6 +217,7 @@ RockDovePlumage layOutRockDove(const RockDoveBody& body, const RockDoveOptions& 
         PCG32 own(hashCombine(options.seed, plumage.feathers.size()), 0x68656967ULL);
         f.height = lerp(purple, options.greenHeight, options.purpleHeight) +
                    options.heightSpread * (2.0f * own.nextFloat() - 1.0f);
+        f.purple = purple > 0.5f;
       }
       plumage.feathers.push_back(f);
       if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return plumage;
@@ -236,15 +238,25 @@ RockDoveSummary writeRockDove(const RockDoveOptions& options, const std::string&
   namespace fs = std::filesystem;
   fs::create_directories(directory);
   RockDoveSummary summary;
+  if (options.purpleStack < 0 || options.purpleStack >= kMaxLayerStacks)
+    throw std::invalid_argument(fmt::format("the purple feathers' layer stack must be 1 to {} (0: none), not {}",
+                                            kMaxLayerStacks - 1, options.purpleStack));
   for (int k = 0; k < options.templates; ++k) {
     FeatherGenerationOptions feather;
     feather.seed = hashCombine(options.seed, 0x7465u + uint64_t(k));
     feather.binary = true;
     feather.cancel = options.cancel;
-    FeatherGenerationSummary written =
-        generateFeatherPly(feather, (fs::path(directory) / fmt::format("rock_dove_feather_{}.ply", k)).string());
-    if (!written.written) return {0, 0, 0, false};
-    summary.templateBarbs += written.barbs;
+    // With a purple stack, every template chooses stack 0 (the green feathers' and the grey
+    // ones', whose BSDF ignores it), and a copy of it chooses the purple stack.
+    std::vector<std::pair<std::string, int>> files = {{fmt::format("rock_dove_feather_{}.ply", k), 0}};
+    if (options.purpleStack > 0)
+      files.emplace_back(fmt::format("rock_dove_feather_{}_purple.ply", k), options.purpleStack);
+    for (const auto& [name, stack] : files) {
+      if (options.purpleStack > 0) feather.stack = stack;
+      FeatherGenerationSummary written = generateFeatherPly(feather, (fs::path(directory) / name).string());
+      if (!written.written) return {0, 0, 0, false};
+      summary.templateBarbs += written.barbs;
+    }
   }
   const RockDoveBody body;
   const RockDovePlumage plumage = layOutRockDove(body, options);
@@ -261,18 +273,25 @@ RockDoveSummary writeRockDove(const RockDoveOptions& options, const std::string&
         << barbuleElement(options.barbule)
         << "\n"
            "  <bsdf type=\"diffuse\" id=\"dove-grey\"><rgb name=\"reflectance\" value=\"0.33, 0.35, 0.41\"/></bsdf>\n";
-    for (int k = 0; k < options.templates; ++k)
+    for (int k = 0; k < options.templates; ++k) {
       for (const char* kind : {"neck", "grey"})
         out << fmt::format(
             "  <shape type=\"shapegroup\" id=\"dove-{0}-{1}\"><shape type=\"feather\">"
             "<string name=\"filename\" value=\"rock_dove_feather_{1}.ply\"/><ref id=\"dove-{2}\"/></shape></shape>\n",
             kind, k, kind == std::string("neck") ? "barbules" : "grey");
+      if (options.purpleStack > 0)
+        out << fmt::format(
+            "  <shape type=\"shapegroup\" id=\"dove-purple-{0}\"><shape type=\"feather\">"
+            "<string name=\"filename\" value=\"rock_dove_feather_{0}_purple.ply\"/><ref id=\"dove-barbules\"/>"
+            "</shape></shape>\n",
+            k);
+    }
     for (const PlacedFeather& f : plumage.feathers) {
       const bool iridescent = f.plumage == Plumage::Iridescent;
       summary.iridescent += iridescent;
       const auto& m = f.toWorld.m;
-      out << fmt::format("  <shape type=\"instance\"><ref id=\"dove-{}-{}\"/>", iridescent ? "neck" : "grey",
-                         f.templateIndex);
+      const char* group = !iridescent ? "grey" : f.purple && options.purpleStack > 0 ? "purple" : "neck";
+      out << fmt::format("  <shape type=\"instance\"><ref id=\"dove-{}-{}\"/>", group, f.templateIndex);
       if (iridescent) out << fmt::format("<float name=\"height\" value=\"{:.4f}\"/>", f.height);
       out << fmt::format(
           "<transform name=\"to_world\"><matrix value=\"{:.6g} {:.6g} {:.6g} {:.6g} {:.6g} {:.6g} {:.6g} {:.6g} "

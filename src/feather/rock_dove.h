@@ -27,6 +27,9 @@ struct RockDoveOptions {
   // number becomes a <float>, anything else a <string>): a cross-section's profile_exponent, a
   // layer stack. The caller checks them (the feather command reads them as the plug-in does).
   std::vector<std::pair<std::string, std::string>> barbule;
+  // The layer stack (1 to 15) of the neck's purple feathers (more purple than green), whose
+  // barbule BSDF must then give layers_1 to layers_<purpleStack>; 0: one stack for all.
+  int purpleStack = 0;
   const std::atomic<bool>* cancel = nullptr;
 };
 
@@ -38,6 +41,7 @@ struct PlacedFeather {
   Plumage plumage = Plumage::Grey;
   Matrix4 toWorld;
   float height = 0.0f;  // um; iridescent feathers only
+  bool purple = false;  // iridescent and more purple than green
 };
 
 struct RockDovePlumage {
@@ -58,7 +62,9 @@ struct RockDoveSummary {
 };
 
 // Writes `directory`/rock_dove.xml (a <scene> to include) and its templates
-// `directory`/rock_dove_feather_K.ply. std::invalid_argument for options out of range.
+// `directory`/rock_dove_feather_K.ply (with a purple stack, each also as
+// rock_dove_feather_K_purple.ply, every vertex choosing that stack, and the others stack 0).
+// std::invalid_argument for options out of range.
 RockDoveSummary writeRockDove(const RockDoveOptions& options, const std::string& directory);
 
 }  // namespace columba

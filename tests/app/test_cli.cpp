@@ -251,6 +251,8 @@ TEST_F(CliTest, TheBirdsBarbulesTakeFurtherParametersCheckedAsTheSceneWould) {
            {"mu=0.1", "--barbule: 'mu' would have no effect"},
            {"preset=dove-green", "--barbule: 'preset' would have no effect"},
            {"layers=keratin", "--barbule layers:"},
+           {"layers_1=keratin:0.1", "--barbule: unknown parameter 'layers_1'"},  // no feather would choose it
+           {"layers_1=keratin:0.1 --purple-stack 2", "--purple-stack: the purple feathers choose layer stack 2"},
            {"b", "--barbule: give NAME=VALUE, not 'b'"}}) {
     CommandResult bad = run("feather --bird --barbule " + option + " -o " + refused.string());
     EXPECT_NE(bad.status, 0) << option;

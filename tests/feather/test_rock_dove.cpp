@@ -1,7 +1,10 @@
 // The procedural rock dove: deterministic, its feathers outside the body and covering it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "builtin/builtin_plugins.h"
 #include "feather/rock_dove.h"
@@ -128,4 +131,47 @@ TEST_F(RockDoveFiles, FromTheDefaultViewFewRaysThatHitTheBirdReachItsSkinSlow) {
     std::printf("turn %s: %zu of %zu rays that hit the bird reach its skin\n", turn, skin, bird);
     EXPECT_LE(double(skin) / double(bird), 0.01) << skin << " of " << bird << " rays that hit the bird";
   }
+}
+
+TEST_F(RockDoveFiles, PurpleFeathersAreCopiesOfTemplatesThatChooseTheirOwnLayerStack) {
+  RockDoveOptions options;
+  options.featherScale = 3.0f;  // few feathers: quick
+  options.purpleStack = 1;
+  options.barbule = {{"layers_1", "melanin:0.1, keratin:0.1"}};
+  writeRockDove(options, dir_.string());
+  for (int k = 0; k < options.templates; ++k) {
+    const FeatherPlyData plain = readFeatherPly((dir_ / ("rock_dove_feather_" + std::to_string(k) + ".ply")).string());
+    const FeatherPlyData purple =
+        readFeatherPly((dir_ / ("rock_dove_feather_" + std::to_string(k) + "_purple.ply")).string());
+    EXPECT_EQ(plain.largestLayerStack, 0);  // every vertex chooses stack 0
+    EXPECT_EQ(purple.largestLayerStack, 1);
+    ASSERT_EQ(purple.layerStack.size(), plain.layerStack.size());
+    EXPECT_EQ(std::count(purple.layerStack.begin(), purple.layerStack.end(), 1),
+              std::ptrdiff_t(purple.layerStack.size()));
+    EXPECT_EQ(purple.positions.size(), plain.positions.size());  // the same barbs
+  }
+  // Exactly the purple iridescent feathers are copies of the purple templates.
+  const RockDovePlumage plumage = layOutRockDove(RockDoveBody(), options);
+  const std::ptrdiff_t purple =
+      std::count_if(plumage.feathers.begin(), plumage.feathers.end(),
+                    [](const PlacedFeather& f) { return f.plumage == Plumage::Iridescent && f.purple; });
+  std::ifstream in(dir_ / "rock_dove.xml");
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t copies = 0;
+  for (size_t at = xml.find("<ref id=\"dove-purple-"); at != std::string::npos;
+       at = xml.find("<ref id=\"dove-purple-", at + 1))
+    ++copies;
+  EXPECT_GT(purple, 10);
+  EXPECT_EQ(copies, size_t(purple));
+  // The scene loads without a word: the BSDF has the stack the purple copies choose.
+  const fs::path scene = fs::path(COLUMBA_SOURCE_DIR) / "scenes" / "rock_dove.xml";
+  ::testing::internal::CaptureStderr();
+  ParsedScene parsed = loadSceneFile(scene.string(), {{"bird", (dir_ / "rock_dove.xml").string()}}, builtinPlugins());
+  Scene s(parsed, SourceLocation{scene.string(), 0});
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  // Without a purple stack: no copies, and templates without the property, as before.
+  const fs::path plainDir = dir_ / "plain";
+  writeRockDove(RockDoveOptions{}, plainDir.string());
+  EXPECT_FALSE(fs::exists(plainDir / "rock_dove_feather_0_purple.ply"));
+  EXPECT_TRUE(readFeatherPly((plainDir / "rock_dove_feather_0.ply").string()).layerStack.empty());
 }
