@@ -14,6 +14,7 @@
 #include "core/byte_order_mark.h"
 #include "core/error.h"
 #include "core/math.h"
+#include "scene/scene_variables.h"
 
 namespace columba {
 
@@ -77,8 +78,16 @@ BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& val
   props.tag = "bsdf";
   props.type = "barbulebsdf";
   props.nameParameter = [](const std::string& name) { return "barbule parameter " + name; };
-  for (const auto& [name, text] : given) props.setFromText(name, text);  // a number, a preset, a named index
-  for (const auto& [name, value] : values) props.setFloat(name, value);
+  // A value may stand as $name in a given text (a rod's diameter in `layers`), as in a scene file;
+  // those values set no parameter of their own.
+  std::map<std::string, std::string> asText;
+  for (const auto& [name, value] : values) asText[name] = fmt::format("{:.9g}", value);
+  const SceneVariables variables(asText);
+  for (const auto& [name, text] : given)  // a number, a preset, a named index, layers
+    props.setFromText(name, variables.substitute(text, {"barbule parameter " + name, 0}));
+  const std::vector<std::string> unsubstituted = variables.unusedDefines();
+  for (const auto& [name, value] : values)
+    if (std::find(unsubstituted.begin(), unsubstituted.end(), name) != unsubstituted.end()) props.setFloat(name, value);
   std::optional<BarbuleParameterProblem> odd;
   BarbuleParameters p = readBarbuleParameters(props, odd);
   props.checkAllUsed();
@@ -108,15 +117,19 @@ SpectraFitResult fitSpectra(const SpectraFitSettings& settings) {
   if (!(settings.aperture.halfAngleDeg >= 0.0f && settings.aperture.halfAngleDeg < 45.0f))
     throw std::invalid_argument(
         fmt::format("the aperture's half-angle must lie in [0, 45) degrees, not {:g}", settings.aperture.halfAngleDeg));
-  barbuleParametersWith({}, settings.fixed);  // refuses a bad -D before the first evaluation
-  // A bound the model takes but no barbule has (a thickness in nm where um is meant) is refused
-  // before any evaluation too.
+  // A bad -D is refused before the first evaluation, with the varied parameters at their lower
+  // bounds; a bound the model takes but no barbule has (a thickness in nm where um is meant) too.
+  std::map<std::string, double> lowest;
+  for (const FitParameter& p : settings.parameters) lowest[p.name] = p.lower;
+  barbuleParametersWith(lowest, settings.fixed);
   for (const FitParameter& p : settings.parameters)
     for (double bound : {p.lower, p.upper}) {
       std::map<std::string, std::string> others = settings.fixed;
       others.erase(p.name);
+      std::map<std::string, double> at = lowest;
+      at[p.name] = bound;
       std::optional<BarbuleParameterProblem> odd;
-      barbuleParametersWith({{p.name, bound}}, others, &odd);
+      barbuleParametersWith(at, others, &odd);
       if (odd && odd->parameter == p.name)
         throw std::invalid_argument(fmt::format("{}={:g}:{:g}: {}", p.name, p.lower, p.upper, odd->message));
     }

@@ -23,8 +23,10 @@ std::vector<float> modelSpectra(const BarbuleParameters& parameters, const std::
 // The barbule's parameters with the named ones (b, phi_0, phi_1, mu, H, height, ..., as the scene
 // plug-in spells them) set and the rest at their defaults, read as the plug-in reads them
 // (barbule/parameter_reader.h): `values` numbers, `given` texts as -D gives them (a number, or a
-// name: preset=dove-purple, film_ior=keratin). Throws InputError for an unknown name or values it
-// refuses; values it takes but that are probably a mistake go to `implausible` where given.
+// name: preset=dove-purple, film_ior=keratin). A value named in a text as $name stands there
+// instead (layers="[rods(melanin, $d, 0.15), keratin:0.04] x 9" with d varied). Throws InputError
+// for an unknown name or values it refuses; values it takes but that are probably a mistake go
+// to `implausible` where given.
 BarbuleParameters barbuleParametersWith(const std::map<std::string, double>& values,
                                         const std::map<std::string, std::string>& given = {},
                                         std::optional<BarbuleParameterProblem>* implausible = nullptr);

@@ -242,6 +242,31 @@ TEST(SpectraFit, RecoversTheCrossSectionsExponentFromNoisySpectra) {
   EXPECT_GT(r.fit.profiles[0].upper, 4.0);
 }
 
+TEST(SpectraFit, RecoversARodDiameterNamedAsAVariableInTheLayers) {
+  // A biologist's question: how large are the melanosomes of the rows that make this spectrum?
+  const std::string layers = "[rods(melanin, $d, 0.15), keratin:0.04] x 4";
+  SpectraFitSettings s;
+  s.samples = noisySpecularSpectra(barbuleParametersWith({{"d", 0.1}}, {{"layers", layers}, {"height", "0.1"}}), 7);
+  s.fixed = {{"layers", layers}, {"height", "0.1"}};
+  s.parameters = {parseFitParameter("d=0.06:0.14:0.08")};
+  s.fit.optimizer.maxEvaluations = 80;
+  SpectraFitResult r = fitSpectra(s);
+  std::printf("spectra: rod diameter 0.1 -> %.4f [%.4f, %.4f], %d evaluations\n", r.fit.values[0],
+              r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.evaluations);
+  EXPECT_NEAR(r.fit.values[0], 0.1, 0.003);
+  EXPECT_LT(r.fit.profiles[0].lower, 0.1);
+  EXPECT_GT(r.fit.profiles[0].upper, 0.1);
+  // A $name no varied parameter gives is an error naming it, before any evaluation.
+  s.parameters = {parseFitParameter("height=0.05:0.2")};
+  s.fixed = {{"layers", layers}};
+  try {
+    fitSpectra(s);
+    ADD_FAILURE() << "no error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("$d"), std::string::npos) << e.what();
+  }
+}
+
 // Checked by the fit library, so that Python's fit and fit_spectra refuse what `columba fit` does:
 // they accepted max_evals 0, negative budgets and rises, a name varied twice or also fixed, and
 // negative sample and thread counts.
