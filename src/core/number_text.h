@@ -1,6 +1,7 @@
 #pragma once
-// Strict reading of a number from text: the whole text must be the number (no spaces, no trailing
-// characters) and a floating-point value must be finite. Readers wrap it in their own messages.
+// Reading numbers and lists from text, as every reader of a user's text does: a number strictly
+// (the whole text must be the number, no spaces, no trailing characters; a floating-point value
+// must be finite), text trimmed, lists split, and text shortened for messages.
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -19,6 +20,13 @@ std::optional<T> parseNumber(const std::string& text) {
   if constexpr (std::is_floating_point_v<T>)
     if (!std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+// `text` shortened for a message to its first 60 characters, so that a huge value cannot flood the
+// terminal.
+inline std::string excerpt(const std::string& text) {
+  constexpr size_t kMaxQuoted = 60;
+  return text.size() <= kMaxQuoted ? text : text.substr(0, kMaxQuoted) + "...";
 }
 
 // `text` without the white space around it.

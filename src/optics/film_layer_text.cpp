@@ -13,10 +13,7 @@ namespace {
 
 constexpr int kMaxRepeats = 1000;
 
-// `text` for a message: its first 60 characters.
-std::string quoted(const std::string& text) {
-  return "'" + (text.size() > 60 ? text.substr(0, 60) + "..." : text) + "'";
-}
+std::string quoted(const std::string& text) { return "'" + excerpt(text) + "'"; }
 constexpr float kMaxLayerIndex = 100.0f;
 
 // "N+Ki" as (N, K); nullopt where `text` is not of that form.

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "core/number_text.h"
+
 namespace columba {
 
 namespace {
@@ -12,12 +14,6 @@ bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || 
 
 bool isVariableName(const std::string& name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), isNameChar);
-}
-
-// Scene text quoted in a message, shortened so that a huge attribute cannot flood the terminal.
-std::string excerpt(const std::string& text) {
-  constexpr size_t kMaxQuoted = 60;
-  return text.size() <= kMaxQuoted ? text : text.substr(0, kMaxQuoted) + "...";
 }
 
 }  // namespace
