@@ -6,6 +6,7 @@
 // to_world under which a shape cannot be exact must be refused instead.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -63,23 +64,33 @@ const EmitterShape kShapes[] = {
 struct Estimator {
   const char* name;
   const char* integrator;
+  // Whether it weighs values of the BSDF at directions it did not draw from the BSDF (emitter
+  // sampling alone, the particle tracer): where those values are not square-integrable (a
+  // superellipse's flat faces), its variance is infinite.
+  bool evaluatesOnly;
 };
 
 // max_depth 2 everywhere: emitters seen directly and lit once, the integral `direct` computes.
 const Estimator kEstimators[] = {
     {"direct, emitter sampling",
-     R"(<integrator type="direct"><integer name="emitter_samples" value="1"/><integer name="bsdf_samples" value="0"/></integrator>)"},
+     R"(<integrator type="direct"><integer name="emitter_samples" value="1"/><integer name="bsdf_samples" value="0"/></integrator>)",
+     true},
     {"direct, BSDF sampling",
-     R"(<integrator type="direct"><integer name="emitter_samples" value="0"/><integer name="bsdf_samples" value="1"/></integrator>)"},
+     R"(<integrator type="direct"><integer name="emitter_samples" value="0"/><integer name="bsdf_samples" value="1"/></integrator>)",
+     false},
     {"direct, both",
-     R"(<integrator type="direct"><integer name="emitter_samples" value="1"/><integer name="bsdf_samples" value="1"/></integrator>)"},
+     R"(<integrator type="direct"><integer name="emitter_samples" value="1"/><integer name="bsdf_samples" value="1"/></integrator>)",
+     false},
     {"path, emitter sampling",
-     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="emitter"/></integrator>)"},
+     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="emitter"/></integrator>)",
+     true},
     {"path, BSDF sampling",
-     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="bsdf"/></integrator>)"},
+     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="bsdf"/></integrator>)",
+     false},
     {"path, MIS",
-     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="mis"/></integrator>)"},
-    {"ptracer", R"(<integrator type="ptracer"><integer name="max_depth" value="2"/></integrator>)"},
+     R"(<integrator type="path"><integer name="max_depth" value="2"/><string name="strategy" value="mis"/></integrator>)",
+     false},
+    {"ptracer", R"(<integrator type="ptracer"><integer name="max_depth" value="2"/></integrator>)", true},
 };
 
 const char* const kPerspective = R"(<sensor type="perspective"><float name="fov" value="50"/>
@@ -119,10 +130,17 @@ bool refused(const std::string& xml, std::string& message) {
 }
 
 void checkAgreement(const char* sensorName, const char* sensor, const char* receiverName, const char* receiver,
-                    bool withParticleTracer) {
-  // withParticleTracer: whether the sensor has an importance the particle tracer can reach.
+                    bool withParticleTracer, bool squareIntegrable = true) {
+  // withParticleTracer: whether the sensor has an importance the particle tracer can reach;
+  // squareIntegrable: whether the receiver's values are, so that estimators that only evaluate
+  // them have a finite variance (else they are left out, and so that the receiver, not the
+  // transforms, is what is tested, two shapes under two placements are enough).
   for (const EmitterShape& shape : kShapes)
     for (const Placement& placement : kPlacements) {
+      const std::string shapeName = shape.name, placementName = placement.name;
+      if (!squareIntegrable && ((shapeName != "rectangle" && shapeName != "disk") ||
+                                (placementName != "identity" && placementName != "shear")))
+        continue;
       const std::string where =
           std::string(shape.name) + ", " + placement.name + ", " + receiverName + ", " + sensorName;
       if (shape.needsSimilarity && !placement.similarity) {
@@ -133,7 +151,9 @@ void checkAgreement(const char* sensorName, const char* sensor, const char* rece
         continue;
       }
       std::vector<Estimate> estimates;
+      std::vector<const Estimator*> used;
       for (const Estimator& estimator : kEstimators) {
+        if (!squareIntegrable && estimator.evaluatesOnly) continue;
         if (!withParticleTracer && std::string(estimator.name) == "ptracer") {
           // The scatterometer has no importance to connect light paths to: refused, saying so.
           std::string message;
@@ -143,13 +163,16 @@ void checkAgreement(const char* sensorName, const char* sensor, const char* rece
         }
         estimates.push_back(
             meanLuminanceOverSeeds(sceneXml(estimator, sensor, receiver, shape, placement), kSeeds, 40));
+        used.push_back(&estimator);
       }
       // MIS in `direct` is the least noisy: every other estimator is held against it.
-      const Estimate& reference = estimates[2];
+      const Estimate& reference = estimates[size_t(
+          std::find_if(used.begin(), used.end(), [](const Estimator* e) { return e == &kEstimators[2]; }) -
+          used.begin())];
       EXPECT_GT(reference.mean, 0.0) << where;
       for (size_t k = 0; k < estimates.size(); ++k) {
         EXPECT_LT(standardErrorsApart(estimates[k], reference), kSigmas)
-            << where << ": " << kEstimators[k].name << " " << estimates[k].mean << " +- " << estimates[k].standardError
+            << where << ": " << used[k]->name << " " << estimates[k].mean << " +- " << estimates[k].standardError
             << " against " << reference.mean << " +- " << reference.standardError << " (ratio "
             << estimates[k].mean / reference.mean << ")";
       }
@@ -164,6 +187,17 @@ TEST(EstimatorAgreement, EveryEstimatorAgreesUnderEveryTransformInPerspectiveOnA
 
 TEST(EstimatorAgreement, EveryEstimatorAgreesUnderEveryTransformInPerspectiveOnABarbuleReceiverSlow) {
   checkAgreement("perspective", kPerspective, "barbule", kBarbuleReceiver, true);
+}
+
+TEST(EstimatorAgreement, EveryEstimatorWithFiniteVarianceAgreesInPerspectiveOnASquareBarbuleReceiverSlow) {
+  // A superellipse cross-section: its flat faces make the normal distribution singular as
+  // |phi - phi_face|^-(p-2)/(p-1) about their normals, integrable but, for p > 3, not square-
+  // integrable, so the estimators that only evaluate the BSDF have an infinite variance
+  // (docs/model.md, "Which estimators converge"); those that sample it must still agree.
+  checkAgreement("perspective", kPerspective, "square barbule",
+                 R"(<bsdf type="barbulebsdf"><float name="b" value="0.25"/><float name="mu" value="-0.35"/>
+                      <float name="profile_exponent" value="8"/></bsdf>)",
+                 true, /*squareIntegrable=*/false);
 }
 
 TEST(EstimatorAgreement, EveryEstimatorAgreesUnderEveryTransformInTheScatterometerOnADiffuseReceiverSlow) {
