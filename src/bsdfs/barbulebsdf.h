@@ -92,6 +92,8 @@ class BarbuleBSDF : public BSDF {
     numberedStacksAt_ = std::move(numberedStacksAt);
   }
   void noteValuesGivenByShape(const ShapePointValues& given) const override;
+  // A superellipse's flat faces above p = 3 (docs/model.md, "Which estimators converge").
+  bool hasSingularValues() const override { return model_.parameters().profileExponent > 3.0f; }
 
  private:
   // The model at the point: the cross-section with the point's own b, mu and H where textures or

@@ -20,6 +20,7 @@ class BlendBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return first_->hasPassThrough() || second_->hasPassThrough(); }
   bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
+  bool hasSingularValues() const override { return first_->hasSingularValues() || second_->hasSingularValues(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override {
     first_->noteValuesGivenByShape(given);
     second_->noteValuesGivenByShape(given);

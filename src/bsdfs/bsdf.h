@@ -149,6 +149,10 @@ class BSDF : public Object {
   // leaves without effect there, and throws InputError for a choice it cannot honour (a layer
   // stack it does not have).
   virtual void noteValuesGivenByShape(const ShapePointValues& /*given*/) const {}
+  // True when the BSDF's values are not square-integrable over directions (a barbule whose flat
+  // faces make its normal distribution singular): estimators that only evaluate it, without
+  // sampling it, have an infinite variance (docs/model.md, "Which estimators converge").
+  virtual bool hasSingularValues() const { return false; }
 };
 
 inline float cosTheta(const Vec3& w) { return w.z; }

@@ -20,6 +20,7 @@ class MaskBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return true; }
   bool isDeltaOnly() const override { return nested_->isDeltaOnly(); }
+  bool hasSingularValues() const override { return nested_->hasSingularValues(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override { nested_->noteValuesGivenByShape(given); }
   bool samplesAllItScatters() const override { return nested_->samplesAllItScatters(); }
 

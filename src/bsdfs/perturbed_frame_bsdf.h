@@ -19,6 +19,7 @@ class PerturbedFrameBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const final;
   bool hasPassThrough() const final { return nested_->hasPassThrough(); }
   bool isDeltaOnly() const final { return nested_->isDeltaOnly(); }
+  bool hasSingularValues() const final { return nested_->hasSingularValues(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const final { nested_->noteValuesGivenByShape(given); }
   bool samplesAllItScatters() const final { return nested_->samplesAllItScatters(); }
 

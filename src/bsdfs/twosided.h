@@ -19,6 +19,7 @@ class TwoSidedBSDF : public BSDF {
   Spectrum passThrough(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl) const override;
   bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
   bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
+  bool hasSingularValues() const override { return front_->hasSingularValues() || back_->hasSingularValues(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override {
     front_->noteValuesGivenByShape(given);
     back_->noteValuesGivenByShape(given);

@@ -13,6 +13,9 @@ class DirectIntegrator : public Integrator {
       : emitterSamples_(emitterSamples), bsdfSamples_(bsdfSamples), hideEmitters_(hideEmitters) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
+  std::string weighsBSDFValuesAlone() const override {
+    return bsdfSamples_ == 0 && emitterSamples_ > 0 ? "direct with bsdf_samples 0" : "";
+  }
 
  private:
   int emitterSamples_, bsdfSamples_;

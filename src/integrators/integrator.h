@@ -1,5 +1,7 @@
 #pragma once
 // The integrator interface: radiance arriving along a camera ray at the path's wavelengths.
+#include <string>
+
 #include "core/properties.h"
 #include "core/ray.h"
 #include "core/spectrum.h"
@@ -16,6 +18,9 @@ class Integrator : public Object {
                             uint64_t& rays) const = 0;
   // Whether it follows light through participating media; the others render surfaces only.
   virtual bool tracesMedia() const { return false; }
+  // What it is, where it weighs BSDF values at directions it did not sample from the BSDF, alone
+  // (emitter sampling without MIS): "" where it does not.
+  virtual std::string weighsBSDFValuesAlone() const { return ""; }
 };
 
 // Reads the pass parameters Mitsuba's sampling integrators take. `samples_per_pass` only splits

@@ -29,6 +29,9 @@ class PathIntegrator : public Integrator {
         emitterCandidates_(emitterCandidates) {}
   Spectrum radiance(const Scene& scene, const Ray& ray, Sampler& sampler, const Wavelengths& wl,
                     uint64_t& rays) const override;
+  std::string weighsBSDFValuesAlone() const override {
+    return strategy_ == Strategy::EmitterOnly ? "path with strategy emitter" : "";
+  }
   int maxDepth() const { return maxDepth_; }
   int rrDepth() const { return rrDepth_; }
   bool hidesEmitters() const { return hideEmitters_; }

@@ -70,6 +70,7 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
     warn(source,
          "the scene's media have no effect: its integrator renders surfaces only (as Mitsuba's does); "
          "use volpath or volpathmis");
+  warnOfSingularValuesWeighedAlone(source);
   // Before Embree is set up: it needs the sensor and the emitters only.
   if (particleTracer_) particleTracer_->checkScene(*this);
 
@@ -103,6 +104,20 @@ Scene::Scene(const ParsedScene& parsed, const SourceLocation& source) {
 const Integrator& Scene::integrator() const {
   if (!integrator_) throw std::logic_error("the scene is rendered by ptracer, which traces no camera paths");
   return *integrator_;
+}
+
+void Scene::warnOfSingularValuesWeighedAlone(const SourceLocation& source) const {
+  const std::string integrator = particleTracer_ ? "ptracer" : integrator_->weighsBSDFValuesAlone();
+  if (integrator.empty()) return;
+  const bool singular = std::any_of(shapes_.begin(), shapes_.end(), [](const std::shared_ptr<Shape>& shape) {
+    return shape->anyBSDF([](const BSDF& bsdf) { return bsdf.hasSingularValues(); });
+  });
+  if (singular)
+    warn(source, "the integrator (" + integrator +
+                     ") weighs BSDF values at directions it does not sample from the BSDF, and a barbule BSDF with a "
+                     "profile_exponent above 3 has values whose square is not integrable: the image converges slowly "
+                     "and from below (docs/model.md, \"Which estimators converge\"); an integrator with MIS (the "
+                     "default path) or BSDF sampling converges");
 }
 
 Scene::~Scene() {

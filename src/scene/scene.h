@@ -91,6 +91,10 @@ class Scene {
   // Every shape, when the scene is intersected shape by shape; otherwise empty.
   std::vector<const AnalyticShape*> testedInTurn_;
   std::optional<SurfaceInteraction> intersectInTurn(const Ray& ray) const;
+  // Warns when the integrator weighs BSDF values alone (emitter sampling without MIS, ptracer)
+  // and some shape's BSDF has values that are not square-integrable: its estimate then has an
+  // infinite variance.
+  void warnOfSingularValuesWeighedAlone(const SourceLocation& source) const;
   const std::vector<const Emitter*>& emittersOf(EmitterSet set) const {
     return set == EmitterSet::All ? allEmitters_ : emittersBesideBSDFSamples_;
   }

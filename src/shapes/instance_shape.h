@@ -22,6 +22,7 @@ class InstanceShape : public Shape {
   // `hit.geomID` is the shape hit within the group (Embree's geomID under instID[0]).
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   size_t primitiveCount() const override { return group_->primitiveCount(); }
+  bool anyBSDF(const std::function<bool(const BSDF&)>& test) const override { return group_->anyBSDF(test); }
 
  private:
   std::shared_ptr<const ShapeGroup> group_;

@@ -3,6 +3,7 @@
 // geometry with its own exact intersector) and turns Embree's hits into interactions.
 #include <embree3/rtcore.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include "bsdfs/bsdf.h"
@@ -114,6 +115,9 @@ class Shape : public Object {
     if (!interior && !exterior) return current;
     return dot(ng, d) > 0.0f ? exterior.get() : interior.get();
   }
+
+  // Whether the BSDF of this shape, or of any shape it places (an instance's group), passes `test`.
+  virtual bool anyBSDF(const std::function<bool(const BSDF&)>& test) const { return bsdf && test(*bsdf); }
 
   std::shared_ptr<BSDF> bsdf;
   std::shared_ptr<Emitter> emitter;            // area emitter, or null

@@ -4,6 +4,8 @@ Mitsuba 3: as Mitsuba 3's `shapegroup`.
 */
 #include "shapes/shape_group.h"
 
+#include <algorithm>
+
 #include <stdexcept>
 #include "emitters/emitter.h"
 #include "shapes/instance_shape.h"
@@ -39,6 +41,10 @@ size_t ShapeGroup::primitiveCount() const {
   size_t n = 0;
   for (const auto& s : shapes_) n += s->primitiveCount();
   return n;
+}
+
+bool ShapeGroup::anyBSDF(const std::function<bool(const BSDF&)>& test) const {
+  return std::any_of(shapes_.begin(), shapes_.end(), [&](const auto& s) { return s->anyBSDF(test); });
 }
 
 std::shared_ptr<Object> makeShapeGroup(const Properties& props) {

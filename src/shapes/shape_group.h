@@ -4,6 +4,7 @@
 // places in the scene. As in Mitsuba, a group holds no emitters, groups or instances.
 #include <embree3/rtcore.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -25,6 +26,8 @@ class ShapeGroup : public Object {
   // The shape with Embree geometry ID `geomID` in the group's scene.
   const Shape& shape(unsigned geomID) const { return *shapes_[geomID]; }
   size_t primitiveCount() const;
+  // Whether the BSDF of any of the group's shapes passes `test`.
+  bool anyBSDF(const std::function<bool(const BSDF&)>& test) const;
 
  private:
   std::vector<std::shared_ptr<Shape>> shapes_;  // indexed by geometry ID in the group's scene
