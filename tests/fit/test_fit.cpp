@@ -227,6 +227,18 @@ TEST(SpectraFit, RecoversTheFilmThicknessFromNoisySpectra) {
               r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.values[1], r.fit.evaluations);
 }
 
+namespace {
+// Fits the one varied parameter of `s` and expects `truth` within `tolerance` and inside its interval.
+void expectOneParameterRecovered(const SpectraFitSettings& s, const char* what, double truth, double tolerance) {
+  SpectraFitResult r = fitSpectra(s);
+  std::printf("spectra: %s %g -> %.4f [%.4f, %.4f], %d evaluations\n", what, truth, r.fit.values[0],
+              r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.evaluations);
+  EXPECT_NEAR(r.fit.values[0], truth, tolerance) << what;
+  EXPECT_LT(r.fit.profiles[0].lower, truth) << what;
+  EXPECT_GT(r.fit.profiles[0].upper, truth) << what;
+}
+}  // namespace
+
 TEST(SpectraFit, RecoversTheCrossSectionsExponentFromNoisySpectra) {
   // The shape of the cross-section, not only its film, leaves its mark on specular spectra: a
   // squarer barbule concentrates its normals.
@@ -234,12 +246,7 @@ TEST(SpectraFit, RecoversTheCrossSectionsExponentFromNoisySpectra) {
   s.samples = noisySpecularSpectra(barbuleParametersWith({{"profile_exponent", 4.0}}), 5);
   s.parameters = {parseFitParameter("profile_exponent=2:10:3")};
   s.fit.optimizer.maxEvaluations = 120;
-  SpectraFitResult r = fitSpectra(s);
-  std::printf("spectra: profile_exponent 4 -> %.4f [%.4f, %.4f], %d evaluations\n", r.fit.values[0],
-              r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.evaluations);
-  EXPECT_NEAR(r.fit.values[0], 4.0, 0.1);
-  EXPECT_LT(r.fit.profiles[0].lower, 4.0);
-  EXPECT_GT(r.fit.profiles[0].upper, 4.0);
+  expectOneParameterRecovered(s, "profile_exponent", 4.0, 0.1);
 }
 
 TEST(SpectraFit, RecoversARodDiameterNamedAsAVariableInTheLayers) {
@@ -250,12 +257,7 @@ TEST(SpectraFit, RecoversARodDiameterNamedAsAVariableInTheLayers) {
   s.fixed = {{"layers", layers}, {"height", "0.1"}};
   s.parameters = {parseFitParameter("d=0.06:0.14:0.08")};
   s.fit.optimizer.maxEvaluations = 80;
-  SpectraFitResult r = fitSpectra(s);
-  std::printf("spectra: rod diameter 0.1 -> %.4f [%.4f, %.4f], %d evaluations\n", r.fit.values[0],
-              r.fit.profiles[0].lower, r.fit.profiles[0].upper, r.fit.evaluations);
-  EXPECT_NEAR(r.fit.values[0], 0.1, 0.003);
-  EXPECT_LT(r.fit.profiles[0].lower, 0.1);
-  EXPECT_GT(r.fit.profiles[0].upper, 0.1);
+  expectOneParameterRecovered(s, "rod diameter", 0.1, 0.003);
   // A $name no varied parameter gives is an error naming it, before any evaluation.
   s.parameters = {parseFitParameter("height=0.05:0.2")};
   s.fixed = {{"layers", layers}};
