@@ -43,9 +43,8 @@ LayerMaterial material(const std::string& index, const std::string& piece) {
     throw std::invalid_argument("layer " + quoted(piece) + ": unknown index '" + index +
                                 "' (a number, a named index such as air, keratin, melanin, or N+Ki)");
   }
-  // Far beyond any material of a feather, or a metal (n and k below 10 over 300-830 nm), and where
-  // the transfer matrices of a thick stack would overflow. The text's indices are constants or
-  // Cauchy laws, largest at one end of the range.
+  // Far beyond any material of a feather, or a metal (n and k below 10 over 300-830 nm): a typing
+  // mistake. The text's indices are constants or Cauchy laws, largest at one end of the range.
   if (!(m.n(kSpectralMin) <= kMaxLayerIndex && m.n(kLambdaMax) <= kMaxLayerIndex && m.k <= kMaxLayerIndex))
     throw std::invalid_argument("layer " + quoted(piece) + ": an index above " + std::to_string(int(kMaxLayerIndex)) +
                                 " (n or k) is no material's");

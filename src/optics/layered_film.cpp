@@ -25,17 +25,6 @@ std::complex<double> FilmLayer::index(float lambdaNm) const {
   return std::sqrt(f * a * a + (1.0 - f) * b * b);  // the root with k >= 0
 }
 
-std::vector<FilmLayer> FilmStack::expanded() const {
-  if (runs.empty()) return layers;
-  std::vector<FilmLayer> all;
-  auto first = layers.begin();
-  for (const LayerRun& run : runs) {
-    for (int k = 0; k < run.times; ++k) all.insert(all.end(), first, first + std::ptrdiff_t(run.count));
-    first += std::ptrdiff_t(run.count);
-  }
-  return all;
-}
-
 LayeredFilm::LayeredFilm(const RefractiveIndex& cortex, float nOutside, float cortexThicknessUm, const FilmStack& below,
                          const Wavelengths& wl) {
   for (int k = 0; k < kSpectrumSamples; ++k) {

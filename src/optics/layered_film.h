@@ -55,8 +55,6 @@ struct FilmStack {
   std::vector<LayerRun> runs;  // covering `layers` in order; empty where nothing repeats
 
   bool empty() const { return layers.empty(); }
-  // Every layer, the repeats written out.
-  std::vector<FilmLayer> expanded() const;
 };
 
 class LayeredFilm {

@@ -120,9 +120,9 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     gather(ply.layerStack, ply.barbIndices);
   }
   layerStacks_ = std::move(ply.layerStack);
-  largestLayerStack_ = ply.largestLayerStack;
-  largestLayerStackAt_ = {ply.path, ply.largestLayerStackLine};
-  largestLayerStackVertex_ = ply.largestLayerStackVertex;
+  given_.largestLayerStack = ply.largestLayerStack;
+  given_.largestLayerStackAt = {ply.path, ply.largestLayerStackLine};
+  given_.largestLayerStackElement = "vertex " + std::to_string(ply.largestLayerStackVertex);
   if (ply.hasBarbuleValues()) {
     // In the model's terms and interleaved, so that a hit reads its parameters from one place.
     barbuleValues_.resize(ply.positions.size());
@@ -132,7 +132,7 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     });
   }
 
-  givenEverywhere_.add(kBarbuleSpacingAttribute);
+  given_.everywhere.add(kBarbuleSpacingAttribute);
   bool zeroTiltSegment = false, zeroThicknessSegment = false;
   for (size_t i = 0; i + 1 < barbuleValues_.size(); ++i) {
     if (i % kBarbVertices == kBarbSegments) continue;  // the last vertex of a barb starts no segment
@@ -140,8 +140,8 @@ FeatherShape::FeatherShape(FeatherPlyData ply, const FeatherShapeParams& params)
     zeroTiltSegment |= a.mu == 0.0f && b.mu == 0.0f;
     zeroThicknessSegment |= a.height == 0.0f && b.height == 0.0f;
   }
-  if (!zeroTiltSegment) givenEverywhere_.add(kBarbuleTiltAttribute);
-  if (!zeroThicknessSegment) givenEverywhere_.add(kCortexThicknessAttribute);
+  if (!zeroTiltSegment) given_.everywhere.add(kBarbuleTiltAttribute);
+  if (!zeroThicknessSegment) given_.everywhere.add(kCortexThicknessAttribute);
 
   const float scale = linearScale(toWorld);
   const float halfWidth = 0.5f * params.barbWidth * scale;
@@ -269,12 +269,8 @@ size_t FeatherShape::memoryBytes() const {
 }
 
 ShapePointValues FeatherShape::givenValues(const std::string& name) const {
-  ShapePointValues given;
+  ShapePointValues given = given_;
   given.shape = name;
-  given.everywhere = givenEverywhere_;
-  given.largestLayerStack = largestLayerStack_;
-  given.largestLayerStackAt = largestLayerStackAt_;
-  given.largestLayerStackElement = "vertex " + std::to_string(largestLayerStackVertex_);
   return given;
 }
 

@@ -107,12 +107,9 @@ class FeatherShape : public Shape {
   static constexpr BarbuleValues kDefaultBarbuleValues{modelSpacingFromFile(kDefaultFileSpacing),
                                                        modelTiltFromFile(kDefaultFileTilt), kDefaultCortexThickness};
   std::vector<BarbuleValues> barbuleValues_;  // per vertex, or empty when the file has none
-  SurfaceAttributeSet givenEverywhere_;
+  ShapePointValues given_;                    // all but the name givenValues() gives it
   // Per vertex, the barbule BSDF's layer stack (the file's `stack`), or empty when it has none.
   std::vector<uint8_t> layerStacks_;
-  int largestLayerStack_ = -1;
-  SourceLocation largestLayerStackAt_;
-  size_t largestLayerStackVertex_ = 0;
   float radius_ = 0.0f, ramusHalfAngle_ = 0.0f;
   float cover_ = 0.0f, cosSpan_ = 1.0f, sinSpan_ = 0.0f;
 };

@@ -22,6 +22,18 @@ LayerStack inAir(const std::vector<FilmLayer>& layers, float lambdaNm) {
   return stack;
 }
 
+// Every layer of `stack`, its repeats written out (each run's layers taken its count of times).
+std::vector<FilmLayer> expanded(const FilmStack& stack) {
+  if (stack.runs.empty()) return stack.layers;
+  std::vector<FilmLayer> all;
+  auto first = stack.layers.begin();
+  for (const LayerRun& run : stack.runs) {
+    for (int k = 0; k < run.times; ++k) all.insert(all.end(), first, first + std::ptrdiff_t(run.count));
+    first += std::ptrdiff_t(run.count);
+  }
+  return all;
+}
+
 double reflectance(const std::vector<FilmLayer>& layers, float lambdaNm, double theta) {
   const MultilayerResponse r = multilayerResponse(inAir(layers, lambdaNm), theta, lambdaNm);
   return 0.5 * (r.rs + r.rp);
@@ -112,7 +124,7 @@ TEST(RodRow, TheDefaultSlicingHasConverged) {
 }
 
 TEST(FilmLayerText, RepeatsAndRowsExpandToTheirLayers) {
-  const std::vector<FilmLayer> repeated = parseFilmLayers("[melanin:0.2, keratin:0.15] x 3, air:0.1").expanded();
+  const std::vector<FilmLayer> repeated = expanded(parseFilmLayers("[melanin:0.2, keratin:0.15] x 3, air:0.1"));
   const std::vector<FilmLayer> written =
       parseFilmLayers("melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, melanin:0.2, keratin:0.15, air:0.1")
           .layers;
@@ -121,12 +133,12 @@ TEST(FilmLayerText, RepeatsAndRowsExpandToTheirLayers) {
     EXPECT_EQ(repeated[i].thicknessUm, written[i].thicknessUm);
     EXPECT_EQ(repeated[i].index(500.0f), written[i].index(500.0f)) << i;
   }
-  const std::vector<FilmLayer> rows = parseFilmLayers("[rods(melanin, 0.11, 0.15), keratin:0.04] x 9").expanded();
+  const std::vector<FilmLayer> rows = expanded(parseFilmLayers("[rods(melanin, 0.11, 0.15), keratin:0.04] x 9"));
   const std::vector<FilmLayer> direct = nineRows(kRodRowSlices);
   ASSERT_EQ(rows.size(), direct.size());
   for (size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i].index(430.0f), direct[i].index(430.0f)) << i;
   // Repeats within repeats.
-  const std::vector<FilmLayer> nested = parseFilmLayers("[[melanin:0.2, air:0.05] x 2, keratin:0.1] x 3").expanded();
+  const std::vector<FilmLayer> nested = expanded(parseFilmLayers("[[melanin:0.2, air:0.05] x 2, keratin:0.1] x 3"));
   const std::vector<FilmLayer> out =
       parseFilmLayers(
           "melanin:0.2, air:0.05, melanin:0.2, air:0.05, keratin:0.1, melanin:0.2, air:0.05, melanin:0.2, air:0.05, "
@@ -184,7 +196,7 @@ TEST(FilmLayerText, ARepeatingStacksFilmIsItsLayersWrittenOut) {
   for (const char* text : {"[rods(melanin, 0.11, 0.15), keratin:0.04] x 9", "air:0.1, [melanin:0.08, keratin:0.1] x 5",
                            "[[melanin:0.2, air:0.05] x 2, keratin:0.1] x 3, air:0.2"}) {
     const FilmStack repeating = parseFilmLayers(text);
-    const FilmStack written{repeating.expanded(), {}};
+    const FilmStack written{expanded(repeating), {}};
     const LayeredFilm a(RefractiveIndex::keratin(), 1.000277f, 0.6f, repeating, wl);
     const LayeredFilm b(RefractiveIndex::keratin(), 1.000277f, 0.6f, written, wl);
     for (float cosine : {1.0f, 0.6f, 0.1f}) {
