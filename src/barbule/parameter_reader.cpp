@@ -55,6 +55,18 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   p.mu = props.getFloat("mu", p.mu);
   p.H = props.getFloat("H", p.H);
   p.profileExponent = props.getFloat("profile_exponent", p.profileExponent);
+  readBarbuleFilm(props, p);
+  if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
+
+  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
+    bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
+    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
+  }
+  implausible = findImplausibility(p);
+  return p;
+}
+
+void readBarbuleFilm(const Properties& props, BarbuleParameters& p) {
   p.height = props.getFloat("height", p.height);
   if (props.has("film_cauchy_a") || props.has("film_cauchy_b")) {
     if (props.has("film_ior"))
@@ -66,15 +78,7 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   RefractiveIndex ext = readIOR(props, "ext_ior", "air", false);
   if (!ext.isConstant()) throw props.error("ext_ior", "the surrounding medium needs a constant index");
   p.extIOR = ext.a;
-  if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
   if (props.has("layers")) p.layersBelow = readLayerStack(props, "layers");
-
-  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
-    bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
-    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
-  }
-  implausible = findImplausibility(p);
-  return p;
 }
 
 std::string layerStackParameter(int index) { return index == 0 ? "layers" : "layers_" + std::to_string(index); }

@@ -20,6 +20,9 @@ namespace columba {
 // (props.error) for values the model cannot take. Values it takes that are probably a mistake
 // are returned in `implausible` for the caller to warn about in its own way.
 BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<BarbuleParameterProblem>& implausible);
+// The film's part of them alone, into `p`: height, film_ior or film_cauchy_a and film_cauchy_b,
+// ext_ior, layers (for barbule BSDFs with another cross-section); unchecked, as findProblem checks.
+void readBarbuleFilm(const Properties& props, BarbuleParameters& p);
 
 // The scene parameter of layer stack `index`: "layers" for 0, else "layers_<index>".
 std::string layerStackParameter(int index);

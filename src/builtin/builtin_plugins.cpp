@@ -1,5 +1,6 @@
 #include "builtin/builtin_plugins.h"
 
+#include "bsdfs/barbulearms.h"
 #include "bsdfs/barbulebsdf.h"
 #include "bsdfs/blendbsdf.h"
 #include "bsdfs/bumpmap.h"
@@ -113,6 +114,7 @@ const PluginRegistry& builtinPlugins() {
     r.add("bsdf", "blendbsdf", makeBlendBSDF);
     r.add("bsdf", "normalmap", makeNormalMapBSDF);
     r.add("bsdf", "bumpmap", makeBumpMapBSDF);
+    r.add("bsdf", "barbulearms", makeBarbuleArmsBSDF);
     r.add("bsdf", "barbulebsdf", makeBarbuleBSDF);
     r.add("bsdf", "barbulebsdfev", makeBarbuleBSDFEv);
     r.add("shape", "obj", makeObjShape);
