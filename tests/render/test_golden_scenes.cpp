@@ -89,6 +89,8 @@ class GoldenScenes : public TempDirTest {
     for (const char* name : {"neck_direction1", "neck_direction2", "neck_omnidirectional"})
       list.push_back({name, source / "scenes" / (std::string(name) + ".xml"), neckView});
     list.push_back({"tiny_feather", source / "examples" / "tiny_feather.xml", {{"res", "32"}, {"spp", "8"}}});
+    list.push_back(
+        {"three_mirrors", source / "examples" / "three_mirrors.xml", {{"res", "32"}, {"spp", "16"}, {"view", "60"}}});
     writeRockDove(RockDoveOptions{}, path("rock_dove"));
     const Defines birdView = {
         {"bird", path("rock_dove/rock_dove.xml")}, {"width", "40"}, {"height", "30"}, {"spp", "8"}};
