@@ -17,6 +17,7 @@ try:
         GREEN_CORTEX_THICKNESS,
         PURPLE_BELOW,
         PURPLE_CORTEX_THICKNESS,
+        BarbuleArmsBSDF,
         BarbuleBSDF,
         InputError,
         Scene,
@@ -49,7 +50,7 @@ from . import _columba  # noqa: E402
 
 __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image", "read_cones",
-    "BarbuleBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
+    "BarbuleBSDF", "BarbuleArmsBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "multilayer", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
     "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
     "observers", "observer", "cone_catches", "colour_distance", "human_colour_difference",

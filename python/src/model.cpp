@@ -16,6 +16,7 @@
 #include "barbule/layer_stacks.h"
 #include "barbule/measurement.h"
 #include "barbule/parameter_reader.h"
+#include "bsdfs/barbulearms.h"
 #include "bsdfs/barbulebsdf.h"
 #include "core/error.h"
 #include "feather/feather_generator.h"
@@ -164,6 +165,52 @@ class PyBarbule {
   BarbuleBSDF bsdf_;
 };
 
+// barbulearms, from keyword arguments read as a scene's <bsdf type="barbulearms"> is.
+class PyArms {
+ public:
+  PyArms(const py::object& armTilts, const py::object& b, const py::object& profileExponent, const py::object& mu,
+         const py::object& H, const py::object& height, const py::object& filmIOR, const py::object& extIOR,
+         const py::object& layers) {
+    Properties props;
+    props.tag = "bsdf";
+    props.type = "barbulearms";
+    if (py::isinstance<py::str>(armTilts)) {
+      props.setString("arm_tilts", armTilts.cast<std::string>());
+    } else {
+      std::string text;
+      for (double tilt : armTilts.cast<std::vector<double>>())
+        text += (text.empty() ? "" : ", ") + fmt::format("{}", tilt);
+      props.setString("arm_tilts", text);
+    }
+    auto take = [&](const char* name, const py::object& value) {
+      if (!value.is_none()) props.setFloat(name, value.cast<float>());
+    };
+    take("b", b);
+    take("profile_exponent", profileExponent);
+    take("mu", mu);
+    take("H", H);
+    take("height", height);
+    if (!filmIOR.is_none()) {
+      if (py::isinstance<py::str>(filmIOR))
+        props.setString("film_ior", filmIOR.cast<std::string>());
+      else
+        props.setFloat("film_ior", filmIOR.cast<float>());
+    }
+    if (!extIOR.is_none()) {
+      if (py::isinstance<py::str>(extIOR))
+        props.setString("ext_ior", extIOR.cast<std::string>());
+      else
+        props.setFloat("ext_ior", extIOR.cast<float>());
+    }
+    if (!layers.is_none()) props.setString("layers", layers.cast<std::string>());
+    bsdf_ = std::static_pointer_cast<BarbuleArmsBSDF>(makeBarbuleArmsBSDF(props));
+  }
+  const BarbuleArmsBSDF& bsdf() const { return *bsdf_; }
+
+ private:
+  std::shared_ptr<BarbuleArmsBSDF> bsdf_;
+};
+
 // N x 3 directions.
 FloatArray directions(const py::array& input, const char* name) {
   FloatArray a = FloatArray::ensure(input);
@@ -231,8 +278,9 @@ void sameCount(const FloatArray& a, const FloatArray& b, const char* na, const c
                           std::to_string(a.shape(0)) + " and " + std::to_string(b.shape(0)) + ")");
 }
 
-py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn,
-                             const py::array& wlIn) {
+// Any wrapper whose bsdf() is the BSDF: barbulebsdf's and barbulearms'.
+template <typename Wrapper>
+py::array_t<float> evalArray(const Wrapper& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
   sameCount(wi, wo, "wi", "wo");
   py::ssize_t n = wi.shape(0);
@@ -245,8 +293,8 @@ py::array_t<float> evalArray(const PyBarbule& self, const py::array& wiIn, const
   return out;
 }
 
-py::array_t<float> pdfArray(const PyBarbule& self, const py::array& wiIn, const py::array& woIn,
-                            const py::array& wlIn) {
+template <typename Wrapper>
+py::array_t<float> pdfArray(const Wrapper& self, const py::array& wiIn, const py::array& woIn, const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi"), wo = directions(woIn, "wo");
   sameCount(wi, wo, "wi", "wo");
   py::ssize_t n = wi.shape(0);
@@ -259,7 +307,8 @@ py::array_t<float> pdfArray(const PyBarbule& self, const py::array& wiIn, const 
   return out;
 }
 
-py::dict sampleArray(const PyBarbule& self, const py::array& wiIn, const py::array& u1In, const py::array& u2In,
+template <typename Wrapper>
+py::dict sampleArray(const Wrapper& self, const py::array& wiIn, const py::array& u1In, const py::array& u2In,
                      const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi");
   py::ssize_t n = wi.shape(0);
@@ -336,7 +385,8 @@ py::array_t<float> coverageArray(const PyBarbule& self, const py::array& wiIn) {
   return out;
 }
 
-py::array_t<float> passThroughArray(const PyBarbule& self, const py::array& wiIn, const py::array& wlIn) {
+template <typename Wrapper>
+py::array_t<float> passThroughArray(const Wrapper& self, const py::array& wiIn, const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi");
   py::ssize_t n = wi.shape(0);
   WavelengthArg wl = wavelengths(wlIn, n);
@@ -580,15 +630,15 @@ void bindModel(py::module_& m) {
                                d["profile_exponent"] = decimal(p.profileExponent);
                                return d;
                              })
-      .def("eval", &evalArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),
+      .def("eval", &evalArray<PyBarbule>, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),
            "f(wi, wo) |cos wo| per wavelength (the scene plug-in's eval)")
-      .def("pdf", &pdfArray, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
-      .def("sample", &sampleArray, py::arg("wi"), py::arg("u1"), py::arg("u2"), py::arg("wavelengths"),
+      .def("pdf", &pdfArray<PyBarbule>, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
+      .def("sample", &sampleArray<PyBarbule>, py::arg("wi"), py::arg("u1"), py::arg("u2"), py::arg("wavelengths"),
            "Samples wo from wi: u1 (N,) picks the lobe, u2 (N, 2) drives it")
       .def("eval_lobes", &lobesArray, py::arg("omega_i"), py::arg("omega_o"), py::arg("wavelengths"),
            "The R and TRT lobes f(omega_i, omega_o) without cosine")
       .def("coverage", &coverageArray, py::arg("omega_i"), "r(omega_i); T = 1 - r")
-      .def("pass_through", &passThroughArray, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight")
+      .def("pass_through", &passThroughArray<PyBarbule>, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight")
       .def(
           "scatterometer_image",
           [](const PyBarbule& s, float theta, float phi, int resolution, int supersampling) {
@@ -616,6 +666,35 @@ void bindModel(py::module_& m) {
             return lobeSpectraDict(s, theta, phi, lambdas, lobeReflectance);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none());
+
+  py::class_<PyArms>(m, "BarbuleArmsBSDF",
+                     "Barbules whose cross-section is a chain of flat arms (barbulearms): arm_tilts in degrees "
+                     "(a string '-30, 0, 30' or a sequence). Directions as BarbuleBSDF's.")
+      .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
+                    const py::object&, const py::object&, const py::object&, const py::object&>(),
+           py::kw_only(), py::arg("arm_tilts"), py::arg("b") = py::none(), py::arg("profile_exponent") = py::none(),
+           py::arg("mu") = py::none(), py::arg("H") = py::none(), py::arg("height") = py::none(),
+           py::arg("film_ior") = py::none(), py::arg("ext_ior") = py::none(), py::arg("layers") = py::none())
+      .def_property_readonly(
+          "spacing", [](const PyArms& s) { return s.bsdf().geometry().spacing(); },
+          "H as used: the given spacing, or the contact spacing where that is larger")
+      .def("eval", &evalArray<PyArms>, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"),
+           "f(wi, wo) |cos wo| per wavelength (the scene plug-in's eval)")
+      .def("pdf", &pdfArray<PyArms>, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
+      .def("sample", &sampleArray<PyArms>, py::arg("wi"), py::arg("u1"), py::arg("u2"), py::arg("wavelengths"),
+           "Samples wo from wi: u1 (N,) picks the offset across a period, u2 (N, 2) the longitudinal angle")
+      .def(
+          "coverage",
+          [](const PyArms& s, const py::array& wiIn) {
+            FloatArray wi = directions(wiIn, "omega_i");
+            py::array_t<float> out(wi.shape(0));
+            float* o = out.mutable_data();
+            py::gil_scoped_release release;
+            for (py::ssize_t i = 0; i < wi.shape(0); ++i) o[i] = s.bsdf().coverage(row(wi, i));
+            return out;
+          },
+          py::arg("omega_i"), "The share of light from omega_i meeting a film-coated side; T = 1 - coverage")
+      .def("pass_through", &passThroughArray<PyArms>, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight");
 
   m.def("presets", [] {
     py::dict d;

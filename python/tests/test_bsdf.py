@@ -260,3 +260,30 @@ def test_a_published_stack_is_named_and_peaks_where_it_was_measured():
     plain = columba.BarbuleBSDF(preset="dove-green").specular_spectra(20.0)
     stacked = columba.BarbuleBSDF(preset="dove-green", layers="parotia-occipital").specular_spectra(20.0)
     assert np.max(np.abs(stacked["R"] - plain["R"])) > 0.01
+
+
+def test_barbules_of_arms_sample_as_they_evaluate_and_one_arm_covers_its_width():
+    roof = columba.BarbuleArmsBSDF(arm_tilts="-30, 0, 30", b=0.2, profile_exponent=2.5, height=0.18,
+                                   layers="melanin:0.3")
+    assert roof.spacing > 5.0  # packed at contact: three arms of half-length 1 side by side
+    n = 2000
+    rng = np.random.default_rng(8)
+    wi = directions(n, 9)
+    wl = rng.uniform(380, 780, size=(n, 4)).astype(np.float32)
+    s = roof.sample(wi, rng.random(n, dtype=np.float32), rng.random((n, 2), dtype=np.float32), wl)
+    scattered = s["valid"] & ~s["pass_through"]
+    assert scattered.sum() > n // 2
+    wo = s["wo"][scattered]
+    # A sample's density is pdf() and its weight eval over it, at every wavelength.
+    pdf = roof.pdf(wi[scattered], wo, wl[scattered])
+    np.testing.assert_allclose(s["pdf"][scattered], pdf, rtol=1e-6)
+    f = roof.eval(wi[scattered], wo, wl[scattered])
+    np.testing.assert_allclose(s["weight"][scattered], f / pdf[:, None], rtol=1e-5)
+    # Coverage and pass-through are complements; one flat arm of half-length 1 seen along the
+    # vane normal covers 2 of every H.
+    cover = roof.coverage(wi)
+    np.testing.assert_allclose(roof.pass_through(wi, wl)[:, 0], 1 - cover, atol=1e-6)
+    one = columba.BarbuleArmsBSDF(arm_tilts=[0], H=8.0, profile_exponent=4)
+    assert one.coverage(np.array([[0.0, 0.0, 1.0]]))[0] == pytest.approx(2.0 / 8.0, abs=1e-6)
+    with pytest.raises(ValueError, match="arm_tilts"):
+        columba.BarbuleArmsBSDF(arm_tilts="0, 95")
