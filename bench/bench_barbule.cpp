@@ -109,19 +109,20 @@ void BM_BarbuleEvalOverrides(benchmark::State& state) {
 }
 BENCHMARK(BM_BarbuleEvalOverrides);
 
-// Barbules of three arms (a roof at the parotia's angles, 0.1 thick, exponent 4, packed at
-// contact): eval, sample, and the pass-through, which follows lines across a period.
-BarbuleArmsBSDF roofBSDF() {
+// Barbules of three arms (a roof at the parotia's angles, semi-axis 0.1, exponent 4), packed at
+// contact or (sample's argument) spaced H apart, so that light also passes between them: eval,
+// sample, and the pass-through, which follows lines across a period.
+BarbuleArmsBSDF roofBSDF(double H = 0.0) {
   BarbuleParameters film;
   film.height = 0.58f;
   film.profileExponent = 4.0f;
   const double degree = kPiDouble / 180.0;
-  return BarbuleArmsBSDF(ArmedCrossSection({-30.0 * degree, 0.0, 30.0 * degree}, 0.1, 4.0, 0.0, 0.0), film);
+  return BarbuleArmsBSDF(ArmedCrossSection({-30.0 * degree, 0.0, 30.0 * degree}, 0.1, 4.0, 0.0, H), film);
 }
 void BM_BarbuleArmsEval(benchmark::State& state) { timeEval(state, roofBSDF()); }
 BENCHMARK(BM_BarbuleArmsEval);
-void BM_BarbuleArmsSample(benchmark::State& state) { timeSample(state, roofBSDF()); }
-BENCHMARK(BM_BarbuleArmsSample);
+void BM_BarbuleArmsSample(benchmark::State& state) { timeSample(state, roofBSDF(double(state.range(0)))); }
+BENCHMARK(BM_BarbuleArmsSample)->Arg(0)->Arg(7);
 void BM_BarbuleArmsPassThrough(benchmark::State& state) {
   const BarbuleArmsBSDF bsdf = roofBSDF();
   const std::vector<Query>& q = queries();

@@ -30,8 +30,12 @@ ArmedCrossSection::ArmedCrossSection(const std::vector<double>& tiltsRad, double
   if (tiltsRad.empty() || tiltsRad.size() > size_t(kMaxBarbuleArms))
     throw std::invalid_argument("a cross-section takes 1 to " + std::to_string(kMaxBarbuleArms) + " arms");
   for (double tilt : tiltsRad)
-    if (!(std::abs(tilt) < 0.5 * kPiDouble))
-      throw std::invalid_argument("an arm's tilt must lie strictly between -90 and 90 degrees");
+    if (!(std::abs(tilt) <= kMaxArmTilt))
+      throw std::invalid_argument("an arm's tilt must lie between -89 and 89 degrees");
+  if (!std::isfinite(mu) || !(H >= 0.0) || !std::isfinite(H))
+    throw std::invalid_argument("the cross-section needs a finite tilt mu and a finite spacing H >= 0");
+  if (!(b >= kMinArmSemiAxis && b <= kMaxArmSemiAxis))
+    throw std::invalid_argument("an arm's semi-axis b must lie between 1e-4 and 100");
   // The chain's centre line: each arm's long axis is its face normal turned by +90 degrees, and
   // the next arm starts where this one ends. Centred on the midpoint of its two ends, then tilted.
   std::vector<Vec2d> centres;

@@ -22,8 +22,12 @@
 
 namespace columba {
 
-// Most arms one cross-section takes.
+// Most arms one cross-section takes, and the range of their tilts and semi-axes: arms nearer
+// upright fold back onto their neighbours, whose outlines then coincide to rounding and cross
+// thousands of times; semi-axes beyond the range leave the outline's points to rounding.
 inline constexpr int kMaxBarbuleArms = 8;
+inline constexpr double kMaxArmTilt = 89.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kMinArmSemiAxis = 1e-4, kMaxArmSemiAxis = 100.0;
 
 // A point of the array's outline reached along a line.
 struct ArmHit {
@@ -45,8 +49,8 @@ class ArmedCrossSection {
   // Arms of semi-axes b (across the arm) and 1 (along it) and superellipse exponent p, tilted by
   // `tiltsRad` (each arm's face normal turned from u toward v), joined end to end in that order
   // along v; the whole cross-section tilted by mu. A spacing H below contact is raised to it.
-  // Throws std::invalid_argument for no arms, more than kMaxBarbuleArms, or a tilt outside
-  // (-pi/2, pi/2).
+  // Throws std::invalid_argument for no arms, more than kMaxBarbuleArms, a tilt beyond
+  // kMaxArmTilt, b outside [kMinArmSemiAxis, kMaxArmSemiAxis], or mu or H not finite (H < 0).
   ArmedCrossSection(const std::vector<double>& tiltsRad, double b, double p, double mu, double H);
 
   int armCount() const { return int(arms_.size()); }

@@ -4,8 +4,8 @@ Barbules whose cross-section is a chain of flat arms: a V, a boomerang, or the t
 On a feather whose file gives per-vertex `height`, that wins over a constant given here (with a warning naming the line); per-vertex `mu` and `H` have no effect (one warning), and a feather choosing a layer stack other than 0 is an error.
 Mitsuba 3: not in Mitsuba 3.
 | parameter | type | default | meaning | Mitsuba 3 |
-| arm_tilts | string | — (required) | the arms' tilts in degrees, from one end of the chain to the other (toward +x), each the angle from the vane normal to the arm's face normal, strictly between −90 and 90: `-30, 0, 30` is a roof of three mirrors, `30, 0, -30` a trough; 1 to 8 arms | not in Mitsuba 3 |
-| b | float | 0.25 | each arm's semi-axis across it, in units of its half-length; positive | not in Mitsuba 3 |
+| arm_tilts | string | — (required) | the arms' tilts in degrees, from one end of the chain to the other (toward +x), each the angle from the vane normal to the arm's face normal, from −89 to 89: `-30, 0, 30` is a roof of three mirrors, `30, 0, -30` a trough; 1 to 8 arms | not in Mitsuba 3 |
+| b | float | 0.25 | each arm's semi-axis across it, in units of its half-length, from 10⁻⁴ to 100 | not in Mitsuba 3 |
 | profile_exponent | float | 4 | each arm's superellipse exponent, 2 (an ellipse) to 16 (a slab with rounded corners) | not in Mitsuba 3 |
 | mu | float | 0 | the tilt of the whole cross-section about the barbule axis, in radians | not in Mitsuba 3 |
 | H | float | 0 | the barbule spacing, in units of an arm's half-length; below the spacing at which neighbours touch it is that spacing (0: packed edge to edge) | not in Mitsuba 3 |
@@ -18,6 +18,7 @@ Mitsuba 3: not in Mitsuba 3.
 */
 #include "bsdfs/barbulearms.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "barbule/barbule_film.h"
@@ -115,8 +116,8 @@ float BarbuleArmsBSDF::pdf(const BSDFContext& ctx, const Vec3& wi, const Vec3& w
 std::optional<BSDFSample> BarbuleArmsBSDF::sample(const BSDFContext& ctx, const Vec3& wi, const Wavelengths& wl,
                                                   float uComponent, Vec2 u) const {
   const InPlaneDirection in = inPlane(wi);
-  auto passingThrough = [&](float probability) -> std::optional<BSDFSample> {
-    const float t = 1.0f - coverage(wi);
+  // Light passing on, chosen with `probability`, carries T = 1 - coverage over it.
+  auto passingThrough = [&](float t, float probability) -> std::optional<BSDFSample> {
     if (!(t > 0.0f) || !(probability > 0.0f)) return std::nullopt;
     BSDFSample bs;
     bs.wo = -wi;
@@ -126,14 +127,17 @@ std::optional<BSDFSample> BarbuleArmsBSDF::sample(const BSDFContext& ctx, const 
     return bs;
   };
   // From below, or along the barbules, nothing is reflected.
-  if (!(wi.z > 0.0f) || !(in.cosTheta > 0.0f) || in.dir.x == 0.0f) return passingThrough(1.0f);
+  if (!(wi.z > 0.0f) || !(in.cosTheta > 0.0f) || in.dir.x == 0.0f) return passingThrough(1.0f - coverage(wi), 1.0f);
 
   // The line at an offset uniform over one period seen from wi: what it meets first is a point
   // lit from wi, drawn in proportion to its projected width; a line meeting no coated side passes.
   const Vec2d d = toDouble(in.dir);
   const double period = geometry_.spacing() * std::abs(d.x);
   const std::optional<ArmHit> hit = geometry_.firstHit(d, double(uComponent) * period);
-  if (!hit || !hit->coated) return passingThrough(1.0f - coverage(wi));  // its probability is 1 - coverage
+  if (!hit || !hit->coated) {
+    const float t = 1.0f - coverage(wi);  // also the probability of this branch
+    return passingThrough(t, t);
+  }
 
   const Vec2 n(float(hit->normal.x), float(hit->normal.y));
   const float theta = LongitudinalDensity(inPlaneProjection(wi, n), wi.y).sample(u.x);
@@ -177,6 +181,8 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
   film.mu = props.getFloat("mu", 0.0f);
   const float H = props.getFloat("H", 0.0f);
   readBarbuleFilm(props, film);
+  if (!(film.b >= kMinArmSemiAxis && film.b <= kMaxArmSemiAxis))
+    throw props.error("b", "an arm's semi-axis must lie between 1e-4 and 100 (its half-length is 1)");
   if (!(H >= 0.0f) || !std::isfinite(H)) throw props.error("H", "the barbule spacing must not be negative");
   film.H = std::max(H, 1.0f);  // findProblem's check of H; the spacing used is the geometry's
   if (std::optional<BarbuleParameterProblem> problem = findProblem(film)) {
@@ -187,10 +193,15 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
     warn(props.locationOf(odd->parameter), "barbulearms, parameter '" + odd->parameter + "': " + odd->message);
 
   std::vector<double> tilts;
-  for (const std::string& item : listItems(props.getString("arm_tilts"))) {
+  const std::string tiltText = props.getString("arm_tilts");
+  const std::vector<std::string> items = listItems(tiltText);
+  const size_t commas = size_t(std::count(tiltText.begin(), tiltText.end(), ','));
+  if (commas > 0 && commas + 1 != items.size())
+    throw props.error("arm_tilts", "'" + excerpt(tiltText) + "' has an empty place between its commas");
+  for (const std::string& item : items) {
     const std::optional<double> degrees = parseNumber<double>(item);
-    if (!degrees || !(std::abs(*degrees) < 90.0))
-      throw props.error("arm_tilts", "'" + excerpt(item) + "' is not a tilt in degrees strictly between -90 and 90");
+    if (!degrees || !(std::abs(*degrees) * kPiDouble / 180.0 <= kMaxArmTilt))
+      throw props.error("arm_tilts", "'" + excerpt(item) + "' is not a tilt in degrees from -89 to 89");
     tilts.push_back(*degrees * kPiDouble / 180.0);
   }
   if (tilts.empty() || tilts.size() > size_t(kMaxBarbuleArms))

@@ -226,4 +226,30 @@ TEST(ArmedCrossSection, RefusesShapesItCannotBuild) {
   EXPECT_THROW(ArmedCrossSection(std::vector<double>(kMaxBarbuleArms + 1, 0.0), 0.2, 8.0, 0.0, 1.0),
                std::invalid_argument);
   EXPECT_THROW(ArmedCrossSection({0.0, kHalfPi}, 0.2, 8.0, 0.0, 1.0), std::invalid_argument);
+  // Arms folded back onto each other (their outlines coincide to rounding), semi-axes whose
+  // points rounding decides, and a spacing or tilt that is not a number.
+  EXPECT_THROW(ArmedCrossSection({radians(89.5), radians(-89.5)}, 0.25, 16.0, 0.0, 0.0), std::invalid_argument);
+  EXPECT_NO_THROW(ArmedCrossSection({radians(89.0), radians(-89.0)}, 0.25, 16.0, 0.0, 0.0));
+  EXPECT_THROW(ArmedCrossSection({0.0}, 1e-5, 4.0, 0.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(ArmedCrossSection({0.0}, 200.0, 4.0, 0.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(ArmedCrossSection({0.0}, 0.2, 4.0, 0.0, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(ArmedCrossSection({0.0}, 0.2, 4.0, std::nan(""), 1.0), std::invalid_argument);
+}
+
+TEST(ArmedCrossSection, AHairpinAtTheLargestTiltsIsStillFollowedExactly) {
+  // Two arms at +-89 degrees, joined end to end, lie almost on top of each other: coverage still
+  // agrees with the lines followed one by one, and stays cheap (a handful of crossings).
+  const ArmsCase c{{89.0, -89.0}, 0.25, 16.0, 0.0, 0.0};
+  const ArmedCrossSection g = makeGeometry(c);
+  for (double angle : {-0.972, -0.4, 0.3, 1.1}) {
+    const Vec2d d = unitAt(angle);
+    const double period = std::abs(g.spacing() * d.x);
+    constexpr int kLines = 20000;
+    int coated = 0;
+    for (int j = 0; j < kLines; ++j) {
+      std::optional<ArmHit> hit = g.firstHit(d, (j + 0.5) / kLines * period);
+      if (hit && hit->coated) ++coated;
+    }
+    EXPECT_NEAR(g.coverage(d), double(coated) / kLines, 20.0 / kLines) << angle;
+  }
 }

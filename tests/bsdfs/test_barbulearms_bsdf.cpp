@@ -179,6 +179,13 @@ TEST(BarbuleArmsBSDF, TheSceneReadsItsParametersAndRefusesBadOnes) {
   EXPECT_NE(loadBSDFError("barbulearms", "").find("arm_tilts"), std::string::npos);
   EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"0, 95\"/>").find("'95'"),
             std::string::npos);
+  EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"0, 89.5\"/>").find("-89 to 89"),
+            std::string::npos);
+  EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"-30,,30\"/>").find("empty place"),
+            std::string::npos);
+  EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"0\"/><float name=\"b\" value=\"1e-6\"/>")
+                .find("'b'"),
+            std::string::npos);
   EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"0, ten\"/>").find("'ten'"),
             std::string::npos);
   EXPECT_NE(loadBSDFError("barbulearms", "<string name=\"arm_tilts\" value=\"0 0 0 0 0 0 0 0 0\"/>").find("got 9"),
