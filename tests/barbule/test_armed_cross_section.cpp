@@ -101,6 +101,17 @@ std::optional<BruteHit> bruteFirstHit(const ArmsCase& c, const ArmedCrossSection
 
 Vec2d unitAt(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
+// The share of `lines` lines spread evenly over one period seen along d whose first hit is coated.
+double coatedShare(const ArmedCrossSection& g, Vec2d d, int lines) {
+  const double period = std::abs(g.spacing() * d.x);
+  int coated = 0;
+  for (int j = 0; j < lines; ++j) {
+    std::optional<ArmHit> hit = g.firstHit(d, (j + 0.5) / lines * period);
+    if (hit && hit->coated) ++coated;
+  }
+  return double(coated) / lines;
+}
+
 }  // namespace
 
 TEST(ArmedCrossSection, TheFirstArmMetIsTheOneEveryBarbuleTriedFindsFirst) {
@@ -165,15 +176,9 @@ TEST(ArmedCrossSection, CoverageIsTheShareOfAPeriodWhoseLinesFirstMeetACoatedSid
     const ArmedCrossSection g = makeGeometry(c);
     for (int i = 0; i < 6; ++i) {
       const Vec2d d = unitAt((rng.nextDouble() - 0.5) * 2.8 + (i % 2 ? kPiDouble : 0.0));
-      const double period = std::abs(g.spacing() * d.x);
-      constexpr int kLines = 4000;
-      int coated = 0;
-      for (int j = 0; j < kLines; ++j) {
-        std::optional<ArmHit> hit = g.firstHit(d, (j + 0.5) / kLines * period);
-        if (hit && hit->coated) ++coated;
-      }
       // The midpoint rule's error is at most the pieces' count over the lines.
-      EXPECT_NEAR(g.coverage(d), double(coated) / kLines, 40.0 / kLines);
+      constexpr int kLines = 4000;
+      EXPECT_NEAR(g.coverage(d), coatedShare(g, d, kLines), 40.0 / kLines);
     }
   }
 }
@@ -242,14 +247,7 @@ TEST(ArmedCrossSection, AHairpinAtTheLargestTiltsIsStillFollowedExactly) {
   const ArmsCase c{{89.0, -89.0}, 0.25, 16.0, 0.0, 0.0};
   const ArmedCrossSection g = makeGeometry(c);
   for (double angle : {-0.972, -0.4, 0.3, 1.1}) {
-    const Vec2d d = unitAt(angle);
-    const double period = std::abs(g.spacing() * d.x);
     constexpr int kLines = 20000;
-    int coated = 0;
-    for (int j = 0; j < kLines; ++j) {
-      std::optional<ArmHit> hit = g.firstHit(d, (j + 0.5) / kLines * period);
-      if (hit && hit->coated) ++coated;
-    }
-    EXPECT_NEAR(g.coverage(d), double(coated) / kLines, 20.0 / kLines) << angle;
+    EXPECT_NEAR(g.coverage(unitAt(angle)), coatedShare(g, unitAt(angle), kLines), 20.0 / kLines) << angle;
   }
 }
