@@ -408,15 +408,29 @@ std::vector<float> lambdaList(const py::object& lambdas) {
 
 py::array_t<float> toArray(const std::vector<float>& v) { return py::array_t<float>(py::ssize_t(v.size()), v.data()); }
 
+// What an imaging scatterometer records (barbule/measurement.h), as an H x W x 3 array.
+py::array_t<float> scatterometerArray(const BarbuleLobeSource& source, float theta, float phi, int resolution,
+                                      int supersampling) {
+  if (resolution < 1 || resolution > 8192) throw py::value_error("resolution must be between 1 and 8192");
+  if (supersampling < 1 || supersampling > 64) throw py::value_error("supersampling must be between 1 and 64");
+  Image image;
+  {
+    py::gil_scoped_release release;
+    image = scatterometerImage(source, directionFromAngles(degToRad(theta), degToRad(phi)), resolution, supersampling);
+  }
+  return imageArray(std::move(image));
+}
+
 // The lobes' spectra for light at (theta, phi) degrees, measured by `measure` (lobeReflectance or
 // specularSpectra) without the GIL, as {wavelengths, R, TRT}.
 template <typename Measure>
-py::dict lobeSpectraDict(const PyBarbule& s, float theta, float phi, const py::object& lambdas, Measure measure) {
+py::dict lobeSpectraDict(const BarbuleLobeSource& source, float theta, float phi, const py::object& lambdas,
+                         Measure measure) {
   std::vector<float> l = lambdaList(lambdas);
   LobeSpectra r;
   {
     py::gil_scoped_release release;
-    r = measure(s.bsdf().model(), directionFromAngles(degToRad(theta), degToRad(phi)), l);
+    r = measure(source, directionFromAngles(degToRad(theta), degToRad(phi)), l);
   }
   py::dict d;
   d["wavelengths"] = toArray(r.lambdas), d["R"] = toArray(r.reflection), d["TRT"] = toArray(r.trt);
@@ -642,28 +656,19 @@ void bindModel(py::module_& m) {
       .def(
           "scatterometer_image",
           [](const PyBarbule& s, float theta, float phi, int resolution, int supersampling) {
-            if (resolution < 1 || resolution > 8192) throw py::value_error("resolution must be between 1 and 8192");
-            if (supersampling < 1 || supersampling > 64)
-              throw py::value_error("supersampling must be between 1 and 64");
-            Image image;
-            {
-              py::gil_scoped_release release;
-              image = scatterometerImage(s.bsdf().model(), directionFromAngles(degToRad(theta), degToRad(phi)),
-                                         resolution, supersampling);
-            }
-            return imageArray(std::move(image));
+            return scatterometerArray(s.bsdf().model(), theta, phi, resolution, supersampling);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
       .def(
           "specular_spectra",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
-            return lobeSpectraDict(s, theta, phi, lambdas, specularSpectra);
+            return lobeSpectraDict(s.bsdf().model(), theta, phi, lambdas, specularSpectra);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none())
       .def(
           "lobe_reflectance",
           [](const PyBarbule& s, float theta, float phi, const py::object& lambdas) {
-            return lobeSpectraDict(s, theta, phi, lambdas, lobeReflectance);
+            return lobeSpectraDict(s.bsdf().model(), theta, phi, lambdas, lobeReflectance);
           },
           py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none());
 
@@ -694,7 +699,27 @@ void bindModel(py::module_& m) {
             return out;
           },
           py::arg("omega_i"), "The share of light from omega_i meeting a film-coated side; T = 1 - coverage")
-      .def("pass_through", &passThroughArray<PyArms>, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight");
+      .def("pass_through", &passThroughArray<PyArms>, py::arg("wi"), py::arg("wavelengths"), "The T lobe's weight")
+      .def(
+          "scatterometer_image",
+          [](const PyArms& s, float theta, float phi, int resolution, int supersampling) {
+            return scatterometerArray(s.bsdf(), theta, phi, resolution, supersampling);
+          },
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("resolution") = 256, py::arg("supersampling") = 2)
+      .def(
+          "specular_spectra",
+          [](const PyArms& s, float theta, float phi, const py::object& lambdas) {
+            return lobeSpectraDict(s.bsdf(), theta, phi, lambdas, specularSpectra);
+          },
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none(),
+          "As BarbuleBSDF's; TRT is 0")
+      .def(
+          "lobe_reflectance",
+          [](const PyArms& s, float theta, float phi, const py::object& lambdas) {
+            return lobeSpectraDict(s.bsdf(), theta, phi, lambdas, lobeReflectance);
+          },
+          py::arg("theta_deg"), py::arg("phi_deg") = 0.0f, py::arg("wavelengths") = py::none(),
+          "As BarbuleBSDF's; TRT is 0");
 
   m.def("presets", [] {
     py::dict d;

@@ -287,3 +287,11 @@ def test_barbules_of_arms_sample_as_they_evaluate_and_one_arm_covers_its_width()
     assert one.coverage(np.array([[0.0, 0.0, 1.0]]))[0] == pytest.approx(2.0 / 8.0, abs=1e-6)
     with pytest.raises(ValueError, match="arm_tilts"):
         columba.BarbuleArmsBSDF(arm_tilts="0, 95")
+    # One arm (an ellipse) is the ellipse barbule with its upper half reflective, through the other
+    # model's code: the same R in the mirror direction, and no TRT.
+    arm = columba.BarbuleArmsBSDF(arm_tilts=[0], profile_exponent=2, b=0.25, mu=-0.35, H=1.25, height=0.58)
+    ellipse = columba.BarbuleBSDF(b=0.25, mu=-0.35, H=1.25, height=0.58, phi_0=-np.pi / 2, phi_1=np.pi / 2)
+    a, e = arm.specular_spectra(30.0), ellipse.specular_spectra(30.0)
+    np.testing.assert_allclose(a["R"], e["R"], rtol=1e-4, atol=1e-7)
+    assert not a["TRT"].any()
+    assert arm.scatterometer_image(30.0, resolution=16).shape == (16, 16, 3)

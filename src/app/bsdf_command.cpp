@@ -8,7 +8,9 @@
 #include <limits>
 
 #include "barbule/measurement.h"
+#include "barbule/model.h"
 #include "barbule/parameter_reader.h"
+#include "bsdfs/barbulearms.h"
 #include "core/illuminant.h"
 #include "core/version.h"
 #include "io/data_files.h"
@@ -39,6 +41,9 @@ struct BSDFOptions {
   int resolution = 256;
   std::string outputDir = ".";
   std::string observer;  // a bird's: the specular spectra's cone catches and colour distances
+  // Barbules of flat arms (barbulearms) with these tilts instead of the ellipse model.
+  std::string armTilts;
+  std::shared_ptr<const BarbuleArmsBSDF> arms;
 };
 
 const Vec3 kSeriesColours[] = {srgbColour(0.10f, 0.35f, 0.80f), srgbColour(0.10f, 0.60f, 0.30f),
@@ -53,6 +58,12 @@ std::string describeParameters(const BSDFOptions& o) {
       o.filmIOR.empty()
           ? (std::isnan(o.cauchyA) ? "keratin" : fmt::format("Cauchy {} + {}/lambda^2", o.cauchyA, o.cauchyB))
           : o.filmIOR;
+  if (o.arms)
+    return fmt::format(
+               "barbulearms | arm_tilts {} deg | b {} | profile_exponent {} | mu {} rad | H {:.4g} | height {} "
+               "um | film_ior {} | ext_ior {}",
+               o.armTilts, p.b, p.profileExponent, p.mu, p.H, p.height, film, p.extIOR) +
+           (o.layers.empty() ? "" : " | layers " + o.layers);
   return fmt::format(
              "b {} | phi_0 {} rad | phi_1 {} rad | mu {} rad | H {} | height {} um | film_ior {} | ext_ior {} | "
              "melanin {}{}",
@@ -91,7 +102,7 @@ void writeTable(const fs::path& path, const CsvTable& table, std::vector<std::st
   written.push_back(path.string());
 }
 
-void measureHemispheres(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir,
+void measureHemispheres(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir,
                         std::vector<std::string>& written) {
   for (float angle : o.angles) {
     Vec3 light = lightDirection(o, angle);
@@ -147,7 +158,7 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
 }
 
 // Directional reflectance (albedo) of R and TRT per light angle.
-void measureAlbedo(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+void measureAlbedo(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                    std::vector<std::string>& written) {
   const std::vector<float> lambdas = wavelengthGrid(kSpectralMin, 1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Directional reflectance of the barbule lobes",
@@ -244,7 +255,7 @@ void measureConeCatches(const BSDFOptions& o, const std::vector<float>& lambdas,
 }
 
 // Reflectance factor in the mirror direction of each light angle: a microspectrophotometer.
-void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
+void measureSpecular(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                      std::vector<std::string>& written) {
   const std::vector<float> lambdas = wavelengthGrid(kSpectralMin, 1.0f);
   auto [plot, table] = spectralFigure(o, lambdas, "Reflectance factor pi f in the mirror direction",
@@ -292,7 +303,7 @@ void measureSpecular(const BarbuleModel& model, const BSDFOptions& o, const fs::
 }
 
 // In-plane slices of the scatterometer quantity at a few wavelengths and as RGB.
-void measurePlane(const BarbuleModel& model, const BSDFOptions& o, const fs::path& dir,
+void measurePlane(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir,
                   std::vector<std::string>& written) {
   const std::vector<float> shown = {450.0f, 550.0f, 650.0f};
   const std::vector<float> lambdas = wavelengthGrid(kLambdaMin, 5.0f);
@@ -351,13 +362,18 @@ double decimal(float x) { return std::stod(fmt::format("{}", x)); }
 nlohmann::json parameterRecord(const BSDFOptions& o) {
   const BarbuleParameters& p = o.params;
   nlohmann::json j = {{"b", decimal(p.b)},
-                      {"phi_0_rad", decimal(p.phi0)},
-                      {"phi_1_rad", decimal(p.phi1)},
                       {"mu_rad", decimal(p.mu)},
                       {"H", decimal(p.H)},
                       {"height_um", decimal(p.height)},
                       {"ext_ior", decimal(p.extIOR)},
                       {"profile_exponent", decimal(p.profileExponent)}};
+  if (o.arms) {
+    j["bsdf"] = "barbulearms";
+    j["arm_tilts_deg"] = o.armTilts;
+  } else {
+    j["phi_0_rad"] = decimal(p.phi0);
+    j["phi_1_rad"] = decimal(p.phi1);
+  }
   if (!o.preset.empty()) j["preset"] = o.preset;
   if (!o.filmIOR.empty())
     j["film_ior"] = o.filmIOR;
@@ -365,16 +381,32 @@ nlohmann::json parameterRecord(const BSDFOptions& o) {
     j["film_cauchy"] = {{"a", decimal(o.cauchyA)}, {"b_nm2", decimal(o.cauchyB)}};
   else
     j["film_ior"] = "keratin";
-  j["melanin"] = o.melaninFile.empty() ? "embedded table" : o.melaninFile;
+  if (!o.arms) j["melanin"] = o.melaninFile.empty() ? "embedded table" : o.melaninFile;
+  if (!o.layers.empty()) j["layers"] = o.layers;
   return j;
 }
 
 void runBSDF(const BSDFOptions& o) {
   checkOutputDirectory(o.outputDir, o.outputDir);
   const fs::path dir(o.outputDir);
-  const BarbuleModel model(o.params);
+  std::optional<BarbuleModel> ellipse;
+  if (!o.arms) ellipse.emplace(o.params);
+  const BarbuleLobeSource& model = o.arms ? static_cast<const BarbuleLobeSource&>(*o.arms) : *ellipse;
   makeOutputDirectory(o.outputDir, o.outputDir);
   fmt::print("barbule BSDF: {}\n", describeParameters(o));
+  if (o.arms) fmt::print("barbulearms has no TRT lobe: its TRT columns are 0\n");
+  // Flat faces: a point value where a face's normal is the half vector is a spike of the
+  // singular normal density, not a reading; the albedo integrates it.
+  const bool pointValues = std::any_of(o.modes.begin(), o.modes.end(), [](const std::string& m) {
+    return m == "hemisphere" || m == "specular" || m == "plane";
+  });
+  if (pointValues && o.params.profileExponent > 2.0f)
+    fmt::print(stderr,
+               "warning: --profile-exponent {:g}: above 2 the normal density is infinite at each flat face's own "
+               "normal (integrable; docs/model.md, \"Cross-sections beyond the ellipse\"), so hemisphere, specular "
+               "and plane values whose half vector is that normal are spikes, not readings; --mode spectra "
+               "integrates them\n",
+               o.params.profileExponent);
   nlohmann::json record = {{"columba_version", kColumbaVersion},
                            {"parameters", parameterRecord(o)},
                            {"light_theta_deg", o.angles},
@@ -407,16 +439,25 @@ std::string optionFor(const std::string& parameter) {
   return "--" + option;
 }
 
-// The parameters as the options give them, read as a scene's <bsdf type="barbulebsdf"> is.
+// The parameters as the options give them, read as a scene's <bsdf type="barbulebsdf"> is, or with
+// --arm-tilts as its <bsdf type="barbulearms">.
 void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParameters& given) {
   Properties props;
   props.tag = "bsdf";
-  props.type = "barbulebsdf";
+  props.type = o.armTilts.empty() ? "barbulebsdf" : "barbulearms";
   props.nameParameter = optionFor;
-  if (!o.preset.empty()) props.setString("preset", o.preset);
   auto take = [&](const char* parameter, float value) {
     if (cmd.count(optionFor(parameter)) > 0) props.setFloat(parameter, value);
   };
+  if (!o.armTilts.empty()) {
+    for (const char* option : {"--preset", "--phi_0", "--phi_1", "--melanin"})
+      if (cmd.count(option) > 0)
+        throw CLI::ValidationError(option,
+                                   "has no effect on barbules of arms (--arm-tilts): they have no arc, preset "
+                                   "or melanin layer");
+    props.setString("arm_tilts", o.armTilts);
+  }
+  if (!o.preset.empty()) props.setString("preset", o.preset);
   take("b", given.b);
   take("phi_0", given.phi0);
   take("phi_1", given.phi1);
@@ -432,6 +473,11 @@ void resolveParameters(BSDFOptions& o, const CLI::App& cmd, const BarbuleParamet
   if (!o.melaninFile.empty()) {
     GivenSpectrum melanin = readSpectrumFile(o.melaninFile, "--melanin", SourceLocation{o.melaninFile, 0});
     props.setSpectrum("melanin", melanin.distribution, melanin.lowest);
+  }
+  if (!o.armTilts.empty()) {
+    o.arms = std::static_pointer_cast<const BarbuleArmsBSDF>(makeBarbuleArmsBSDF(props));
+    o.params = o.arms->parameters();
+    return;
   }
   std::optional<BarbuleParameterProblem> odd;
   o.params = readBarbuleParameters(props, odd);
@@ -464,6 +510,9 @@ void addBSDFCommand(CLI::App& app) {
                   "Layers under the cortex, from it down: 'INDEX:THICKNESS_UM, ...' (INDEX a number, a named index, "
                   "keratin, melanin or N+Ki), rows of rods 'rods(INDEX, DIAMETER_UM, SPACING_UM[, MATRIX])', "
                   "repeats '[...] x N', or a published stack: parotia-occipital");
+  cmd->add_option("--arm-tilts", o->armTilts,
+                  "Barbules whose cross-section is a chain of flat arms (barbulearms) with these tilts, degrees, "
+                  "e.g. '-30,0,30'; --b and --profile-exponent then shape each arm, --mu and --H the whole");
   cmd->add_option("--angles", o->angles, "Light polar angles from the vane normal, degrees (default 0,20,40,60)")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.9));

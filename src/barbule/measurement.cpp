@@ -55,7 +55,7 @@ std::vector<float> wavelengthGrid(float first, float step) {
   return lambdas;
 }
 
-LobeSpectra lobeReflectance(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
+LobeSpectra lobeReflectance(const BarbuleLobeSource& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
   LobeSpectra result;
   result.lambdas = lambdas;
@@ -92,7 +92,7 @@ Vec3 directionFromAngles(float theta, float phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
-LobeSpectra specularSpectra(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
+LobeSpectra specularSpectra(const BarbuleLobeSource& model, const Vec3& omegaI, const std::vector<float>& lambdas) {
   LobeSpectra result;
   result.lambdas = lambdas;
   result.reflection.resize(lambdas.size());
@@ -109,7 +109,7 @@ LobeSpectra specularSpectra(const BarbuleModel& model, const Vec3& omegaI, const
   return result;
 }
 
-PlaneSlice planeSlice(const BarbuleModel& model, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
+PlaneSlice planeSlice(const BarbuleLobeSource& model, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
                       const std::vector<float>& lambdas) {
   PlaneSlice slice{thetaO, lambdas, std::vector<std::vector<float>>(thetaO.size(), std::vector<float>(lambdas.size()))};
   std::vector<WavelengthGroup> groups = wavelengthGroups(lambdas);
@@ -137,7 +137,7 @@ std::vector<Vec3> sliceRGB(const PlaneSlice& slice) {
   return rgb;
 }
 
-SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& omegaI, int resolution, int bins,
+SpectralBands spectralScatterometerBands(const BarbuleLobeSource& model, const Vec3& omegaI, int resolution, int bins,
                                          float lambdaMin, float lambdaMax, int supersampling) {
   // Each bin is averaged over four wavelengths at the centres of its quarters.
   const float binWidth = (lambdaMax - lambdaMin) / float(bins);
@@ -167,7 +167,7 @@ SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& 
   return image;
 }
 
-Image scatterometerImage(const BarbuleModel& model, const Vec3& omegaI, int resolution, int supersampling) {
+Image scatterometerImage(const BarbuleLobeSource& model, const Vec3& omegaI, int resolution, int supersampling) {
   Image image(resolution, resolution);
   std::vector<WavelengthGroup> groups = wavelengthGroups(wavelengthGrid(kLambdaMin, 5.0f));
   const float dLambda = 5.0f;

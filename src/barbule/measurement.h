@@ -1,9 +1,9 @@
 #pragma once
-// Virtual measurements of the barbule model, as a gonioreflectometer or an imaging scatterometer
-// would take them: the spectral reflectance of each lobe, and the hemisphere of reflected
+// Virtual measurements of a barbule model (the ellipse's or the arms', barbule/lobe_source.h), as a
+// gonioreflectometer or an imaging scatterometer would take them: the spectral reflectance of each lobe, and the hemisphere of reflected
 // radiance for one light direction. All deterministic (grids and quadrature, no sampling).
 #include <vector>
-#include "barbule/model.h"
+#include "barbule/lobe_source.h"
 #include "io/image.h"
 
 namespace columba {
@@ -16,7 +16,7 @@ struct LobeSpectra {
 // Directional reflectance (albedo) of the R and TRT lobes for light from `omegaI` (local frame),
 // at each wavelength of `lambdas` (nm): the integral over all outgoing directions of
 // f_lobe(omegaI, omegaO) |cos theta_o|.
-LobeSpectra lobeReflectance(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas);
+LobeSpectra lobeReflectance(const BarbuleLobeSource& model, const Vec3& omegaI, const std::vector<float>& lambdas);
 
 // Linear RGB of what an imaging scatterometer records under a white beam (D65 of unit luminance)
 // from `omegaI`: f(omegaI, omegaO) |cos theta_o| per solid angle toward every direction
@@ -24,12 +24,12 @@ LobeSpectra lobeReflectance(const BarbuleModel& model, const Vec3& omegaI, const
 // to the hemisphere as in the `bsdfvisualizer` sensor (theta = r pi/2, phi = atan2(v, u), v
 // growing downward with the row); pixels outside it are black. `supersampling`^2 directions per
 // pixel.
-Image scatterometerImage(const BarbuleModel& model, const Vec3& omegaI, int resolution, int supersampling = 2);
+Image scatterometerImage(const BarbuleLobeSource& model, const Vec3& omegaI, int resolution, int supersampling = 2);
 
 // What a microspectrophotometer measures: the reflectance factor pi f(omegaI, omegaO) (1 for a
 // white diffuse standard) of the R and TRT lobes in the mirror direction of `omegaI` (its x and y
 // negated), at each wavelength of `lambdas` (nm).
-LobeSpectra specularSpectra(const BarbuleModel& model, const Vec3& omegaI, const std::vector<float>& lambdas);
+LobeSpectra specularSpectra(const BarbuleLobeSource& model, const Vec3& omegaI, const std::vector<float>& lambdas);
 
 // The scatterometer quantity f(omegaI, omegaO) |cos theta_o| (per steradian, R + TRT) in the plane
 // of incidence: omegaO at signed polar angles `thetaO` (radians; negative on the light's side,
@@ -39,7 +39,7 @@ struct PlaneSlice {
   std::vector<float> thetaO, lambdas;
   std::vector<std::vector<float>> values;
 };
-PlaneSlice planeSlice(const BarbuleModel& model, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
+PlaneSlice planeSlice(const BarbuleLobeSource& model, const Vec3& omegaI, float phi, const std::vector<float>& thetaO,
                       const std::vector<float>& lambdas);
 // Linear RGB of a slice's columns under a D65 beam of unit luminance (lambdas a uniform grid).
 std::vector<Vec3> sliceRGB(const PlaneSlice& slice);
@@ -47,7 +47,7 @@ std::vector<Vec3> sliceRGB(const PlaneSlice& slice);
 // The scatterometer image per wavelength bin: `bins` equal bins over [lambdaMin, lambdaMax], each
 // the bin's mean of f(omegaI, omegaO) |cos theta_o| (per steradian, R + TRT, no illuminant), on
 // the image disk of scatterometerImage (zero outside it).
-SpectralBands spectralScatterometerBands(const BarbuleModel& model, const Vec3& omegaI, int resolution, int bins,
+SpectralBands spectralScatterometerBands(const BarbuleLobeSource& model, const Vec3& omegaI, int resolution, int bins,
                                          float lambdaMin, float lambdaMax, int supersampling = 2);
 
 // Wavelengths from `first` to 830 nm every `step` nm: from kLambdaMin (360 nm) for human colour,

@@ -6,12 +6,13 @@
 #include <optional>
 
 #include "barbule/cross_section.h"
+#include "barbule/lobe_source.h"
 #include "barbule/parameters.h"
 #include "barbule/point_model.h"
 
 namespace columba {
 
-class BarbuleModel {
+class BarbuleModel final : public BarbuleLobeSource {
  public:
   explicit BarbuleModel(const BarbuleParameters& params, BarbuleQuadrature quadrature = {});
 
@@ -25,9 +26,9 @@ class BarbuleModel {
 
   // The two non-delta lobes f(omega_i, omega_o) (without any cosine) with the parameters' own
   // cross-section and thickness.
-  BarbuleLobes lobes(const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const;
+  BarbuleLobes lobes(const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const override;
   // Coverage r(omega_i): the fraction of light from omega_i meeting the reflective arc (T = 1 - r).
-  float coverage(const Vec3& omegaI) const;
+  float coverage(const Vec3& omegaI) const override;
 
  private:
   BarbuleParameters params_;

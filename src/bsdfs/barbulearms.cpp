@@ -105,6 +105,11 @@ BSDFEvalPdf BarbuleArmsBSDF::valueAndPdf(const BSDFContext& ctx, const Vec3& wi,
   return out;
 }
 
+BarbuleLobes BarbuleArmsBSDF::lobes(const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const {
+  if (omegaO.z == 0.0f) return {};
+  return {valueAndPdf({}, omegaI, omegaO, wl).value / std::abs(omegaO.z), Spectrum(0.0f)};
+}
+
 Spectrum BarbuleArmsBSDF::eval(const BSDFContext& ctx, const Vec3& wi, const Vec3& wo, const Wavelengths& wl) const {
   return valueAndPdf(ctx, wi, wo, wl).value;
 }
@@ -184,7 +189,7 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
   if (!(film.b >= kMinArmSemiAxis && film.b <= kMaxArmSemiAxis))
     throw props.error("b", "an arm's semi-axis must lie between 1e-4 and 100 (its half-length is 1)");
   if (!(H >= 0.0f) || !std::isfinite(H)) throw props.error("H", "the barbule spacing must not be negative");
-  film.H = std::max(H, 1.0f);  // findProblem's check of H; the spacing used is the geometry's
+  film.H = std::max(H, 1.0f);  // for findProblem's check of H; the spacing used is set below
   if (std::optional<BarbuleParameterProblem> problem = findProblem(film)) {
     const bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
     throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
@@ -207,8 +212,9 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
   if (tilts.empty() || tilts.size() > size_t(kMaxBarbuleArms))
     throw props.error("arm_tilts",
                       "give 1 to " + std::to_string(kMaxBarbuleArms) + " arms, got " + std::to_string(tilts.size()));
-  auto bsdf = std::make_shared<BarbuleArmsBSDF>(ArmedCrossSection(tilts, film.b, film.profileExponent, film.mu, H),
-                                                std::move(film));
+  ArmedCrossSection geometry(tilts, film.b, film.profileExponent, film.mu, H);
+  film.H = float(geometry.spacing());
+  auto bsdf = std::make_shared<BarbuleArmsBSDF>(std::move(geometry), std::move(film));
   const std::string noPreset;  // this BSDF has none
   bsdf->setSceneSources(
       std::make_shared<PerPointParameterSources>(

@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "barbule/armed_cross_section.h"
+#include "barbule/lobe_source.h"
 #include "barbule/parameters.h"
 #include "bsdfs/bsdf.h"
 #include "bsdfs/per_point_parameters.h"
@@ -23,7 +24,7 @@
 
 namespace columba {
 
-class BarbuleArmsBSDF : public BSDF {
+class BarbuleArmsBSDF : public BSDF, public BarbuleLobeSource {
  public:
   // `film` gives the cortex and the layers under it (its cross-section values are not read).
   BarbuleArmsBSDF(ArmedCrossSection geometry, BarbuleParameters film);
@@ -39,8 +40,13 @@ class BarbuleArmsBSDF : public BSDF {
   bool hasSingularValues() const override { return profileExponent_ > 3.0; }
 
   const ArmedCrossSection& geometry() const { return geometry_; }
+  // The film's parameters, with the cross-section's b, profile exponent, mu and the spacing H it
+  // uses (the contact spacing where the scene's is smaller); phi_0, phi_1 and melanin unused.
+  const BarbuleParameters& parameters() const { return film_; }
   // The fraction of light from omega_i meeting a coated side (T = 1 - coverage).
-  float coverage(const Vec3& omegaI) const;
+  float coverage(const Vec3& omegaI) const override;
+  // R (eval without its cosine) and a TRT of 0, for the virtual measurements.
+  BarbuleLobes lobes(const Vec3& omegaI, const Vec3& omegaO, const Wavelengths& wl) const override;
 
   // Where the scene gave `height` (for the warning when a feather's values win over it) and where
   // it declared the BSDF.

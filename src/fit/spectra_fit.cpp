@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "barbule/measurement.h"
+#include "barbule/model.h"
 #include "barbule/parameter_reader.h"
 #include "core/byte_order_mark.h"
 #include "core/error.h"

@@ -583,6 +583,40 @@ std::vector<std::vector<std::string>> csvRows(const fs::path& path) {
 }
 }  // namespace
 
+TEST_F(CliTest, BsdfMeasuresBarbulesOfArmsAndOneArmReflectsAsTheEllipse) {
+  // One arm is the ellipse barbule with its upper half reflective: the same R in the mirror
+  // direction, through the other model's code; barbulearms has no TRT.
+  const std::string shape = " --b 0.25 --mu -0.35 --H 1.25 --height 0.58 --mode specular --angles 0,30 -o ";
+  CommandResult arms = run("bsdf --arm-tilts 0 --profile-exponent 2" + shape + (dir_ / "arms").string());
+  ASSERT_EQ(arms.status, 0) << arms.output;
+  EXPECT_NE(arms.output.find("barbulearms | arm_tilts 0 deg"), std::string::npos) << arms.output;
+  CommandResult ellipse = run("bsdf --phi_0 -1.5707964 --phi_1 1.5707964" + shape + (dir_ / "ellipse").string());
+  ASSERT_EQ(ellipse.status, 0) << ellipse.output;
+  const auto a = csvRows(dir_ / "arms" / "bsdf_specular.csv"), e = csvRows(dir_ / "ellipse" / "bsdf_specular.csv");
+  ASSERT_EQ(a.size(), e.size());
+  ASSERT_EQ(a[0], e[0]);  // wavelength_nm, then R, TRT and total per angle
+  int compared = 0;
+  for (size_t i = 1; i < a.size(); ++i)
+    for (size_t column : {size_t(1), size_t(4)}) {
+      const double r = std::stod(a[i][column]), expected = std::stod(e[i][column]);
+      EXPECT_NEAR(r, expected, 1e-3 * expected + 1e-7) << a[0][column] << " at " << a[i][0] << " nm";
+      EXPECT_EQ(std::stod(a[i][column + 1]), 0.0);
+      compared += expected > 0.0;
+    }
+  EXPECT_GT(compared, 500);
+  // Flat arms warn that point values at a face's normal are spikes; the ellipse's own options are
+  // refused, naming them.
+  CommandResult flat = run("bsdf --arm-tilts -30,0,30 --mode plane --angles 0 -o " + (dir_ / "flat").string());
+  EXPECT_EQ(flat.status, 0) << flat.output;
+  EXPECT_NE(flat.output.find("are spikes, not readings"), std::string::npos) << flat.output;
+  CommandResult arc = run("bsdf --arm-tilts 0 --phi_0 0 -o " + (dir_ / "arc").string());
+  EXPECT_NE(arc.status, 0);
+  EXPECT_NE(arc.output.find("--phi_0: has no effect on barbules of arms"), std::string::npos) << arc.output;
+  CommandResult tilt = run("bsdf --arm-tilts 0,95 -o " + (dir_ / "tilt").string());
+  EXPECT_NE(tilt.status, 0);
+  EXPECT_NE(tilt.output.find("--arm-tilts: '95'"), std::string::npos) << tilt.output;
+}
+
 TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   CommandResult r =
       run("bsdf --preset dove-green --mode specular --angles 0,30 --observer bluetit -o " + dir_.string());
