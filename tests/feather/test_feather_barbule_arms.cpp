@@ -36,14 +36,7 @@ class FeatherBarbuleArmsTest : public columba::testing::TempDirTest {
 <string name="arm_tilts" value="-30, 0, 30"/>)" +
            bsdf + "\n</bsdf></shape>\n</scene>";
   }
-  std::string loadError(const std::string& xml) {
-    try {
-      loadSceneString(xml, "scene.xml", dir_.string(), {}, builtinPlugins());
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  std::string loadError(const std::string& xml) { return columba::test::sceneLoadError(xml, dir_.string()); }
 };
 
 TEST_F(FeatherBarbuleArmsTest, TheFeathersThicknessIsUsedAndItsTiltAndSpacingAreWarnedOfOnce) {

@@ -46,15 +46,7 @@ class FeatherLayerStackTest : public columba::testing::TempDirTest {
     return "<string name=\"" + name + "\" value=\"" + value + "\"/>";
   }
 
-  // The InputError message of loading `xml`, or "" when it loads.
-  std::string loadError(const std::string& xml) {
-    try {
-      loadSceneString(xml, "scene.xml", dir_.string(), {}, builtinPlugins());
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  std::string loadError(const std::string& xml) { return columba::test::sceneLoadError(xml, dir_.string()); }
 };
 
 // Rows [first, last) of an image, as floats.

@@ -11,11 +11,24 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include "builtin/builtin_plugins.h"
+#include "core/error.h"
 #include "core/rng.h"
 #include "io/feather_ply_writer.h"
+#include "scene/scene_loader.h"
 #include "shapes/feather_shape.h"
 
 namespace columba::test {
+
+// The InputError message of loading `xml` as scene.xml with its files in `dir`, "" when it loads.
+inline std::string sceneLoadError(const std::string& xml, const std::string& dir) {
+  try {
+    loadSceneString(xml, "scene.xml", dir, {}, builtinPlugins());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // A hit's attribute `name` (a per-point BSDF parameter), NaN where the hit does not give it.
 inline float attribute(const SurfaceInteraction& si, std::string_view name) {
