@@ -176,17 +176,31 @@ bool ArmedCrossSection::isReached(int armIndex, Vec2d p, Vec2d d) const {
 
 double ArmedCrossSection::coverage(Vec2d d) const {
   const Vec2d e = across(d);
-  const double period = std::abs(H_ * e.y);
+  const double shift = H_ * e.y, period = std::abs(shift);
   if (!(period > 0.0)) return 0.0;
+  // Each arm's shadow along d, and the offsets of its coated side that face d: the facing half and
+  // the coated half of a convex outline meet in one arc, whose offsets run counter-clockwise from
+  // the tip (0, -1), or the silhouette where that tip faces away, to the tip (0, 1) or the other
+  // silhouette (as BarbuleCrossSection::litArc bounds its arc).
+  struct View {
+    double centre, plusSide, minusSide, coatedLo, coatedHi;
+  };
+  std::vector<View> views;
   std::vector<double> events;
   auto add = [&](double offset) { events.push_back(offset - period * std::floor(offset / period)); };
   for (const Arm& arm : arms_) {
-    const double o = dot(arm.centre, e);
-    const Vec2d eLocal = toLocal(arm, e);
-    add(o + shape_.support(eLocal));
-    add(o - shape_.support(scaled(eLocal, -1.0)));
+    const Vec2d dLocal = toLocal(arm, d), eLocal = across(dLocal);
+    View v{dot(arm.centre, e), shape_.support(eLocal), shape_.support(scaled(eLocal, -1.0)), 0.0, 0.0};
+    const bool lowTipFaces = dLocal.y<0.0, highTipFaces = dLocal.y> 0.0;
+    v.coatedLo = lowTipFaces ? -eLocal.y : -v.minusSide;
+    v.coatedHi = highTipFaces ? eLocal.y : v.plusSide;
+    if (!lowTipFaces && !highTipFaces && !(dLocal.x > 0.0)) v.coatedLo = v.coatedHi = 0.0;
+    add(v.centre + v.plusSide);
+    add(v.centre - v.minusSide);
     // The tips, where the coated side ends.
-    for (double tip : {-1.0, 1.0}) add(dot(plus(arm.centre, toWorld(arm, {0.0, tip})), e));
+    add(v.centre - eLocal.y);
+    add(v.centre + eLocal.y);
+    views.push_back(v);
   }
   for (const Vec2d& x : crossings_) add(dot(x, e));
   std::sort(events.begin(), events.end());
@@ -195,7 +209,28 @@ double ArmedCrossSection::coverage(Vec2d d) const {
   for (size_t i = 0; i + 1 < events.size(); ++i) {
     const double length = events[i + 1] - events[i];
     if (!(length > 0.0)) continue;
-    std::optional<ArmHit> hit = firstHit(d, events[i] + 0.5 * length);
+    const double h = events[i] + 0.5 * length;
+    // Where the shadows of one arm's translates alone hold the line, the line meets the one on the
+    // light's side (as `candidate` takes it), and the offset relative to it says whether on its
+    // coated side; where several arms' shadows do, their entry points decide.
+    int holding = 0;
+    double relative = 0.0;
+    size_t only = 0;
+    for (size_t a = 0; a < views.size(); ++a) {
+      const View& v = views[a];
+      const double lo = (h - v.centre - v.plusSide) / shift, hi = (h - v.centre + v.minusSide) / shift;
+      const double kLo = std::ceil(std::min(lo, hi)), kHi = std::floor(std::max(lo, hi));
+      if (kLo > kHi) continue;
+      ++holding;
+      relative = h - v.centre - (dot(d, arms_[a].separatingNormal) > 0.0 ? kHi : kLo) * shift;
+      only = a;
+    }
+    if (holding == 0) continue;
+    if (holding == 1) {
+      if (relative >= views[only].coatedLo && relative <= views[only].coatedHi) lit += length;
+      continue;
+    }
+    std::optional<ArmHit> hit = firstHit(d, h);
     if (hit && hit->coated) lit += length;
   }
   return std::clamp(lit / period, 0.0, 1.0);
