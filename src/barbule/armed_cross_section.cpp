@@ -119,33 +119,38 @@ ArmedCrossSection::ArmedCrossSection(const std::vector<double>& tiltsRad, double
     }
 }
 
-std::optional<ArmedCrossSection::Candidate> ArmedCrossSection::candidate(int armIndex, Vec2d d, double h) const {
-  const Arm& arm = arms_[size_t(armIndex)];
-  const Vec2d e = across(d), eLocal = toLocal(arm, e);
-  const double shift = H_ * e.y;  // a translate's step along the offsets
-  if (shift == 0.0) return std::nullopt;
-  const double o = dot(arm.centre, e), plusSide = shape_.support(eLocal),
-               minusSide = shape_.support(scaled(eLocal, -1.0));
-  // Translates k with o + k shift - minusSide <= h <= o + k shift + plusSide.
-  const double a = (h - o - plusSide) / shift, c = (h - o + minusSide) / shift;
+ArmedCrossSection::Shadow ArmedCrossSection::shadowOf(const Arm& arm, Vec2d d) const {
+  const Vec2d e = across(d);
+  return {dot(arm.centre, e), shape_.support(toLocal(arm, e)), H_ * e.y, dot(d, arm.separatingNormal) > 0.0};
+}
+
+std::optional<double> ArmedCrossSection::translateMet(const Shadow& shadow, double h) {
+  if (shadow.shift == 0.0) return std::nullopt;
+  // Translates k with centre + k shift - halfWidth <= h <= centre + k shift + halfWidth.
+  const double a = (h - shadow.centre - shadow.halfWidth) / shadow.shift,
+               c = (h - shadow.centre + shadow.halfWidth) / shadow.shift;
   const double kLo = std::ceil(std::min(a, c)), kHi = std::floor(std::max(a, c));
   if (kLo > kHi) return std::nullopt;
-  const double k = dot(d, arm.separatingNormal) > 0.0 ? kHi : kLo;
-  Candidate best;
+  return shadow.lightAbove ? kHi : kLo;
+}
+
+std::optional<ArmedCrossSection::Candidate> ArmedCrossSection::candidate(int armIndex, Vec2d d, double h) const {
+  const Arm& arm = arms_[size_t(armIndex)];
+  const Shadow shadow = shadowOf(arm, d);
+  const std::optional<double> k = translateMet(shadow, h);
+  if (!k) return std::nullopt;
+  Candidate met;
   const Vec2d dLocal = toLocal(arm, d);
-  best.localPoint = shape_.pointAtOffset(dLocal, h - o - k * shift);
-  best.depth = dot(arm.centre, d) + k * H_ * d.y + dot(best.localPoint, dLocal);
-  return best;
+  met.localPoint = shape_.pointAtOffset(dLocal, h - shadow.centre - *k * shadow.shift);
+  met.depth = dot(arm.centre, d) + *k * H_ * d.y + dot(met.localPoint, dLocal);
+  return met;
 }
 
 bool ArmedCrossSection::ownNeighbourShadows(int armIndex, Vec2d d, double h) const {
-  const Arm& arm = arms_[size_t(armIndex)];
-  const Vec2d e = across(d), eLocal = toLocal(arm, e);
-  const double shift = H_ * e.y;
-  if (shift == 0.0) return true;
-  const double k = dot(d, arm.separatingNormal) > 0.0 ? 1.0 : -1.0;
-  const double o = dot(arm.centre, e) + k * shift;
-  return h >= o - shape_.support(scaled(eLocal, -1.0)) && h <= o + shape_.support(eLocal);
+  const Shadow shadow = shadowOf(arms_[size_t(armIndex)], d);
+  if (shadow.shift == 0.0) return true;
+  const double neighbour = shadow.centre + (shadow.lightAbove ? 1.0 : -1.0) * shadow.shift;
+  return std::abs(h - neighbour) <= shadow.halfWidth;
 }
 
 std::optional<ArmHit> ArmedCrossSection::firstHit(Vec2d d, double h) const {
@@ -176,31 +181,34 @@ bool ArmedCrossSection::isReached(int armIndex, Vec2d p, Vec2d d) const {
 
 double ArmedCrossSection::coverage(Vec2d d) const {
   const Vec2d e = across(d);
-  const double shift = H_ * e.y, period = std::abs(shift);
+  const double period = std::abs(H_ * e.y);
   if (!(period > 0.0)) return 0.0;
   // Each arm's shadow along d, and the offsets of its coated side that face d: the facing half and
   // the coated half of a convex outline meet in one arc, whose offsets run counter-clockwise from
   // the tip (0, -1), or the silhouette where that tip faces away, to the tip (0, 1) or the other
   // silhouette (as BarbuleCrossSection::litArc bounds its arc).
   struct View {
-    double centre, plusSide, minusSide, coatedLo, coatedHi;
+    Shadow shadow;
+    double coatedLo, coatedHi;  // relative to the shadow's centre
   };
-  std::vector<View> views;
+  std::array<View, kMaxBarbuleArms> views{};
   std::vector<double> events;
+  events.reserve(4 * arms_.size() + crossings_.size() + 1);
   auto add = [&](double offset) { events.push_back(offset - period * std::floor(offset / period)); };
-  for (const Arm& arm : arms_) {
-    const Vec2d dLocal = toLocal(arm, d), eLocal = across(dLocal);
-    View v{dot(arm.centre, e), shape_.support(eLocal), shape_.support(scaled(eLocal, -1.0)), 0.0, 0.0};
-    const bool lowTipFaces = dLocal.y<0.0, highTipFaces = dLocal.y> 0.0;
-    v.coatedLo = lowTipFaces ? -eLocal.y : -v.minusSide;
-    v.coatedHi = highTipFaces ? eLocal.y : v.plusSide;
-    if (!lowTipFaces && !highTipFaces && !(dLocal.x > 0.0)) v.coatedLo = v.coatedHi = 0.0;
-    add(v.centre + v.plusSide);
-    add(v.centre - v.minusSide);
+  for (size_t a = 0; a < arms_.size(); ++a) {
+    const Vec2d dLocal = toLocal(arms_[a], d);
+    const double tip = dLocal.x;  // the tip (0, 1)'s offset from the centre; (0, -1)'s is minus it
+    View& v = views[a];
+    v.shadow = shadowOf(arms_[a], d);
+    const bool upperTipFaces = dLocal.y > 0.0, lowerTipFaces = dLocal.y < 0.0;
+    v.coatedLo = lowerTipFaces ? -tip : -v.shadow.halfWidth;
+    v.coatedHi = upperTipFaces ? tip : v.shadow.halfWidth;
+    if (!lowerTipFaces && !upperTipFaces && !(dLocal.x > 0.0)) v.coatedLo = v.coatedHi = 0.0;
+    add(v.shadow.centre + v.shadow.halfWidth);
+    add(v.shadow.centre - v.shadow.halfWidth);
     // The tips, where the coated side ends.
-    add(v.centre - eLocal.y);
-    add(v.centre + eLocal.y);
-    views.push_back(v);
+    add(v.shadow.centre - tip);
+    add(v.shadow.centre + tip);
   }
   for (const Vec2d& x : crossings_) add(dot(x, e));
   std::sort(events.begin(), events.end());
@@ -211,23 +219,21 @@ double ArmedCrossSection::coverage(Vec2d d) const {
     if (!(length > 0.0)) continue;
     const double h = events[i] + 0.5 * length;
     // Where the shadows of one arm's translates alone hold the line, the line meets the one on the
-    // light's side (as `candidate` takes it), and the offset relative to it says whether on its
-    // coated side; where several arms' shadows do, their entry points decide.
+    // light's side (translateMet), and the offset relative to it says whether on its coated side;
+    // where several arms' shadows do, their entry points decide.
     int holding = 0;
     double relative = 0.0;
-    size_t only = 0;
-    for (size_t a = 0; a < views.size(); ++a) {
-      const View& v = views[a];
-      const double lo = (h - v.centre - v.plusSide) / shift, hi = (h - v.centre + v.minusSide) / shift;
-      const double kLo = std::ceil(std::min(lo, hi)), kHi = std::floor(std::max(lo, hi));
-      if (kLo > kHi) continue;
+    const View* only = nullptr;
+    for (size_t a = 0; a < arms_.size(); ++a) {
+      const std::optional<double> k = translateMet(views[a].shadow, h);
+      if (!k) continue;
       ++holding;
-      relative = h - v.centre - (dot(d, arms_[a].separatingNormal) > 0.0 ? kHi : kLo) * shift;
-      only = a;
+      relative = h - views[a].shadow.centre - *k * views[a].shadow.shift;
+      only = &views[a];
     }
     if (holding == 0) continue;
     if (holding == 1) {
-      if (relative >= views[only].coatedLo && relative <= views[only].coatedHi) lit += length;
+      if (relative >= only->coatedLo && relative <= only->coatedHi) lit += length;
       continue;
     }
     std::optional<ArmHit> hit = firstHit(d, h);
@@ -236,14 +242,14 @@ double ArmedCrossSection::coverage(Vec2d d) const {
   return std::clamp(lit / period, 0.0, 1.0);
 }
 
-std::vector<ArmPoint> ArmedCrossSection::pointsWithNormal(Vec2d n) const {
-  std::vector<ArmPoint> points;
+ArmPoints ArmedCrossSection::pointsWithNormal(Vec2d n) const {
+  ArmPoints points;
   for (int a = 0; a < armCount(); ++a) {
     const Arm& arm = arms_[size_t(a)];
     const Vec2d local = toLocal(arm, n);
     if (!(local.x > 0.0)) continue;
     const Vec2d x = shape_.pointWithNormal(local);
-    points.push_back({a, plus(arm.centre, toWorld(arm, x)), shape_.radiusOfCurvature(local)});
+    points.points[size_t(points.count++)] = {a, plus(arm.centre, toWorld(arm, x)), shape_.radiusOfCurvature(local)};
   }
   return points;
 }

@@ -15,6 +15,7 @@
 //   sum over those pieces.
 // Coordinates as BarbuleCrossSection's: u along the vane normal, v across the barbules, angles
 // from u toward v; each arm's film-coated side is the half facing its own u axis.
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -43,6 +44,13 @@ struct ArmPoint {
   Vec2d point;
   double radiusOfCurvature = 0.0;
 };
+// At most one such point per arm, held without allocating (eval asks for them at every query).
+struct ArmPoints {
+  std::array<ArmPoint, kMaxBarbuleArms> points{};
+  int count = 0;
+  const ArmPoint* begin() const { return points.data(); }
+  const ArmPoint* end() const { return points.data() + count; }
+};
 
 class ArmedCrossSection {
  public:
@@ -59,7 +67,6 @@ class ArmedCrossSection {
   double contactSpacing() const { return contact_; }
   // The arm's centre (the central barbule's frame).
   Vec2d armCentre(int arm) const { return arms_[size_t(arm)].centre; }
-  const Superellipse& armShape() const { return shape_; }
 
   // What a line coming from far along the unit direction d first meets, at offset h along
   // d turned by +90 degrees; nullopt where it passes between the barbules.
@@ -72,7 +79,7 @@ class ArmedCrossSection {
   double coverage(Vec2d d) const;
   // The points of the arms' coated sides whose outward normal is the unit n, one per arm at
   // most, whether reached from anywhere or not.
-  std::vector<ArmPoint> pointsWithNormal(Vec2d n) const;
+  ArmPoints pointsWithNormal(Vec2d n) const;
 
  private:
   struct Arm {
@@ -88,10 +95,21 @@ class ArmedCrossSection {
   Vec2d toWorld(const Arm& arm, Vec2d l) const {
     return {l.x * arm.cosTilt - l.y * arm.sinTilt, l.x * arm.sinTilt + l.y * arm.cosTilt};
   }
-  // Of the translates of arm `arm` whose shadow along d holds offset h, the one a line is met by
-  // first (nearest the light); nullopt when none holds it.
+  // An arm's shadow seen along d, in offsets along d turned by +90 degrees: the central copy's is
+  // centred at `centre` with half-width `halfWidth` (the outline is centrally symmetric), translate
+  // k's is shifted by k `shift`, and `lightAbove` says whether translate k + 1 lies nearer the
+  // light than translate k (d . separatingNormal > 0).
+  struct Shadow {
+    double centre, halfWidth, shift;
+    bool lightAbove;
+  };
+  Shadow shadowOf(const Arm& arm, Vec2d d) const;
+  // Of the translates whose shadow holds offset h (consecutive ones), the one a line meets first:
+  // the one at the light's end; nullopt when none holds it, or along the vane (shift 0).
+  static std::optional<double> translateMet(const Shadow& shadow, double h);
+  // The translate of arm `arm` a line at offset h meets first, and where it enters it.
   struct Candidate {
-    double depth;  // where the line enters that translate, along d
+    double depth;  // along d
     Vec2d localPoint;
   };
   std::optional<Candidate> candidate(int arm, Vec2d d, double h) const;

@@ -6,7 +6,6 @@
 namespace columba {
 
 namespace {
-Vec2d toDouble(Vec2 v) { return {v.x, v.y}; }
 Vec2 toFloat(Vec2d v) { return {float(v.x), float(v.y)}; }
 // The superellipse of a cross-section, after its parameters are checked.
 Superellipse checkedProfile(float b, float exponent) {

@@ -58,12 +58,17 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
   readBarbuleFilm(props, p);
   if (props.has("melanin")) p.melanin = props.getSpectrum("melanin", 0.0f, SpectrumUse::Unbounded);
 
-  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
-    bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
-    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
-  }
+  throwIfProblem(props, p);
   implausible = findImplausibility(p);
   return p;
+}
+
+void throwIfProblem(const Properties& props, const BarbuleParameters& p) {
+  if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
+    // A film index given by Cauchy's law is named by the parameter the scene gave.
+    const bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
+    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
+  }
 }
 
 void readBarbuleFilm(const Properties& props, BarbuleParameters& p) {

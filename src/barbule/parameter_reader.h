@@ -23,6 +23,8 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
 // The film's part of them alone, into `p`: height, film_ior or film_cauchy_a and film_cauchy_b,
 // ext_ior, layers (for barbule BSDFs with another cross-section); unchecked, as findProblem checks.
 void readBarbuleFilm(const Properties& props, BarbuleParameters& p);
+// Throws props.error naming the parameter for what findProblem finds in `p`.
+void throwIfProblem(const Properties& props, const BarbuleParameters& p);
 
 // The scene parameter of layer stack `index`: "layers" for 0, else "layers_<index>".
 std::string layerStackParameter(int index);

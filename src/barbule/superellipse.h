@@ -10,11 +10,14 @@
 #include <cmath>
 #include <optional>
 
+#include "core/vector.h"
+
 namespace columba {
 
 struct Vec2d {
   double x = 0.0, y = 0.0;
 };
+inline Vec2d toDouble(Vec2 v) { return {v.x, v.y}; }
 
 class Superellipse {
  public:

@@ -30,8 +30,6 @@ namespace columba {
 
 namespace {
 
-Vec2d toDouble(Vec2 v) { return {v.x, v.y}; }
-
 // The half vector of (wi, wo) with its in-plane part, where it can be one of the barbules'
 // normals (|theta_m| below thetaD).
 struct HalfVector {
@@ -53,7 +51,7 @@ std::optional<HalfVector> barbuleHalfVector(const Vec3& wi, const Vec3& wo) {
 }  // namespace
 
 BarbuleArmsBSDF::BarbuleArmsBSDF(ArmedCrossSection geometry, BarbuleParameters film)
-    : geometry_(std::move(geometry)), film_(std::move(film)), profileExponent_(film_.profileExponent) {}
+    : geometry_(std::move(geometry)), film_(std::move(film)) {}
 
 float BarbuleArmsBSDF::coverage(const Vec3& omegaI) const {
   // Light crossing from below follows the line of light along -w from above (as barbulebsdf's).
@@ -189,11 +187,8 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
   if (!(film.b >= kMinArmSemiAxis && film.b <= kMaxArmSemiAxis))
     throw props.error("b", "an arm's semi-axis must lie between 1e-4 and 100 (its half-length is 1)");
   if (!(H >= 0.0f) || !std::isfinite(H)) throw props.error("H", "the barbule spacing must not be negative");
-  film.H = std::max(H, 1.0f);  // for findProblem's check of H; the spacing used is set below
-  if (std::optional<BarbuleParameterProblem> problem = findProblem(film)) {
-    const bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
-    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
-  }
+  film.H = std::max(H, 1.0f);  // for the check of H below; the spacing used is set after it
+  throwIfProblem(props, film);
   if (std::optional<BarbuleParameterProblem> odd = findImplausibility(film))
     warn(props.locationOf(odd->parameter), "barbulearms, parameter '" + odd->parameter + "': " + odd->message);
 

@@ -37,7 +37,7 @@ class BarbuleArmsBSDF : public BSDF, public BarbuleLobeSource {
   bool hasPassThrough() const override { return true; }
   void noteValuesGivenByShape(const ShapePointValues& given) const override;
   // The arms' flat faces above p = 3, as barbulebsdf's (docs/model.md, "Which estimators converge").
-  bool hasSingularValues() const override { return profileExponent_ > 3.0; }
+  bool hasSingularValues() const override { return film_.profileExponent > 3.0f; }
 
   const ArmedCrossSection& geometry() const { return geometry_; }
   // The film's parameters, with the cross-section's b, profile exponent, mu and the spacing H it
@@ -60,7 +60,6 @@ class BarbuleArmsBSDF : public BSDF, public BarbuleLobeSource {
 
   ArmedCrossSection geometry_;
   BarbuleParameters film_;
-  double profileExponent_;
   std::shared_ptr<const PerPointParameterSources> heightSource_;
   SourceLocation declaredAt_;
   // Whether a feather's per-vertex cross-section values were warned of (shared: the BSDF stays movable).

@@ -151,7 +151,7 @@ TEST(ArmedCrossSection, APointIsReachedExactlyWhereTheLineThroughItMeetsItFirst)
     int reached = 0, blocked = 0;
     for (int i = 0; i < 400; ++i) {
       const Vec2d n = unitAt(rng.nextDouble() * 2.0 * kPiDouble);
-      std::vector<ArmPoint> points = g.pointsWithNormal(n);
+      const ArmPoints points = g.pointsWithNormal(n);
       const double angle = (rng.nextDouble() - 0.5) * 2.6 + (i % 2 ? kPiDouble : 0.0);
       const Vec2d d = unitAt(angle);
       for (const ArmPoint& p : points) {
