@@ -71,6 +71,28 @@ RefractiveIndex indexFrom(const py::object& value, const std::string& parameter)
   return RefractiveIndex::constant(value.cast<float>());
 }
 
+// An index given as a name or number (`name`), or for the film as (a, b) of Cauchy's law
+// (film_cauchy_a, film_cauchy_b).
+void setIndex(Properties& props, const std::string& name, const py::object& value) {
+  if (value.is_none()) return;
+  if (py::isinstance<py::str>(value)) {
+    props.setString(name, value.cast<std::string>());
+  } else if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+    auto ab = value.cast<std::vector<float>>();
+    if (ab.size() != 2) throw props.error(name, "a Cauchy index is given as (a, b), n = a + b / lambda^2 (nm)");
+    if (name != "film_ior") throw props.error(name, "the surrounding medium needs a constant index");
+    props.setFloat("film_cauchy_a", ab[0]);
+    props.setFloat("film_cauchy_b", ab[1]);
+  } else {
+    props.setFloat(name, value.cast<float>());
+  }
+}
+
+// A keyword argument given as a number, as the parameter `name` (none: the plug-in's default).
+void setFloatIfGiven(Properties& props, const char* name, const py::object& value) {
+  if (!value.is_none()) props.setFloat(name, value.cast<float>());
+}
+
 class PyBarbule {
  public:
   PyBarbule(const py::object& b, const py::object& H, const py::object& mu, const py::object& height,
@@ -108,16 +130,13 @@ class PyBarbule {
     props.tag = "bsdf";
     props.type = "barbulebsdf";
     if (!preset.is_none()) props.setString("preset", preset.cast<std::string>());
-    auto take = [&](const char* name, const py::object& value) {
-      if (!value.is_none()) props.setFloat(name, value.cast<float>());
-    };
-    take("b", b);
-    take("H", H);
-    take("mu", mu);
-    take("height", height);
-    take("phi_0", phi0);
-    take("phi_1", phi1);
-    take("profile_exponent", profileExponent);
+    setFloatIfGiven(props, "b", b);
+    setFloatIfGiven(props, "H", H);
+    setFloatIfGiven(props, "mu", mu);
+    setFloatIfGiven(props, "height", height);
+    setFloatIfGiven(props, "phi_0", phi0);
+    setFloatIfGiven(props, "phi_1", phi1);
+    setFloatIfGiven(props, "profile_exponent", profileExponent);
     if (!trtOffsets.is_none()) props.setInt("trt_offsets", trtOffsets.cast<int>());
     if (!trtAngles.is_none()) props.setInt("trt_angles", trtAngles.cast<int>());
     setIndex(props, "film_ior", filmIOR);
@@ -145,23 +164,6 @@ class PyBarbule {
     return {p, readBarbuleQuadrature(props)};
   }
 
-  // An index given as a name or number (`name`), or for the film as (a, b) of Cauchy's law
-  // (film_cauchy_a, film_cauchy_b).
-  static void setIndex(Properties& props, const std::string& name, const py::object& value) {
-    if (value.is_none()) return;
-    if (py::isinstance<py::str>(value)) {
-      props.setString(name, value.cast<std::string>());
-    } else if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
-      auto ab = value.cast<std::vector<float>>();
-      if (ab.size() != 2) throw props.error(name, "a Cauchy index is given as (a, b), n = a + b / lambda^2 (nm)");
-      if (name != "film_ior") throw props.error(name, "the surrounding medium needs a constant index");
-      props.setFloat("film_cauchy_a", ab[0]);
-      props.setFloat("film_cauchy_b", ab[1]);
-    } else {
-      props.setFloat(name, value.cast<float>());
-    }
-  }
-
   BarbuleBSDF bsdf_;
 };
 
@@ -182,26 +184,13 @@ class PyArms {
         text += (text.empty() ? "" : ", ") + fmt::format("{}", tilt);
       props.setString("arm_tilts", text);
     }
-    auto take = [&](const char* name, const py::object& value) {
-      if (!value.is_none()) props.setFloat(name, value.cast<float>());
-    };
-    take("b", b);
-    take("profile_exponent", profileExponent);
-    take("mu", mu);
-    take("H", H);
-    take("height", height);
-    if (!filmIOR.is_none()) {
-      if (py::isinstance<py::str>(filmIOR))
-        props.setString("film_ior", filmIOR.cast<std::string>());
-      else
-        props.setFloat("film_ior", filmIOR.cast<float>());
-    }
-    if (!extIOR.is_none()) {
-      if (py::isinstance<py::str>(extIOR))
-        props.setString("ext_ior", extIOR.cast<std::string>());
-      else
-        props.setFloat("ext_ior", extIOR.cast<float>());
-    }
+    setFloatIfGiven(props, "b", b);
+    setFloatIfGiven(props, "profile_exponent", profileExponent);
+    setFloatIfGiven(props, "mu", mu);
+    setFloatIfGiven(props, "H", H);
+    setFloatIfGiven(props, "height", height);
+    setIndex(props, "film_ior", filmIOR);
+    setIndex(props, "ext_ior", extIOR);
     if (!layers.is_none()) props.setString("layers", layers.cast<std::string>());
     bsdf_ = std::static_pointer_cast<BarbuleArmsBSDF>(makeBarbuleArmsBSDF(props));
   }
