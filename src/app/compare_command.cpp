@@ -7,6 +7,7 @@
 
 #include "app/jnd_comparison.h"
 #include "io/image.h"
+#include "io/output_directory.h"
 
 namespace columba {
 
@@ -20,16 +21,19 @@ struct CompareOptions {
 };
 
 int compareColourDistances(const CompareOptions& options) {
-  if (!options.output.empty() && checkOutputImagePath(options.output, true) != ImageFormat::EXR)
-    throw std::runtime_error("-o '" + options.output + "': the map of distances is written as an .exr (and its .png)");
+  if (!options.output.empty()) {
+    if (checkOutputImagePath(options.output, true) != ImageFormat::EXR)
+      throw std::runtime_error("-o '" + options.output +
+                               "': the map of distances is written as an .exr (and its .png)");
+    for (const std::string& out : {options.output, pngBesideMap(options.output)})
+      refuseWritingOverAnInput(out, {options.a, options.b}, "the map of distances", "the image", "the comparison");
+  }
   const EXRImageFile a = readEXRFile(options.a), b = readEXRFile(options.b);
   JndOptions jnd;
   jnd.observer = options.observer;
   jnd.output = options.output;
-  if (!options.regionA.empty())
-    jnd.regionA = parsePixelRect(options.regionA, a.image.width, a.image.height, "--region");
-  if (!options.regionB.empty())
-    jnd.regionB = parsePixelRect(options.regionB, b.image.width, b.image.height, "--region-b");
+  if (!options.regionA.empty()) jnd.regionA = parsePixelRect(options.regionA, "--region");
+  if (!options.regionB.empty()) jnd.regionB = parsePixelRect(options.regionB, "--region-b");
   if (jnd.regionB && !jnd.regionA)
     throw std::runtime_error("--region-b needs --region (the region of the first image)");
   if (jnd.regionA && !jnd.output.empty())

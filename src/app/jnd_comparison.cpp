@@ -58,11 +58,30 @@ std::optional<ConeCatches> regionCatches(const Image& image, const std::vector<s
 
 // The observer the comparison uses: `observer`, else the one `a`'s metadata names, else the CIE 1931
 // observer whose RGB every render records.
+// The observer an image's cone channels were rendered for, as its Observer attribute names it
+// ("" for none).
+std::string recordedObserver(const EXRImageFile& image) {
+  const std::string recorded = metadataValue(image.metadata, "Observer");
+  return recorded.substr(0, recorded.find(':'));
+}
+
 std::string observerName(const EXRImageFile& a, const std::string& observer) {
   if (!observer.empty()) return observer;
-  const std::string recorded = metadataValue(a.metadata, "Observer");
-  const std::string name = recorded.substr(0, recorded.find(':'));
+  const std::string name = recordedObserver(a);
   return name.empty() ? "cie1931" : name;
+}
+
+// Catches are read as the image records them: an observer's noise applied to another's catches
+// would be a distance under a label that is not the image's.
+void requireRenderedFor(const Observer& observer, const EXRImageFile& image, const std::string& path,
+                        const std::string& given) {
+  const std::string recorded = recordedObserver(image);
+  if (!recorded.empty() && recorded != observer.name)
+    throw std::runtime_error(
+        fmt::format("'{}' records the catches of the {} observer (its Observer attribute), not of {}: compare it with "
+                    "--observer {} (or render it for {})",
+                    path, recorded, given.empty() ? "the " + observer.name + " observer" : "--observer " + given,
+                    recorded, observer.name));
 }
 
 Observer birdObserver(const std::string& name) {
@@ -72,6 +91,21 @@ Observer birdObserver(const std::string& name) {
         "give the table the image was rendered with as --observer)",
         name, builtinObserverNames()));
   return observerNamedOrTabulated(name);
+}
+
+// The regions the comparison reads, each checked against the image it is read from.
+std::pair<PixelRect, PixelRect> regionsInside(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA,
+                                              const std::string& pathB, const JndOptions& options) {
+  const PixelRect ra = *options.regionA, rb = options.regionB ? *options.regionB : ra;
+  auto requireInside = [](const PixelRect& r, const Image& image, const std::string& path, const char* what) {
+    if (r.x0 < 0 || r.y0 < 0 || r.x1 > image.width || r.y1 > image.height || r.empty())
+      throw std::runtime_error(fmt::format("{} [{}, {}) x [{}, {}) does not lie inside '{}', which is {} x {} pixels",
+                                           what, r.x0, r.x1, r.y0, r.y1, path, image.width, image.height));
+  };
+  requireInside(ra, a.image, pathA, "--region");
+  requireInside(rb, b.image, pathB,
+                options.regionB ? "--region-b" : "--region (read from both images without --region-b)");
+  return {ra, rb};
 }
 
 Vec3 rgbAt(const Image& image, size_t p) { return {image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]}; }
@@ -99,7 +133,7 @@ void reportPerPixel(const std::vector<double>& distances, size_t pixels, const I
       "{} per pixel over {} of {} pixels{}: mean {:.3f}, median {:.3f}, 95th percentile {:.3f}, largest {:.3f} {}\n",
       what, sorted.size(), pixels, skipped, mean, quantile(0.5), quantile(0.95), sorted.back(), unit);
   if (options.output.empty()) return;
-  const std::string png = options.output.substr(0, options.output.size() - 4) + ".png";
+  const std::string png = pngBesideMap(options.output);
   makeOutputDirectory(options.output, directoryOf(options.output));
   writeEXRAndPNG(options.output, png, map, {{"Quantity", quantity}, {"Images", pathA + ", " + pathB}});
   fmt::print("wrote {}, {}\n", options.output, png);
@@ -109,7 +143,7 @@ void reportPerPixel(const std::vector<double>& distances, size_t pixels, const I
 void compareForHuman(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
                      const JndOptions& options) {
   if (options.regionA) {
-    const PixelRect ra = *options.regionA, rb = options.regionB ? *options.regionB : ra;
+    const auto [ra, rb] = regionsInside(a, b, pathA, pathB, options);
     const CIELab la = labFromLinearRGB(regionMeanRGB(a.image, ra)), lb = labFromLinearRGB(regionMeanRGB(b.image, rb));
     const double dE76 = deltaE1976(la, lb);
     fmt::print(
@@ -138,7 +172,9 @@ void compareForHuman(const EXRImageFile& a, const EXRImageFile& b, const std::st
 }
 }  // namespace
 
-PixelRect parsePixelRect(const std::string& text, int width, int height, const std::string& what) {
+std::string pngBesideMap(const std::string& exr) { return exr.substr(0, exr.size() - 4) + ".png"; }
+
+PixelRect parsePixelRect(const std::string& text, const std::string& what) {
   std::vector<int> v;
   std::stringstream in(text);
   for (std::string part; std::getline(in, part, ',');) {
@@ -151,9 +187,8 @@ PixelRect parsePixelRect(const std::string& text, int width, int height, const s
   if (v.size() != 4)
     throw std::runtime_error(fmt::format("{} '{}': give X0,Y0,X1,Y1 (pixels [X0, X1) x [Y0, Y1))", what, text));
   const PixelRect r{v[0], v[1], v[2], v[3]};
-  if (r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.empty())
-    throw std::runtime_error(fmt::format("{} '{}' is not a non-empty rectangle inside the image of {} x {} pixels",
-                                         what, text, width, height));
+  if (r.x0 < 0 || r.y0 < 0 || r.empty())
+    throw std::runtime_error(fmt::format("{} '{}' is not a non-empty rectangle of pixels", what, text));
   return r;
 }
 
@@ -165,10 +200,12 @@ void compareColours(const EXRImageFile& a, const EXRImageFile& b, const std::str
   const std::string name = observerName(a, options.observer);
   if (name == "cie1931") return compareForHuman(a, b, pathA, pathB, options);
   const Observer observer = birdObserver(name);
+  requireRenderedFor(observer, a, pathA, options.observer);
+  requireRenderedFor(observer, b, pathB, options.observer);
   const std::vector<size_t> ia = channelIndices(a.image, observer, pathA),
                             ib = channelIndices(b.image, observer, pathB);
   if (options.regionA) {
-    const PixelRect ra = *options.regionA, rb = options.regionB ? *options.regionB : ra;
+    const auto [ra, rb] = regionsInside(a, b, pathA, pathB, options);
     const std::optional<ConeCatches> qa = regionCatches(a.image, ia, ra), qb = regionCatches(b.image, ib, rb);
     if (!qa || !qb) throw std::runtime_error("a region catches no light in some cone: its colour has no distance");
     fmt::print(

@@ -17,12 +17,16 @@ struct JndOptions {
 
 // Prints the distances (per pixel: how many pixels, their mean, median, 95th percentile and
 // largest dS or dE2000; per region: the distance of the regions' mean catches or colours) and
-// writes the per-pixel map.
+// writes the per-pixel map. A region must lie inside each image it is read from (A's region, and
+// B's, which is A's unless given): std::runtime_error naming the image, its size and the region.
 void compareColours(const EXRImageFile& a, const EXRImageFile& b, const std::string& pathA, const std::string& pathB,
                     const JndOptions& options);
 
-// "X0,Y0,X1,Y1" as a rectangle of pixels [X0, X1) x [Y0, Y1) inside an image of width x height;
-// throws std::runtime_error naming `what` and the text.
-PixelRect parsePixelRect(const std::string& text, int width, int height, const std::string& what);
+// The PNG written beside the map of distances OUT.exr: OUT.png.
+std::string pngBesideMap(const std::string& exr);
+
+// "X0,Y0,X1,Y1" as a non-empty rectangle of pixels [X0, X1) x [Y0, Y1); throws std::runtime_error
+// naming `what` and the text. compareColours checks that it lies inside each image it is read from.
+PixelRect parsePixelRect(const std::string& text, const std::string& what);
 
 }  // namespace columba

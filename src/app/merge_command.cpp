@@ -28,8 +28,8 @@ std::pair<std::string, std::string> outputPair(const std::string& output, const 
     exr.replace_extension(".exr");
   checkOutputImagePath(exr.string(), true);
   checkOutputImagePath(png.string(), true);
-  refuseWritingOverAPiece(exr.string(), pieces);
-  refuseWritingOverAPiece(png.string(), pieces);
+  for (const std::filesystem::path& out : {exr, png})
+    refuseWritingOverAnInput(out.string(), pieces, "the merged image", "the piece", "the merge");
   return {exr.string(), png.string()};
 }
 

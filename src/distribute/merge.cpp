@@ -301,16 +301,4 @@ MergedImage mergePieceFiles(const std::vector<std::string>& paths) {
   return mergePieces(pieces);
 }
 
-void refuseWritingOverAPiece(const std::string& output, const std::vector<std::string>& pieces) {
-  namespace fs = std::filesystem;
-  std::error_code outputError;
-  const fs::path resolved = fs::weakly_canonical(output, outputError);
-  for (const std::string& piece : pieces) {
-    std::error_code error;
-    if (fs::equivalent(output, piece, error) || (!outputError && fs::weakly_canonical(piece, error) == resolved))
-      throw std::runtime_error(fmt::format(
-          "cannot write the merged image to '{}': it is the piece '{}', which the merge reads", output, piece));
-  }
-}
-
 }  // namespace columba

@@ -40,8 +40,4 @@ struct MergedImage {
 MergedImage mergePieces(const std::vector<Piece>& pieces);
 MergedImage mergePieceFiles(const std::vector<std::string>& paths);
 
-// Throws std::runtime_error naming both when `output`, a file the merge is to write, is one of
-// the pieces it reads: the same path, or the same file by another name (a link, `..`).
-void refuseWritingOverAPiece(const std::string& output, const std::vector<std::string>& pieces);
-
 }  // namespace columba

@@ -50,4 +50,16 @@ void makeOutputDirectory(const std::string& path, const std::string& dir) {
     throw std::runtime_error("cannot write '" + path + "': cannot make the directory '" + dir + "': " + ec.message());
 }
 
+void refuseWritingOverAnInput(const std::string& output, const std::vector<std::string>& inputs,
+                              const std::string& what, const std::string& input, const std::string& reader) {
+  std::error_code outputError;
+  const fs::path resolved = fs::weakly_canonical(output, outputError);
+  for (const std::string& in : inputs) {
+    std::error_code error;
+    if (fs::equivalent(output, in, error) || (!outputError && fs::weakly_canonical(in, error) == resolved))
+      throw std::runtime_error("cannot write " + what + " to '" + output + "': it is " + input + " '" + in +
+                               "', which " + reader + " reads");
+  }
+}
+
 }  // namespace columba

@@ -2,6 +2,7 @@
 // The directories outputs go in: made when missing, as `mkdir -p` makes them, after a check
 // before any work that they can be made.
 #include <string>
+#include <vector>
 
 namespace columba {
 
@@ -20,5 +21,12 @@ void checkOutputDirectory(const std::string& path, const std::string& dir);
 // Makes `dir` and every missing directory above it; throws std::runtime_error naming `path`
 // where one cannot be made. Nothing is done for a directory that exists.
 void makeOutputDirectory(const std::string& path, const std::string& dir);
+
+// Refuses to write `output` where it is one of `inputs` (the same file by another name included):
+// throws std::runtime_error "cannot write WHAT to 'out': it is the INPUT 'in', which READER reads",
+// e.g. what "the merged image", input "the piece", reader "the merge". Checked before any output
+// is written, so that a command never replaces what it reads.
+void refuseWritingOverAnInput(const std::string& output, const std::vector<std::string>& inputs,
+                              const std::string& what, const std::string& input, const std::string& reader);
 
 }  // namespace columba

@@ -65,9 +65,12 @@ TEST_F(JndComparison, ImagesWithoutConesAndBadRegionsAreRefused) {
   EXPECT_NE(r.output.find("has no UVS channel"), std::string::npos) << r.output;
   r = run("compare --jnd " + a + " " + a + " --region 0,0,3,1");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.output.find("--region '0,0,3,1' is not a non-empty rectangle inside the image of 2 x 1"),
+  EXPECT_NE(r.output.find("--region [0, 3) x [0, 1) does not lie inside '" + a + "', which is 2 x 1 pixels"),
             std::string::npos)
       << r.output;
+  r = run("compare --jnd " + a + " " + a + " --region 1,0,1,1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--region '1,0,1,1' is not a non-empty rectangle of pixels"), std::string::npos) << r.output;
   r = run("compare --jnd " + a + " " + a + " --observer budgie");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("unknown observer 'budgie'"), std::string::npos) << r.output;
@@ -98,4 +101,76 @@ TEST_F(JndComparison, RendersWithoutConesAreComparedAsAHumanSeesThem) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find(fmt::format("dE2000 = {:.3f}, dE*ab = 10.000 (about 4.35 JND", 10.0 / sl)), std::string::npos)
       << r.output;
+}
+
+// A region given for A alone is read from B too: it must lie inside B, however much larger A is
+// (a 64 x 64 A against a 2 x 1 B read past B's pixels, and a 2048-square one crashed).
+TEST_F(JndComparison, ARegionMustLieInsideEachImageItIsReadFrom) {
+  const std::string small = coneImage("small.exr", {1, 1, 1, 1, 1, 1, 1, 1});
+  Image image(64, 64);
+  image.cones.names = {"UVS", "SWS", "MWS", "LWS"};
+  image.cones.values.assign(64 * 64 * 4, 1.0f);
+  const std::string large = (dir_ / "large.exr").string();
+  writeEXR(large, image, {{"Observer", "bluetit: quantum catches of UVS, SWS, MWS, LWS"}});
+  for (const char* observer : {"", " --observer cie1931"}) {
+    CommandResult r = run("compare --jnd " + large + " " + small + " --region 0,0,64,64" + observer);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("--region (read from both images without --region-b) [0, 64) x [0, 64) does not lie "
+                            "inside '" +
+                            small + "', which is 2 x 1 pixels"),
+              std::string::npos)
+        << r.output;
+    r = run("compare --jnd " + large + " " + small + " --region 0,0,2,2 --region-b 0,0,2,2" + observer);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("--region-b [0, 2) x [0, 2) does not lie inside '" + small + "'"), std::string::npos)
+        << r.output;
+    r = run("compare --jnd " + large + " " + small + " --region 0,0,2,1" + observer);
+    EXPECT_EQ(r.status, 0) << r.output;
+  }
+}
+
+// The map of distances never replaces an image the comparison reads, by either of its names.
+TEST_F(JndComparison, TheMapIsNotWrittenOverAnInput) {
+  const std::string a = coneImage("a.exr", {1, 1, 1, 1, 1, 1, 1, 1});
+  const std::string b = coneImage("b.exr", {1, 1, 1, 2, 1, 1, 1, 1});
+  const auto before = fs::file_size(a);
+  for (const std::string& output : {a, b, (dir_ / "sub/../a.exr").string()}) {
+    const CommandResult r = run("compare --jnd " + a + " " + b + " -o " + output);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("which the comparison reads"), std::string::npos) << r.output;
+  }
+  // The PNG beside the map is the input: x.png as A (an EXR named .png is still refused as A's file).
+  const std::string png = (dir_ / "a.png").string();
+  fs::copy_file(a, png);
+  const CommandResult r = run("compare --jnd " + png + " " + b + " -o " + (dir_ / "a.exr").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("cannot write the map of distances to '" + png + "'"), std::string::npos) << r.output;
+  EXPECT_EQ(fs::file_size(a), before);
+  EXPECT_EQ(readEXR(a).cones.values[3], 1.0f);
+}
+
+// Catches are compared as the observer they were rendered for: --observer naming another (avg.v's
+// noise on the blue tit's catches printed "avg.v observer: dS = ...") is refused, naming both, and
+// so are two images rendered for different observers.
+TEST_F(JndComparison, CatchesAreNotRelabelledAsAnotherObserver) {
+  const std::string a = coneImage("a.exr", {1, 1, 1, 1, 1, 1, 1, 1});
+  const std::string b = coneImage("b.exr", {1, 1, 1, 2, 1, 1, 1, 1});
+  CommandResult r = run("compare --jnd " + a + " " + b + " --observer avg.v");
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("'" + a +
+                          "' records the catches of the bluetit observer (its Observer attribute), not "
+                          "of --observer avg.v"),
+            std::string::npos)
+      << r.output;
+  Image image(2, 1);
+  image.cones.names = {"UVS", "SWS", "MWS", "LWS"};
+  image.cones.values.assign(8, 1.0f);
+  const std::string violet = (dir_ / "violet.exr").string();
+  writeEXR(violet, image, {{"Observer", "avg.v: quantum catches of UVS, SWS, MWS, LWS"}});
+  r = run("compare --jnd " + a + " " + violet);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("'" + violet + "' records the catches of the avg.v observer"), std::string::npos) << r.output;
+  // The observer the images record, named or not, and the human observer's RGB, are compared.
+  EXPECT_EQ(run("compare --jnd " + a + " " + b + " --observer bluetit").status, 0);
+  EXPECT_EQ(run("compare --jnd " + a + " " + violet + " --observer cie1931").status, 0);
 }
