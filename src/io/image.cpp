@@ -5,6 +5,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
@@ -76,6 +77,12 @@ void writeEXRFile(const std::string& file, const Image& image, const ImageMetada
   auto slice = [&](const float* first, size_t x, size_t y) { return Imf::Slice::Make(Imf::FLOAT, first, data, x, y); };
   // The colour channels' names and values, `names.size()` floats per pixel.
   const EXRColour colour = window ? EXRColour::RGB : image.exrColour;
+  // What the colour channels mean, for a compositor: linear Rec. 709 / sRGB primaries with a D65
+  // white (OpenEXR's default chromaticities), or for XYZ the primaries that make R, G, B the CIE
+  // X, Y, Z (red (1, 0), green (0, 1), blue (0, 0), white the equal-energy (1/3, 1/3)).
+  Imf::addChromaticities(header, colour == EXRColour::XYZ
+                                     ? Imf::Chromaticities({1, 0}, {0, 1}, {0, 0}, {1.0f / 3.0f, 1.0f / 3.0f})
+                                     : Imf::Chromaticities());
   std::vector<const char*> names = {"R", "G", "B"};
   std::vector<float> converted;
   if (colour != EXRColour::RGB) {

@@ -5,6 +5,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <png.h>
 #include <sys/wait.h>
@@ -186,6 +187,35 @@ TEST_F(ImageFiles, LuminanceAndXYZFilesHoldTheColoursYAndXYZ) {
   // The pieces of a split render stay RGB, so that merging them is exact.
   writeEXRWindow(path("piece.exr"), image, {0, 0, 4, 1}, 4, 2);
   EXPECT_EQ(exrChannels(path("piece.exr"), {}).second, (std::vector<std::string>{"B", "G", "R"}));
+}
+
+// A compositor reads what the colour channels mean from the chromaticities attribute: Rec. 709 /
+// sRGB primaries and D65's white (ITU-R BT.709: red 0.64, 0.33; green 0.30, 0.60; blue 0.15, 0.06;
+// white 0.3127, 0.3290) for RGB, luminance and the pieces of a split render; for XYZ the
+// primaries that make the channels X, Y and Z.
+TEST_F(ImageFiles, EXRsSayWhatTheirColourChannelsMean) {
+  auto chromaticities = [](const std::string& file) {
+    Imf::InputFile in(file.c_str());
+    const auto* attribute = in.header().findTypedAttribute<Imf::ChromaticitiesAttribute>("chromaticities");
+    EXPECT_NE(attribute, nullptr) << file;
+    return attribute ? attribute->value() : Imf::Chromaticities({0, 0}, {0, 0}, {0, 0}, {0, 0});
+  };
+  auto expectPoints = [](const Imf::Chromaticities& c, const std::vector<float>& xy, const std::string& file) {
+    const float got[8] = {c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y};
+    for (size_t i = 0; i < 8; ++i) EXPECT_NEAR(got[i], xy[i], 1e-4f) << file << " coordinate " << i;
+  };
+  const std::vector<float> rec709 = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+  Image image(2, 1);
+  for (EXRColour colour : {EXRColour::RGB, EXRColour::Luminance}) {
+    image.exrColour = colour;
+    writeEXR(path("c.exr"), image);
+    expectPoints(chromaticities(path("c.exr")), rec709, "c.exr");
+  }
+  writeEXRWindow(path("piece.exr"), image, {0, 0, 2, 1}, 2, 2);
+  expectPoints(chromaticities(path("piece.exr")), rec709, "piece.exr");
+  image.exrColour = EXRColour::XYZ;
+  writeEXR(path("xyz.exr"), image);
+  expectPoints(chromaticities(path("xyz.exr")), {1, 0, 0, 1, 0, 0, 1.0f / 3.0f, 1.0f / 3.0f}, "xyz.exr");
 }
 
 TEST_F(ImageFiles, ReadingAMissingOrBrokenEXRNamesThePath) {
