@@ -539,6 +539,8 @@ void addBSDFCommand(CLI::App& app) {
   cmd->callback([o, given, cmd] {
     if (!o->observer.empty() && std::find(o->modes.begin(), o->modes.end(), "specular") == o->modes.end())
       throw CLI::ValidationError("--observer", "measures the specular spectra's cone catches: add --mode specular");
+    if (cmd->count("--arm-tilts") > 0 && o->armTilts.find_first_not_of(" \t") == std::string::npos)
+      throw CLI::ValidationError("--arm-tilts", "gives no arm: give the arms' tilts in degrees, e.g. '-30,0,30'");
     resolveParameters(*o, *cmd, *given);
     runBSDF(*o);
   });

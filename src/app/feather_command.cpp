@@ -44,14 +44,18 @@ std::vector<std::pair<std::string, std::string>> checkedBarbuleParameters(const 
   }
   std::optional<BarbuleParameterProblem> odd;
   readBarbuleParameters(props, odd);
-  if (purpleStack > 0) {
-    const size_t stacks = readNumberedLayerStacks(props).size();
-    if (stacks != size_t(purpleStack))
-      throw CLI::ValidationError(
-          "--purple-stack", fmt::format("the purple feathers choose layer stack {}: give --barbule layers_1=... to "
-                                        "{}=... (numbered without gaps), and none beyond it ({} given)",
-                                        purpleStack, layerStackParameter(purpleStack), stacks));
-  }
+  readBarbuleQuadrature(props);  // trt_offsets, trt_angles
+  const size_t stacks = readNumberedLayerStacks(props).size();
+  if (stacks != size_t(purpleStack))
+    throw CLI::ValidationError(
+        "--purple-stack",
+        purpleStack == 0
+            ? fmt::format("--barbule {} would have no effect: no feather chooses a numbered layer stack (give "
+                          "--purple-stack N for the purple feathers to choose layers_N)",
+                          layerStackParameter(1))
+            : fmt::format("the purple feathers choose layer stack {}: give --barbule layers_1=... to {}=... "
+                          "(numbered without gaps), and none beyond it ({} given)",
+                          purpleStack, layerStackParameter(purpleStack), stacks));
   try {
     props.checkAllUsed();
   } catch (const std::exception& e) {
@@ -90,8 +94,11 @@ void addFeatherCommand(CLI::App& app) {
       ->needs(neck);
   cmd->add_option("--barbs", settings->options.barbsPerSide,
                   "Barbs per side of each feather (default: as many as lie edge to edge at the default barbwidth)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_flag("--binary", settings->options.binary, "Write binary_little_endian instead of ASCII");
+      ->check(CLI::PositiveNumber)
+      ->excludes(bird);
+  cmd->add_flag("--binary", settings->options.binary,
+                "Write binary_little_endian instead of ASCII (the bird's templates are always binary)")
+      ->excludes(bird);
   // The colour: the barbules' keratin cortex thickness (docs/feather-ply.md).
   FeatherGenerationOptions& o = settings->options;
   cmd->add_option("--height", o.greenHeight, "Cortex thickness of the green barbules (a single feather's), um")

@@ -65,9 +65,11 @@ BarbuleParameters readBarbuleParameters(const Properties& props, std::optional<B
 
 void throwIfProblem(const Properties& props, const BarbuleParameters& p) {
   if (std::optional<BarbuleParameterProblem> problem = findProblem(p)) {
-    // A film index given by Cauchy's law is named by the parameter the scene gave.
+    // A film index given by Cauchy's law is named by the parameter the scene gave: b where the
+    // index is too large and b was given, a otherwise.
     const bool cauchy = problem->parameter == "film_ior" && props.has("film_cauchy_a");
-    throw props.error(cauchy ? "film_cauchy_a" : problem->parameter, problem->message);
+    const bool large = !(p.filmIOR.maximumVisible() <= kMaxFilmIndex) && props.has("film_cauchy_b");
+    throw props.error(cauchy ? (large ? "film_cauchy_b" : "film_cauchy_a") : problem->parameter, problem->message);
   }
 }
 

@@ -74,6 +74,11 @@ std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
     return BarbuleParameterProblem{"film_ior",
                                    "the film must be optically denser than the surrounding medium at "
                                    "every wavelength from 300 to 830 nm"};
+  if (!(p.filmIOR.maximumVisible() <= kMaxFilmIndex))
+    return BarbuleParameterProblem{
+        "film_ior", fmt::format("the film's index reaches {:g} between 300 and 830 nm; an index above {:g} is no "
+                                "material's (Cauchy's n = a + b / lambda^2 takes lambda in nm)",
+                                p.filmIOR.maximumVisible(), kMaxFilmIndex)};
   if (p.melanin)
     for (float l = kSpectralMin; l <= kLambdaMax; l += 1.0f)
       if (!(p.melanin->eval(l) >= 0.0f && p.melanin->eval(l) <= 1.0f))
@@ -84,11 +89,18 @@ std::optional<BarbuleParameterProblem> findProblem(const BarbuleParameters& p) {
 }
 
 std::optional<BarbuleParameterProblem> findImplausibility(const BarbuleParameters& p) {
-  // Keratin cortices of iridescent barbules are a few hundred nanometres thick.
-  if (p.height > 5.0f)
+  // Keratin cortices of iridescent barbules are a few hundred nanometres thick, and the layers
+  // beneath them (melanosomes, air channels, keratin between) no thicker.
+  constexpr float kThickest = 5.0f;
+  if (p.height > kThickest)
     return BarbuleParameterProblem{"height", "a film " + fmt::format("{:g}", p.height) +
                                                  " um thick is implausible for a barbule cortex (did you give nm? "
                                                  "the unit is micrometres)"};
+  for (size_t i = 0; i < p.layersBelow.layers.size(); ++i)
+    if (p.layersBelow.layers[i].thicknessUm > kThickest)
+      return BarbuleParameterProblem{"layers", fmt::format("layer {} is {:g} um thick, implausible for a barbule's "
+                                                           "layers (did you give nm? the unit is micrometres)",
+                                                           i + 1, p.layersBelow.layers[i].thicknessUm)};
   return std::nullopt;
 }
 

@@ -168,7 +168,12 @@ SpectralDistribution Properties::getSpectrum(const std::string& name, float def,
     s = v->spectrum;
   }
   bool illuminant = use == SpectrumUse::Emission && (!v || v->kind != Kind::Spectrum || v->isRGB || s.isConstant());
-  return illuminant ? s.timesD65() : s;
+  if (illuminant) s = s.timesD65();
+  if (use == SpectrumUse::Emission && v && !(s.maxValue() <= kLargestEmission))
+    throw InputError(v->location, fmt::format("parameter '{}' of {} is emitted light that reaches {:g}; a value "
+                                              "above {:g} would overflow the image's float sums",
+                                              name, element(), s.maxValue(), kLargestEmission));
+  return s;
 }
 
 SourceLocation Properties::locationOf(const std::string& name) const {
@@ -228,7 +233,9 @@ void Properties::setFloat(const std::string& name, double value) { setNumber(nam
 void Properties::setInt(const std::string& name, int value) { setNumber(name, Kind::Integer, value); }
 
 void Properties::setFromText(const std::string& name, const std::string& text) {
-  if (std::optional<double> number = parseNumber<double>(text))
+  if (std::optional<int> whole = parseNumber<int>(text))
+    setInt(name, *whole);
+  else if (std::optional<double> number = parseNumber<double>(text))
     setFloat(name, *number);
   else
     setString(name, text);

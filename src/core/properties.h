@@ -20,6 +20,12 @@ namespace columba {
 // non-negative ones (a conductor's optical constants) too, but refused below zero, as emission is.
 enum class SpectrumUse { Reflectance, Emission, Unbounded, NonNegative };
 
+// The largest emitted value (radiance, intensity, irradiance) a scene may give. An image's pixels
+// are float sums of emitted values times the estimators' weights (geometry terms, over densities
+// of directions and wavelengths) and the observer's conversion: this leaves eight decades of room
+// under float's 3.4e38, where 1e35 already overflowed. The sun's radiance is about 2e4 W/(m^2 sr nm).
+inline constexpr float kLargestEmission = 1e30f;
+
 class Properties {
  public:
   // Element tag ("bsdf"), plug-in type ("diffuse"), optional id, and where it was declared.
@@ -52,7 +58,8 @@ class Properties {
   // A file name looked up in `searchDirs`, then the working directory; throws InputError (file,
   // line, value and the places looked) if no regular file of that name is found.
   std::string getPath(const std::string& name) const;
-  // <float>, <spectrum> or <rgb>. Emission must not be negative anywhere (InputError).
+  // <float>, <spectrum> or <rgb>. Emission must not be negative anywhere, nor above
+  // kLargestEmission (InputError).
   SpectralDistribution getSpectrum(const std::string& name, float def, SpectrumUse use) const;
 
   // Nested plug-ins (and <ref>s) of type T, in document order; each returned one counts as used.
@@ -126,8 +133,9 @@ class Properties {
   // dictionary), at the element's own location.
   void setFloat(const std::string& name, double value);
   void setInt(const std::string& name, int value);
-  // A value a front end has as text (NAME=VALUE on a command line): a number as a <float>,
-  // anything else as a <string>, as a scene file would have given it.
+  // A value a front end has as text (NAME=VALUE on a command line): a whole number as an
+  // <integer> (which a float parameter takes too), any other number as a <float>, anything else as
+  // a <string>, as a scene file would have given it.
   void setFromText(const std::string& name, const std::string& text);
   void setString(const std::string& name, const std::string& value);
   void setSpectrum(const std::string& name, const SpectralDistribution& value, float lowest);

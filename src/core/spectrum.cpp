@@ -372,6 +372,15 @@ float SpectralDistribution::meanValue() const {
   return meanOverVisible(*this);
 }
 
+float SpectralDistribution::maxValue() const {
+  if (isConstant()) return value_;
+  float largest = eval(kLambdaMax);
+  for (float lambda = kSpectralMin; lambda < kLambdaMax; lambda += 1.0f) largest = std::max(largest, eval(lambda));
+  for (float lambda : lambdas_)
+    if (lambda >= kSpectralMin && lambda <= kLambdaMax) largest = std::max(largest, eval(lambda));
+  return largest;
+}
+
 float SpectralDistribution::luminance() const {
   if (isConstant()) return value_;
   const CieTable& t = cieTable();

@@ -182,6 +182,8 @@ class SpectralDistribution {
   Spectrum sample(const Wavelengths& wl) const;
   // Mean over the visible range, for light selection and diagnostics.
   float meanValue() const;
+  // The largest value over kSpectralMin-kLambdaMax (at every nm and every tabulated wavelength).
+  float maxValue() const;
   // Luminance as a reflectance under D65, relative to a white reflector: the value of a constant,
   // the luminance Y of the colour an RGB spectrum was fitted to.
   float luminance() const;

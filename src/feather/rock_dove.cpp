@@ -23,14 +23,17 @@ namespace columba {
 namespace {
 
 // The neck feathers' <bsdf type="barbulebsdf"> with its further parameters, escaped as XML by
-// pugixml: a number as <float>, anything else as <string>.
+// pugixml: a whole number as <integer>, another number as <float>, anything else as <string>, as
+// Properties::setFromText reads them.
 std::string barbuleElement(const std::vector<std::pair<std::string, std::string>>& parameters) {
   pugi::xml_document doc;
   pugi::xml_node bsdf = doc.append_child("bsdf");
   bsdf.append_attribute("type") = "barbulebsdf";
   bsdf.append_attribute("id") = "dove-barbules";
   for (const auto& [name, value] : parameters) {
-    pugi::xml_node child = bsdf.append_child(parseNumber<double>(value) ? "float" : "string");
+    pugi::xml_node child = bsdf.append_child(parseNumber<int>(value)      ? "integer"
+                                             : parseNumber<double>(value) ? "float"
+                                                                          : "string");
     child.append_attribute("name") = name.c_str();
     child.append_attribute("value") = value.c_str();
   }

@@ -14,6 +14,13 @@ float RefractiveIndex::minimumVisible() const {
   return n;
 }
 
+float RefractiveIndex::maximumVisible() const {
+  if (!table) return std::max((*this)(kSpectralMin), (*this)(kLambdaMax));
+  float n = (*this)(kSpectralMin);
+  for (float l = kSpectralMin + 1.0f; l <= kLambdaMax; l += 1.0f) n = std::max(n, (*this)(l));
+  return n;
+}
+
 std::optional<RefractiveIndex> iorFromName(const std::string& name) {
   if (name == "keratin") return RefractiveIndex::keratin();
   if (auto named = lookupIOR(name)) return RefractiveIndex::constant(*named);

@@ -16,8 +16,10 @@ struct RefractiveIndex {
 
   float operator()(float lambdaNm) const { return table ? table->eval(lambdaNm) : a + b / (lambdaNm * lambdaNm); }
   bool isConstant() const { return !table && b == 0.0f; }
-  // The smallest index over 300-830 nm, the range Columba models (1 nm steps for a table).
+  // The smallest and the largest index over 300-830 nm, the range Columba models (1 nm steps for a
+  // table).
   float minimumVisible() const;
+  float maximumVisible() const;
 
   static RefractiveIndex constant(float n) { return {n, 0.0f, nullptr}; }
   static RefractiveIndex cauchy(float a, float b) { return {a, b, nullptr}; }
@@ -27,6 +29,10 @@ struct RefractiveIndex {
   // Feather keratin (the cortex of the barbules): n = 1.532 + 5890 / lambda^2.
   static RefractiveIndex keratin() { return cauchy(1.532f, 5890.0f); }
 };
+
+// Far beyond any material of a feather, or a metal (n and k below 10 over 300-830 nm): an index
+// above it is a typing mistake, and the films' arithmetic is only held to stay finite below it.
+inline constexpr float kMaxFilmIndex = 100.0f;
 
 // "keratin", a name of the constant-index table (lookupIOR), or a positive number written as
 // text; nullopt for anything else.

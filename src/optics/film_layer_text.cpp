@@ -14,7 +14,6 @@ namespace {
 constexpr int kMaxRepeats = 1000;
 
 std::string quoted(const std::string& text) { return "'" + excerpt(text) + "'"; }
-constexpr float kMaxLayerIndex = 100.0f;
 
 // "N+Ki" as (N, K); nullopt where `text` is not of that form.
 std::optional<std::pair<float, float>> complexIndex(const std::string& text) {
@@ -43,10 +42,8 @@ LayerMaterial material(const std::string& index, const std::string& piece) {
     throw std::invalid_argument("layer " + quoted(piece) + ": unknown index '" + index +
                                 "' (a number, a named index such as air, keratin, melanin, or N+Ki)");
   }
-  // Far beyond any material of a feather, or a metal (n and k below 10 over 300-830 nm): a typing
-  // mistake. The text's indices are constants or Cauchy laws, largest at one end of the range.
-  if (!(m.n(kSpectralMin) <= kMaxLayerIndex && m.n(kLambdaMax) <= kMaxLayerIndex && m.k <= kMaxLayerIndex))
-    throw std::invalid_argument("layer " + quoted(piece) + ": an index above " + std::to_string(int(kMaxLayerIndex)) +
+  if (!(m.n.maximumVisible() <= kMaxFilmIndex && m.k <= kMaxFilmIndex))
+    throw std::invalid_argument("layer " + quoted(piece) + ": an index above " + std::to_string(int(kMaxFilmIndex)) +
                                 " (n or k) is no material's");
   return m;
 }

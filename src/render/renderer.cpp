@@ -256,9 +256,8 @@ void RenderSettings::validate(const RenderSettingNames& names) const {
                     targetError));
 }
 
-Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
-  if (const ParticleTracerIntegrator* tracer = scene.particleTracer())
-    return renderLightPaths(scene, *tracer, settings, stats);
+namespace {
+Image renderCameraPaths(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
   const Sensor& sensor = scene.sensor();
   const Film& film = sensor.film();
   const bool whole = settings.window.empty();
@@ -336,6 +335,36 @@ Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStat
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.complete = !cancelled;
+  return image;
+}
+
+// A render whose pixels are not all finite is no image: its values overflowed float (emitted
+// values that the estimators' weights carry past 3.4e38) or an estimate failed in a way the
+// per-sample check could not see. Throws, naming how many and the first.
+void requireFinite(const Image& image) {
+  const std::pair<const char*, const std::vector<float>*> parts[] = {
+      {"RGB", &image.rgb}, {"spectral band", &image.spectral.values}, {"cone", &image.cones.values}};
+  for (const auto& [what, values] : parts) {
+    const auto first = std::find_if(values->begin(), values->end(), [](float v) { return !std::isfinite(v); });
+    if (first == values->end()) continue;
+    const size_t count =
+        size_t(std::count_if(values->begin(), values->end(), [](float v) { return !std::isfinite(v); }));
+    const size_t perPixel = values->size() / (size_t(image.width) * size_t(image.height));
+    const size_t index = size_t(first - values->begin()), pixel = index / perPixel;
+    throw std::runtime_error(fmt::format(
+        "the render is not finite: {} of its {} {} values are NaN or infinite (the first, {}, at pixel ({}, {}), "
+        "channel {}); the scene's light overflows a float image (emitters too bright for their distance, or "
+        "textures of huge values): no image was written",
+        count, values->size(), what, std::isnan(*first) ? "NaN" : "infinite", pixel % size_t(image.width),
+        pixel / size_t(image.width), index % perPixel));
+  }
+}
+}  // namespace
+
+Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
+  const ParticleTracerIntegrator* tracer = scene.particleTracer();
+  Image image = tracer ? renderLightPaths(scene, *tracer, settings, stats) : renderCameraPaths(scene, settings, stats);
+  requireFinite(image);
   return image;
 }
 

@@ -70,6 +70,8 @@ struct RenderStats {
   double predictedRelativeError = 0.0;
 };
 
+// Renders the scene's image (or the window of it the settings name). Every value of the image is
+// finite: one that is not fails the render with std::runtime_error, naming how many and where.
 Image renderImage(const Scene& scene, const RenderSettings& settings, RenderStats& stats);
 
 // The relative cost of rendering each row of the film, from a pilot that traces sample 0 of a

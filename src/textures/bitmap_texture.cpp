@@ -12,6 +12,7 @@ Mitsuba 3: the same parameters and defaults; PFM files are not read.
 #include "textures/bitmap_texture.h"
 
 #include <Imath/half.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -175,7 +176,17 @@ std::shared_ptr<Object> makeBitmapTexture(const Properties& props) {
     throw props.error("filename", e.what());
   }
   if (readHalfStorage(props))
-    for (float& v : pixels.values) v = float(Imath::half(v));
+    for (size_t i = 0; i < pixels.values.size(); ++i) {
+      // Beyond half's largest value a texel would become infinite, and its light lost.
+      if (std::abs(pixels.values[i]) > float(HALF_MAX)) {
+        const size_t texel = i / size_t(pixels.channels);
+        throw props.error("format", fmt::format("'{}': the texel at x {}, y {}, channel {} is {:g}, beyond half "
+                                                "precision's largest value {:g}: give format 'variant' to keep it",
+                                                path, texel % size_t(pixels.width), texel / size_t(pixels.width),
+                                                i % size_t(pixels.channels), pixels.values[i], float(HALF_MAX)));
+      }
+      pixels.values[i] = float(Imath::half(pixels.values[i]));
+    }
   return std::make_shared<BitmapTexture>(pixels, raw, readFilter(props), readWrap(props), props.getTransform("to_uv"));
 }
 

@@ -3,6 +3,7 @@
 #include "support/temp_dir_test.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -238,7 +239,7 @@ TEST_F(CliTest, TheBirdsBarbulesTakeFurtherParametersCheckedAsTheSceneWould) {
   ASSERT_EQ(r.status, 0) << r.output;
   std::stringstream xml;
   xml << std::ifstream(bird / "rock_dove.xml").rdbuf();
-  EXPECT_NE(xml.str().find("<bsdf type=\"barbulebsdf\" id=\"dove-barbules\"><float name=\"profile_exponent\" "
+  EXPECT_NE(xml.str().find("<bsdf type=\"barbulebsdf\" id=\"dove-barbules\"><integer name=\"profile_exponent\" "
                            "value=\"4\"/><string name=\"layers\" value=\"parotia-occipital\"/></bsdf>"),
             std::string::npos)
       << xml.str().substr(0, 600);
@@ -251,14 +252,28 @@ TEST_F(CliTest, TheBirdsBarbulesTakeFurtherParametersCheckedAsTheSceneWould) {
            {"mu=0.1", "--barbule: 'mu' would have no effect"},
            {"preset=dove-green", "--barbule: 'preset' would have no effect"},
            {"layers=keratin", "--barbule layers:"},
-           {"layers_1=keratin:0.1", "--barbule: unknown parameter 'layers_1'"},  // no feather would choose it
+           {"layers_1=keratin:0.1", "--barbule layers_1 would have no effect: no feather chooses"},
+           {"trt_offsets=100", "--barbule trt_offsets: the TRT lobe's offset nodes must number 1 to 64"},
            {"layers_1=keratin:0.1 --purple-stack 2", "--purple-stack: the purple feathers choose layer stack 2"},
-           {"b", "--barbule: give NAME=VALUE, not 'b'"}}) {
+           {"b", "--barbule: give NAME=VALUE, not 'b'"},
+           // Options of the other kinds of feather, which the bird would not use.
+           {"b=0.1 --barbs 20", "--bird excludes --barbs"},
+           {"b=0.1 --binary", "--bird excludes --binary"}}) {
     CommandResult bad = run("feather --bird --barbule " + option + " -o " + refused.string());
     EXPECT_NE(bad.status, 0) << option;
     EXPECT_NE(bad.output.find(message), std::string::npos) << option << ": " << bad.output;
     EXPECT_FALSE(fs::exists(refused)) << option;
   }
+  // The BSDF's quadrature of the TRT lobe is one of its parameters too.
+  const fs::path quadrature = dir_ / "quadrature";
+  r = run("feather --bird --feather-scale 3 --barbule trt_offsets=16 --barbule trt_angles=4 -o " + quadrature.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::stringstream written;
+  written << std::ifstream(quadrature / "rock_dove.xml").rdbuf();
+  EXPECT_NE(
+      written.str().find("<integer name=\"trt_offsets\" value=\"16\"/><integer name=\"trt_angles\" value=\"4\"/>"),
+      std::string::npos)
+      << written.str().substr(0, 600);
 }
 
 TEST_F(CliTest, AnInterruptedRenderNeverReplacesAFinishedImage) {
@@ -615,6 +630,87 @@ TEST_F(CliTest, BsdfMeasuresBarbulesOfArmsAndOneArmReflectsAsTheEllipse) {
   CommandResult tilt = run("bsdf --arm-tilts 0,95 -o " + (dir_ / "tilt").string());
   EXPECT_NE(tilt.status, 0);
   EXPECT_NE(tilt.output.find("--arm-tilts: '95'"), std::string::npos) << tilt.output;
+}
+
+// Values that would leave the range the films' arithmetic holds, or have no effect, are refused or
+// warned about, naming the option (a Cauchy b of 1e10 wrote thousands of nan cells with status 0).
+TEST_F(CliTest, BsdfRefusesIndicesBeyondAnyMaterialAndSaysWhatHasNoEffect) {
+  CommandResult r = run("bsdf --film-cauchy-a 1.5 --film-cauchy-b 1e10 --mode specular -o " + (dir_ / "b").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--film-cauchy-b: the film's index reaches 111113 between 300 and 830 nm; an index "
+                          "above 100 is no material's"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "b"));
+  r = run("bsdf --film-ior 150 --mode specular -o " + (dir_ / "n").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--film-ior: the film's index reaches 150"), std::string::npos) << r.output;
+  r = run("bsdf --arm-tilts '' --mode specular -o " + (dir_ / "arms").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--arm-tilts: gives no arm"), std::string::npos) << r.output;
+  // A layer given in nm is read in micrometres: measured all the same, with a warning.
+  r = run("bsdf --layers 'keratin:0.1, melanin:300' --mode specular --angles 0 -o " + (dir_ / "nm").string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: --layers: layer 2 is 300 um thick, implausible"), std::string::npos) << r.output;
+  // The largest index accepted keeps every spectrum finite.
+  r = run("bsdf --film-cauchy-a 1.5 --film-cauchy-b 8.8e6 --mode specular --angles 0,60 -o " +
+          (dir_ / "edge").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream csv(dir_ / "edge" / "bsdf_specular.csv");
+  const std::string text((std::istreambuf_iterator<char>(csv)), std::istreambuf_iterator<char>());
+  EXPECT_GT(text.size(), 1000u);
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_EQ(text.find("inf"), std::string::npos);
+}
+
+// Emitted light that would overflow the image's float sums is refused where the scene gives it;
+// a render whose pixels are not all finite all the same fails and writes nothing (an emitter of
+// 1e37 wrote an all-NaN EXR with status 0).
+TEST_F(CliTest, ARenderNeverWritesANonFinitePixel) {
+  const std::string scene = write("bright.xml", R"(<scene version="3.0.0">
+  <default name="L" value="1e37"/>
+  <sensor type="perspective">
+    <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/></film>
+    <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
+  </sensor>
+  <emitter type="constant"><rgb name="radiance" value="$L"/></emitter>
+</scene>
+)");
+  const std::string out = (dir_ / "bright.exr").string();
+  for (const char* value : {"1e37", "1e35"}) {
+    CommandResult r = run("render " + scene + " -D L=" + value + " -o " + out);
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("bright.xml:7"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("parameter 'radiance' of <emitter> 'constant' is emitted light that reaches"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  CommandResult r = run("render " + scene + " -D L=1e29 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const columba::Image image = columba::readEXR(out);
+  for (float v : image.rgb) ASSERT_TRUE(std::isfinite(v) && v > 1e28f) << v;
+  // A texture's emitted values are the file's: 1e37 overflows, and nothing is written.
+  columba::Image hot(2, 2);
+  std::fill(hot.rgb.begin(), hot.rgb.end(), 1e37f);
+  columba::writeEXR((dir_ / "hot.exr").string(), hot);
+  const std::string textured = write("textured.xml", R"(<scene version="3.0.0">
+  <sensor type="perspective">
+    <transform name="to_world"><lookat origin="0,0,3" target="0,0,0" up="0,1,0"/></transform>
+    <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/></film>
+    <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
+  </sensor>
+  <shape type="rectangle"><emitter type="area"><texture type="bitmap" name="radiance">
+    <string name="filename" value="hot.exr"/></texture></emitter></shape>
+</scene>
+)");
+  const std::string texturedOut = (dir_ / "textured.exr").string();
+  r = run("render " + textured + " -o " + texturedOut);
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("the render is not finite: 48 of its 48 RGB values are NaN or infinite"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(texturedOut));
+  EXPECT_FALSE(fs::exists(dir_ / "textured.png"));
 }
 
 TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {

@@ -324,6 +324,15 @@ TEST_F(Textures, Fp16FormatRoundsTexelsToHalfPrecision) {
   expectContains(errorOfScene(R"(<texture type="bitmap" id="t"><string name="filename" value="tenth.exr"/>
   <string name="format" value="uint16"/></texture>)"),
                  {"t.xml:3", "unknown format 'uint16'"});
+  // A texel beyond half's largest value (65504) would become infinite: refused, naming it.
+  writeTwoTexelEXR((dir_ / "bright.exr").string(), 0.5f, 70000.0f);
+  expectContains(errorOfScene(R"(<texture type="bitmap" id="t"><string name="filename" value="bright.exr"/>
+  <string name="format" value="fp16"/></texture>)"),
+                 {"t.xml:3",
+                  "bright.exr': the texel at x 1, y 0, channel 0 is 70000, beyond half precision's largest "
+                  "value 65504"});
+  EXPECT_EQ(errorOfScene(R"(<texture type="bitmap" id="t"><string name="filename" value="bright.exr"/></texture>)"),
+            "");
 }
 
 TEST_F(Textures, RoughnessTexturesChooseTheDistributionAtEachPoint) {
