@@ -89,6 +89,19 @@ TEST(ObserverTable, BadTablesAreRefusedNamingTheLine) {
 
 class ObserverTableFile : public TempDirTest {};
 
+// As spreadsheet programs save text: line 1 was "the first column is '<BOM>wl', not a wavelength
+// column", and a definition's header was taken for a table's.
+TEST_F(ObserverTableFile, ATableOrDefinitionMayStartWithAByteOrderMark) {
+  const Observer marked = readObserverTableFile(write("marked.csv", "\xEF\xBB\xBF" + blueTitTable(5)));
+  const Observer plain = readObserverTableFile(write("plain.csv", blueTitTable(5)));
+  ASSERT_EQ(marked.channels, plain.channels);
+  EXPECT_EQ(marked.sensitivities, plain.sensitivities);
+  const Observer defined = readObserverTableFile(write("defined.csv",
+                                                       "\xEF\xBB\xBF"
+                                                       "cone, lambda_max, droplet\nSWS, 450, NA\nLWS, 560, NA\n"));
+  EXPECT_EQ(defined.channels, (std::vector<std::string>{"SWS", "LWS"}));
+}
+
 TEST_F(ObserverTableFile, ARenderWithATablesObserverCatchesWhatTheBuiltInOneDoes) {
   const std::string table = write("bluetit.csv", blueTitTable(1));
   auto scene = [](const std::string& observer) {
