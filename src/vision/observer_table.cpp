@@ -80,7 +80,12 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
   for (const std::string& cone : kCones) {
     const auto at = std::find(header.begin() + 1, header.end(), cone);
     if (at == header.end()) continue;
-    const std::vector<double>& column = columns[size_t(at - header.begin()) - 1];
+    // Divided by its largest value before it is summed, so that a curve in any unit, up to the
+    // largest double, has an area without overflow (1e307 a row summed to inf, and every catch to NaN).
+    std::vector<double> column = columns[size_t(at - header.begin()) - 1];
+    const double largest = *std::max_element(column.begin(), column.end());
+    if (largest > 0.0)
+      for (double& v : column) v /= largest;
     std::vector<double> curve(o.grid.count);
     double area = 0.0;
     for (size_t i = 0; i < o.grid.count; ++i)
