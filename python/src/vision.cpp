@@ -68,9 +68,13 @@ Observer observerFrom(const py::object& spec) {
   if (definition.noise.relativeDensities.size() != peaks.size())
     throw py::value_error("give one relative density per cone in 'densities'");
   if (d.contains("weber")) definition.noise.weberFraction = d["weber"].cast<double>();
-  definition.noise.weberReference = d.contains("weber_cone") ? d["weber_cone"].cast<size_t>() : peaks.size() - 1;
-  if (definition.noise.weberReference >= peaks.size()) throw py::value_error("'weber_cone' names no cone");
-  return makeObserver(definition);
+  const long long weberCone =
+      d.contains("weber_cone") ? d["weber_cone"].cast<long long>() : (long long)peaks.size() - 1;
+  if (weberCone < 0)
+    throw py::value_error("weber_cone " + std::to_string(weberCone) + " names no cone: give 0 to " +
+                          std::to_string(peaks.size() - 1));
+  definition.noise.weberReference = size_t(weberCone);
+  return makeObserver(definition);  // its receptor noise checked there: a ValueError naming the key and value
 }
 
 // `values` (one spectrum, or N x k: k spectra in columns, pavo's layout) at `wavelengths`,
@@ -198,7 +202,8 @@ void bindVision(py::module_& m) {
         return r;
       },
       py::arg("observer"),
-      "An observer's sensitivities (channels x wavelengths, each of area 1 per nm) and receptor noise");
+      "An observer's sensitivities (channels x wavelengths, each of area 1 per nm) and receptor noise. A dict's "
+      "densities must lie within [1e-6, 1e6], its weber within [1e-6, 10] and weber_cone name a cone (ValueError)");
   m.def(
       "cone_catches",
       [](const DoubleArray& wavelengths, const DoubleArray& spectra, const py::object& spec,

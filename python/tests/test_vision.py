@@ -117,3 +117,21 @@ def test_a_human_sees_greys_by_their_lightness_and_colours_apart():
     assert far["lab_a"][1] > 20 and far["dE2000"] > 30
     with pytest.raises(ValueError, match="cover 400-700 nm"):
         columba.human_colour_difference(wl[wl > 450], grey[wl > 450], grey[wl > 450])
+
+
+WEBER = "weber (the reference cone's Weber fraction) "
+DENSITY = "densities[1] (a cone's relative density) "
+
+
+@pytest.mark.parametrize("key, value, shown", [
+    ("weber", 0.0, WEBER + "0 "), ("weber", float("nan"), WEBER + "nan"), ("weber", float("inf"), WEBER + "inf"),
+    ("weber", -0.1, WEBER + "-0.1"), ("densities", [1.0, 1e-300], DENSITY + "1e-300"),
+    ("densities", [1.0, float("inf")], DENSITY + "inf"), ("weber_cone", -1, "weber_cone -1 names no cone: give 0 to 1"),
+    ("weber_cone", 2, "weber_cone 2 names no cone: give 0 to 1"),
+])
+def test_an_observer_dicts_receptor_noise_out_of_range_is_a_value_error_naming_it(key, value, shown):
+    # dS was inf, NaN or 0 for these, and weber_cone=-1 a raw cast error.
+    spec = {"name": "two cones", "lambda_max": [420.0, 540.0], key: value}
+    with pytest.raises(ValueError, match="weber|densities") as error:
+        columba.observer(spec)
+    assert shown in str(error.value)

@@ -121,8 +121,8 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
     }
     if ((!droplet || *droplet == "T") && (cut || mid))
       throw InputError({path, lineNumber}, "lambda_cut and lambda_mid belong to C, Y, R and P droplets: NA here");
-    const std::optional<double> density = row.number("density", 1e-6, 1e6);
-    const std::optional<double> weber = row.number("weber", 1e-6, 10.0);
+    const std::optional<double> density = row.number("density", kLeastRelativeDensity, kMostRelativeDensity);
+    const std::optional<double> weber = row.number("weber", kLeastWeberFraction, kMostWeberFraction);
     if (cone == "DBL") {
       if (density) throw InputError({path, lineNumber}, "the double cone has no density in the chromatic model: NA");
       d.doubleCone = c;
