@@ -656,15 +656,17 @@ TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   EXPECT_NE(withoutSpecular.output.find("add --mode specular"), std::string::npos) << withoutSpecular.output;
 }
 
-// A table of sensitivities in units of 1e307 (their area once overflowed): the catches of the blue
-// tit's own curves so scaled are the built-in blue tit's, where the command failed naming no file.
+// A table of sensitivities whose largest is 1e308 (their area once overflowed): the catches of the
+// blue tit's own curves so scaled are the built-in blue tit's, where the command failed naming no file.
 TEST_F(CliTest, BsdfConeCatchesOfATableInHugeUnitsAreTheBuiltInObserversOwn) {
   const columba::Observer tit = columba::namedObserver("bluetit");
+  float peak = 0.0f;
+  for (const std::vector<float>& s : tit.sensitivities) peak = std::max(peak, *std::max_element(s.begin(), s.end()));
   std::ofstream table(dir_ / "huge.csv");
   table << "wl,UVS,SWS,MWS,LWS\n";
   for (size_t i = 0; i < tit.grid.count; ++i) {
     table << tit.grid.wavelength(i);
-    for (const std::vector<float>& s : tit.sensitivities) table << "," << 1e307 * double(s[i]);
+    for (const std::vector<float>& s : tit.sensitivities) table << "," << double(s[i]) / peak * 1e308;
     table << "\n";
   }
   table.close();

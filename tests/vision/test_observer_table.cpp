@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -18,13 +19,19 @@ using namespace columba;
 using columba::testing::TempDirTest;
 
 namespace {
-// The blue tit's curves as a table, every `step` nm from 300 to 830 nm, times `scale`.
-std::string blueTitTable(int step, double scale = 1.0) {
+// The blue tit's curves as a table, every `step` nm from 300 to 830 nm; where `largest` is given,
+// scaled so that the largest value is `largest`.
+std::string blueTitTable(int step, double largest = 0.0) {
   const Observer o = namedObserver("bluetit");
+  float peak = 0.0f;
+  for (const std::vector<float>& s : o.sensitivities) peak = std::max(peak, *std::max_element(s.begin(), s.end()));
+  auto value = [&](size_t c, size_t i) {
+    return largest > 0.0 ? o.sensitivities[c][i] / peak * largest : o.sensitivities[c][i];
+  };
   std::string text = "# the blue tit, written from Columba's own curves\nwl,UVS,SWS,MWS,LWS\n";
   for (size_t i = 0; i < o.grid.count; i += size_t(step))
-    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", o.grid.wavelength(i), scale * o.sensitivities[0][i],
-                        scale * o.sensitivities[1][i], scale * o.sensitivities[2][i], scale * o.sensitivities[3][i]);
+    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", o.grid.wavelength(i), value(0, i), value(1, i), value(2, i),
+                        value(3, i));
   return text;
 }
 
@@ -87,18 +94,18 @@ TEST(ObserverTable, ACoarseTableIsInterpolatedAndHasAreaOne) {
     EXPECT_NEAR(integrateOnGrid(o.grid, s), 1.0, 1e-5);
 }
 
-// Sensitivities are in any unit: 1e307 a row once summed to an infinite area, every catch of that
-// cone to NaN; tiny ones keep their precision.
+// Sensitivities are in any unit: a curve whose largest value is 1e308 once summed to an infinite
+// area, every catch of that cone to NaN; tiny ones keep their precision.
 TEST(ObserverTable, ATableInAnyUnitGivesTheSameObserver) {
   std::istringstream unit(blueTitTable(5));
   const Observer one = readObserverTable(unit, "unit.csv", "unit");
-  for (double scale : {1e307, 1e-300}) {
-    std::istringstream in(blueTitTable(5, scale));
+  for (double largest : {1e308, 1e-300}) {
+    std::istringstream in(blueTitTable(5, largest));
     const Observer scaled = readObserverTable(in, "scaled.csv", "scaled");
     for (size_t c = 0; c < 4; ++c)
       for (size_t i = 0; i < one.grid.count; ++i)
         ASSERT_NEAR(scaled.sensitivities[c][i], one.sensitivities[c][i], 1e-6 * one.sensitivities[c][i] + 1e-12)
-            << scale << " " << c << " " << i;
+            << largest << " " << c << " " << i;
   }
 }
 
@@ -138,8 +145,8 @@ TEST_F(ObserverTableFile, ARenderWithATablesObserverCatchesWhatTheBuiltInOneDoes
   ASSERT_EQ(fromTable.cones.names, builtIn.cones.names);
   for (size_t i = 0; i < builtIn.cones.values.size(); ++i)
     EXPECT_NEAR(fromTable.cones.values[i], builtIn.cones.values[i], 1e-4 * builtIn.cones.values[i]) << i;
-  // A table in units of 1e307 catches the same (its LWS channel was NaN in every pixel).
-  const Image huge = renderWithObserver(write("huge.csv", blueTitTable(1, 1e307)));
+  // A table whose largest value is 1e308 catches the same (its channels were NaN in every pixel).
+  const Image huge = renderWithObserver(write("huge.csv", blueTitTable(1, 1e308)));
   ASSERT_EQ(huge.cones.names, builtIn.cones.names);
   for (size_t i = 0; i < builtIn.cones.values.size(); ++i)
     EXPECT_NEAR(huge.cones.values[i], builtIn.cones.values[i], 1e-4 * builtIn.cones.values[i]) << i;
