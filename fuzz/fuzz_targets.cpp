@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "builtin/builtin_plugins.h"
@@ -30,10 +31,28 @@
 #include "shapes/serialized_mesh.h"
 #include "shapes/triangle_mesh.h"
 #include "textures/bitmap_texture.h"
+#include "vision/observer_definition_file.h"
+#include "vision/observer_table.h"
 
 namespace columba::fuzz {
 
 namespace {
+// Every curve of an observer finite, non-negative and of area 1, as a reader promises.
+void checkObserverCurves(const Observer& o) {
+  auto check = [&](const std::vector<float>& curve, const std::string& channel) {
+    double area = 0.0;
+    for (float v : curve) {
+      if (!(v >= 0.0f && std::isfinite(v)))
+        throw std::logic_error("channel " + channel + " has a sensitivity of " + std::to_string(v));
+      area += double(v) * o.grid.stepNm;
+    }
+    if (!(std::abs(area - 1.0) < 1e-3))
+      throw std::logic_error("channel " + channel + " has area " + std::to_string(area));
+  };
+  for (size_t c = 0; c < o.channels.size(); ++c) check(o.sensitivities[c], o.channels[c]);
+  if (o.hasAchromatic()) check(o.achromatic, o.achromaticChannel);
+}
+
 // An environment map of `image` and a few lookups and samples.
 void lookUpEnvmap(Image image, const std::string& path) {
   EnvmapEmitter envmap(std::move(image), 1.0f, Transform(), {path, 0});
@@ -226,6 +245,16 @@ void layerTextFromBytes(const uint8_t* data, size_t size) {
         if (!(v >= -1e-4f && v <= 1.0f + 1e-4f))
           throw std::logic_error("a film's reflectance or transmittance is " + std::to_string(v));
   }
+}
+
+void observerTableFromBytes(const uint8_t* data, size_t size) {
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  checkObserverCurves(readObserverTable(in, "fuzz.csv", "fuzz"));
+}
+
+void observerDefinitionFromBytes(const uint8_t* data, size_t size) {
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  checkObserverCurves(makeObserver(readObserverDefinition(in, "fuzz.csv", "fuzz")));
 }
 
 }  // namespace columba::fuzz

@@ -49,6 +49,13 @@ void spectraCSVFromBytes(const uint8_t* data, size_t size);
 // angles, whose R and T must be numbers in [0, 1] (else std::logic_error).
 void layerTextFromBytes(const uint8_t* data, size_t size);
 
+// An observer's table of sensitivities (readObserverTable), its observer's curves required to be
+// finite, non-negative and of area 1 (else std::logic_error).
+void observerTableFromBytes(const uint8_t* data, size_t size);
+// An observer's definition by its cones' parameters (readObserverDefinition, then makeObserver),
+// its curves held to the same.
+void observerDefinitionFromBytes(const uint8_t* data, size_t size);
+
 // The readers take paths: the bytes are written to a file of this process named with `suffix`
 // (".ply", ".obj", ".exr"), which is returned.
 std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built in BUILD_DIR, one after another, each for SECONDS:
-#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text)
+#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition)
 # Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET (small
 # scenes, meshes, feathers written by `columba feather`, EXR images of every compression, images
-# of every format stb_image reads, a piece of a split render, a manifest, a spectra table), the
+# of every format stb_image reads, a piece of a split render, a manifest, a spectra table, observer tables and definitions), the
 # project's scenes and examples, the inputs of tests/fuzz-regressions/TARGET, and feathers that
 # $COLUMBA (build/columba by default; skipped when not built) generates. Findings go to BUILD_DIR/fuzz/findings/TARGET, logs to
 # BUILD_DIR/fuzz/logs. Prints one line per target (executions, coverage, findings); exits non-zero
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 build=$1 seconds=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text)
+[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition)
 work="$build/fuzz"
 columba=${COLUMBA:-build/columba}
 mkdir -p "$work/logs"
@@ -45,7 +45,7 @@ dict_of() {
     serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid) echo fuzz/dict/vol.dict ;;
     hdr_envmap) echo fuzz/dict/hdr.dict ;; bitmap) echo fuzz/dict/bitmap.dict ;; merge_piece) echo fuzz/dict/piece.dict ;;
     manifest) echo fuzz/dict/manifest.dict ;; spectra_csv) echo fuzz/dict/spectra.dict ;;
-    layer_text) echo fuzz/dict/layers.dict ;; esac
+    layer_text) echo fuzz/dict/layers.dict ;; observer_table|observer_definition) echo fuzz/dict/observer.dict ;; esac
 }
 
 # Memory limits (MB: one allocation, the whole process). The image and piece readers check every

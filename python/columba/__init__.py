@@ -176,7 +176,9 @@ def thin_film(theta_deg, wavelength, thickness, film_ior="keratin", n_outside=1.
 def multilayer(theta_deg, wavelength, layers, n_outside=1.000277, substrate_ior=1.000277):
     """Intensity reflectance and transmittance of a stack of plane layers (transfer matrices).
 
-    theta_deg: angle of incidence (degrees) in the outer medium; wavelength in nm; both broadcast.
+    theta_deg: angle of incidence (degrees) in the outer medium, within [0, 90] (at 90, grazing, the
+    limit R = 1, T = 0); wavelength in nm, positive; both broadcast. Others (NaN included) raise a
+    ValueError naming theta_deg and wavelength.
     layers: a list of (index, thickness_um) from the outer side; an index is a complex number
     n + ik (k > 0 absorbs), "keratin", "melanin" (Stavenga et al. 2015's n(lambda) + i k(lambda)),
     a named index, a number or Cauchy's (a, b). Or the text a barbule BSDF's `layers` takes, e.g.

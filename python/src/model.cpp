@@ -523,7 +523,8 @@ py::dict multilayer(const DoubleArray& theta, const DoubleArray& lambda, const p
     try {
       r = multilayerResponse(stack, theta.data()[i] * (M_PI / 180.0), l);
     } catch (const std::invalid_argument& e) {
-      throw py::value_error(e.what());
+      throw py::value_error(
+          fmt::format("theta_deg {:g}, wavelength {:g} (element {}): {}", theta.data()[i], l, i, e.what()));
     }
     const double values[] = {r.rs, r.rp, r.reflectance(), r.ts, r.tp, r.transmittance(), r.absorptance()};
     for (int k = 0; k < 7; ++k) out[size_t(k)].mutable_data()[i] = values[k];

@@ -4,8 +4,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/illuminant.h"
@@ -68,27 +71,46 @@ Observer observerFrom(const py::object& spec) {
   if (definition.noise.relativeDensities.size() != peaks.size())
     throw py::value_error("give one relative density per cone in 'densities'");
   if (d.contains("weber")) definition.noise.weberFraction = d["weber"].cast<double>();
-  definition.noise.weberReference = d.contains("weber_cone") ? d["weber_cone"].cast<size_t>() : peaks.size() - 1;
-  if (definition.noise.weberReference >= peaks.size()) throw py::value_error("'weber_cone' names no cone");
-  return makeObserver(definition);
+  const long long weberCone =
+      d.contains("weber_cone") ? d["weber_cone"].cast<long long>() : (long long)peaks.size() - 1;
+  if (weberCone < 0)
+    throw py::value_error("weber_cone " + std::to_string(weberCone) + " names no cone: give 0 to " +
+                          std::to_string(peaks.size() - 1));
+  definition.noise.weberReference = size_t(weberCone);
+  return makeObserver(definition);  // its receptor noise checked there: a ValueError naming the key and value
 }
 
-// `values` (one spectrum, or N x k: k spectra in columns, pavo's layout) at `wavelengths`,
-// linearly interpolated onto the observer's grid; a spectrum must cover every wavelength where a
-// cone is sensitive (above 1e-4 of its peak).
-// The wavelengths checked: a 1-D increasing array, and `values` one row per wavelength.
+// The one check of every vision function's spectra (reflectances and illuminants): `wavelengths` a
+// 1-D increasing array of at least two positive, finite values (nm); `values` one row per
+// wavelength (N, or N x k: k spectra in columns, pavo's layout), each value finite, non-negative and
+// at most a float's largest (3.4e38; spectra are kept as floats). A ValueError names the argument,
+// the index, its wavelength and the value.
 void checkSpectra(const DoubleArray& wavelengths, const DoubleArray& values, const char* what) {
   if (wavelengths.ndim() != 1 || wavelengths.shape(0) < 2)
     throw py::value_error("wavelengths must be a 1-D array of at least two values (nm)");
   const py::ssize_t n = wavelengths.shape(0);
   const double* w = wavelengths.data();
+  for (py::ssize_t i = 0; i < n; ++i)
+    if (!(w[i] > 0.0 && std::isfinite(w[i])))
+      throw py::value_error(
+          fmt::format("wavelengths[{}] is {:g}: wavelengths must be positive and finite (nm)", i, w[i]));
   for (py::ssize_t i = 1; i < n; ++i)
     if (!(w[i] > w[i - 1])) throw py::value_error("wavelengths must increase");
   if (!((values.ndim() == 1 && values.shape(0) == n) || (values.ndim() == 2 && values.shape(0) == n)))
     throw py::value_error(std::string(what) + " must have one row per wavelength (N, or N x k for k spectra)");
+  const py::ssize_t k = values.ndim() == 1 ? 1 : values.shape(1);
+  const double* v = values.data();
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (py::ssize_t j = 0; j < k; ++j)
+      if (const double x = v[i * k + j]; !(x >= 0.0 && x <= double(std::numeric_limits<float>::max())))
+        throw py::value_error(
+            fmt::format("{}[{}] at {:g} nm is {:g}: {} must be finite, non-negative and at most "
+                        "3.4e38",
+                        what, values.ndim() == 1 ? fmt::format("{}", i) : fmt::format("{}, {}", i, j), w[i], x, what));
 }
 
-// Each spectrum piecewise linear through its samples (core/spectrum.h), read on the grid where it
+// Each spectrum (`values` at `wavelengths`, linearly interpolated onto the observer's grid)
+// piecewise linear through its samples (core/spectrum.h), read on the grid where it
 // was measured and 0 elsewhere.
 std::vector<std::vector<float>> interpolated(const SpectralGrid& grid, const DoubleArray& wavelengths,
                                              const DoubleArray& values) {
@@ -198,7 +220,8 @@ void bindVision(py::module_& m) {
         return r;
       },
       py::arg("observer"),
-      "An observer's sensitivities (channels x wavelengths, each of area 1 per nm) and receptor noise");
+      "An observer's sensitivities (channels x wavelengths, each of area 1 per nm) and receptor noise. A dict's "
+      "densities must lie within [1e-6, 1e6], its weber within [1e-6, 10] and weber_cone name a cone (ValueError)");
   m.def(
       "cone_catches",
       [](const DoubleArray& wavelengths, const DoubleArray& spectra, const py::object& spec,
@@ -219,7 +242,8 @@ void bindVision(py::module_& m) {
       py::arg("wavelengths"), py::arg("spectra"), py::arg("observer") = "bluetit", py::arg("illuminant") = py::none(),
       py::arg("von_kries") = true, py::arg("relative") = false,
       "Quantum catches of reflectance spectra (N, or N x k in columns) under an illuminant (default: equal "
-      "photon flux), adapted to an ideal white (von Kries) by default; one row per spectrum, one column per cone");
+      "photon flux), adapted to an ideal white (von Kries) by default; one row per spectrum, one column per cone. "
+      "Spectra must be finite, non-negative and at most 3.4e38, wavelengths positive (ValueError naming the value)");
   m.def(
       "colour_distance",
       [](const DoubleArray& wavelengths, const DoubleArray& a, const DoubleArray& b, const py::object& spec,
@@ -236,7 +260,8 @@ void bindVision(py::module_& m) {
       py::arg("wavelengths"), py::arg("a"), py::arg("b"), py::arg("observer") = "bluetit",
       py::arg("illuminant") = py::none(),
       "The receptor-noise-limited distance between two reflectance spectra in JND (dS, chromatic; dL, achromatic "
-      "where the observer has double cones), Vorobyev & Osorio 1998");
+      "where the observer has double cones), Vorobyev & Osorio 1998. Spectra must be finite, non-negative and at "
+      "most 3.4e38, wavelengths positive (ValueError naming the value)");
   m.def(
       "human_colour_difference",
       [](const DoubleArray& wavelengths, const DoubleArray& a, const DoubleArray& b, const py::object& illuminant) {
@@ -252,7 +277,8 @@ void bindVision(py::module_& m) {
       },
       py::arg("wavelengths"), py::arg("a"), py::arg("b"), py::arg("illuminant") = py::none(),
       "How far apart two reflectance spectra look to a human (CIE 1931 observer): their CIELAB colours under the "
-      "illuminant (default D65), CIEDE2000 and CIE 1976 differences, and the latter in JND at 2.3 a JND");
+      "illuminant (default D65), CIEDE2000 and CIE 1976 differences, and the latter in JND at 2.3 a JND. Spectra "
+      "must be finite, non-negative and at most 3.4e38, wavelengths positive (ValueError naming the value)");
 }
 
 }  // namespace columba::python

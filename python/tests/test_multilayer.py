@@ -33,6 +33,20 @@ def test_bad_layers_are_value_errors():
         columba.multilayer(0.0, 500.0, [("keratin",)])
 
 
+def test_grazing_incidence_is_the_limit_and_bad_angles_and_wavelengths_are_value_errors():
+    # 90 degrees gave NaN in Rp, R, Tp, T and A, a NaN angle NaN, a negative wavelength a result.
+    m = columba.multilayer([89.999, 90.0], 500.0, [("keratin", 0.2), (1.7 + 0.3j, 0.1)], substrate_ior=1.33)
+    np.testing.assert_array_equal([m["R"][1], m["Rs"][1], m["Rp"][1], m["T"][1], m["A"][1]], [1, 1, 1, 0, 0])
+    assert m["R"][0] == pytest.approx(1.0, abs=1e-2)
+    with pytest.raises(ValueError, match=r"theta_deg nan, wavelength 500 \(element 0\): the angle of incidence nan"):
+        columba.multilayer(float("nan"), 500.0, [("keratin", 0.2)])
+    with pytest.raises(ValueError, match=r"theta_deg 90.5, .*lies outside \[0, 90\]"):
+        columba.multilayer(90.5, 500.0, [("keratin", 0.2)])
+    for wavelength in (-500.0, 0.0, float("inf")):
+        with pytest.raises(ValueError, match=f"the wavelength {wavelength:g} nm is not positive and finite"):
+            columba.multilayer([10.0, 20.0], [500.0, wavelength], [("keratin", 0.2)])
+
+
 def test_layer_text_is_the_stack_it_describes():
     # Plain layers as text and as a list: the same numbers.
     text = columba.multilayer(25.0, WL, "keratin:0.2, 1.7+0.3i:0.2, air:0.1")

@@ -117,3 +117,56 @@ def test_a_human_sees_greys_by_their_lightness_and_colours_apart():
     assert far["lab_a"][1] > 20 and far["dE2000"] > 30
     with pytest.raises(ValueError, match="cover 400-700 nm"):
         columba.human_colour_difference(wl[wl > 450], grey[wl > 450], grey[wl > 450])
+
+
+WEBER = "weber (the reference cone's Weber fraction) "
+DENSITY = "densities[1] (a cone's relative density) "
+
+
+@pytest.mark.parametrize("key, value, shown", [
+    ("weber", 0.0, WEBER + "0 "), ("weber", float("nan"), WEBER + "nan"), ("weber", float("inf"), WEBER + "inf"),
+    ("weber", -0.1, WEBER + "-0.1"), ("densities", [1.0, 1e-300], DENSITY + "1e-300"),
+    ("densities", [1.0, float("inf")], DENSITY + "inf"), ("weber_cone", -1, "weber_cone -1 names no cone: give 0 to 1"),
+    ("weber_cone", 2, "weber_cone 2 names no cone: give 0 to 1"),
+])
+def test_an_observer_dicts_receptor_noise_out_of_range_is_a_value_error_naming_it(key, value, shown):
+    # dS was inf, NaN or 0 for these, and weber_cone=-1 a raw cast error.
+    spec = {"name": "two cones", "lambda_max": [420.0, 540.0], key: value}
+    with pytest.raises(ValueError, match="weber|densities") as error:
+        columba.observer(spec)
+    assert shown in str(error.value)
+
+
+def _error(call):
+    with pytest.raises(ValueError) as error:
+        call()
+    return str(error.value)
+
+
+@pytest.mark.parametrize("value, shown", [(float("nan"), "nan"), (-1.0, "-1"), (1e300, "1e+300")])
+def test_every_vision_function_refuses_a_spectrum_value_naming_argument_index_and_wavelength(value, shown):
+    # cone_catches and human_colour_difference returned NaN or negative values for these.
+    bad, ones = np.where(WL == 500.0, value, 1.0), np.ones_like(WL)
+    expected = f"[200] at 500 nm is {shown}"
+    assert "spectra" + expected in _error(lambda: columba.cone_catches(WL, bad))
+    assert "spectra[200, 1] at 500 nm" in _error(lambda: columba.cone_catches(WL, np.stack([ones, bad], axis=1)))
+    assert "a" + expected in _error(lambda: columba.colour_distance(WL, bad, ones))
+    assert "b" + expected in _error(lambda: columba.human_colour_difference(WL, ones, bad))
+    assert "illuminant" + expected in _error(lambda: columba.cone_catches(WL, ones, illuminant=bad))
+    assert "illuminant" + expected in _error(lambda: columba.human_colour_difference(WL, ones, ones, illuminant=bad))
+
+
+def test_wavelengths_must_be_positive_and_finite_and_an_illuminant_must_light_the_cones():
+    wl = WL.copy()
+    wl[0] = -300.0
+    assert "wavelengths[0] is -300" in _error(lambda: columba.cone_catches(wl, np.ones_like(WL)))
+    wl[0] = np.nan
+    assert "wavelengths[0] is nan" in _error(lambda: columba.human_colour_difference(wl, np.ones_like(WL), np.ones_like(WL)))
+    # A dark illuminant: its white catches nothing to adapt to (NaN catches and colours before).
+    dark, ones = np.zeros_like(WL), np.ones_like(WL)
+    assert "the background's catch in UVS is 0" in _error(lambda: columba.cone_catches(WL, ones, illuminant=dark))
+    assert "the background's catch" in _error(lambda: columba.colour_distance(WL, ones, ones, illuminant=dark))
+    assert "no light the CIE 1931 observer sees" in _error(
+        lambda: columba.human_colour_difference(WL, ones, ones, illuminant=dark))
+    # Unadapted, a dark illuminant's catches are 0, as they are.
+    np.testing.assert_array_equal(columba.cone_catches(WL, ones, illuminant=dark, von_kries=False), 0.0)

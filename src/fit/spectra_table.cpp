@@ -8,26 +8,15 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
-#include <sstream>
 
-#include "core/byte_order_mark.h"
 #include "core/error.h"
 #include "core/number_text.h"
 #include "core/spectrum.h"
+#include "core/table_rows.h"
 
 namespace columba {
 
 namespace {
-
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) {
-    size_t first = field.find_first_not_of(" \t\r"), last = field.find_last_not_of(" \t\r");
-    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
-  }
-  return fields;
-}
 
 float number(const std::string& path, int line, const std::string& what, const std::string& text) {
   const std::optional<float> v = parseNumber<float>(text);
@@ -88,7 +77,6 @@ std::vector<SpectrumColumn> spectrumColumns(const std::string& path, int line, c
 std::vector<SpectraSample> readSpectraCSV(const std::string& path, const SpectraGeometry& geometry) {
   std::ifstream in(path);
   if (!in) throw InputError({path, 0}, "cannot open the spectra file");
-  skipByteOrderMark(in);
   static const std::array<const char*, 6> names = {"theta_i", "phi_i",         "theta_o",
                                                    "phi_o",   "wavelength_nm", "reflectance"};
   static const std::array<const char*, 5> wavelengthNames = {"wavelength_nm", "wavelength", "wl", "lambda", "nm"};
@@ -98,10 +86,9 @@ std::vector<SpectraSample> readSpectraCSV(const std::string& path, const Spectra
   std::vector<SpectraSample> samples;
   std::vector<std::vector<SpectraSample>> wide;  // a wide layout's, by spectrum: each spectrum's wavelengths together
   bool warnedRetro = false;
-  std::string line;
-  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
-    std::vector<std::string> fields = splitFields(line);
+  TableRows rows(in, TableRows::Separators::Commas);
+  for (std::vector<std::string> fields; rows.next(fields);) {
+    const int lineNo = rows.line();
     if (!longColumns && !wavelengthColumn) {
       std::array<size_t, 6> column{};
       bool all = true;

@@ -1,5 +1,7 @@
 #include "optics/multilayer.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -127,6 +129,11 @@ void response(const LayerStack& stack, double tangential, double lambdaNm, Multi
 }  // namespace
 
 MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncident, double lambdaNm) {
+  if (!(thetaIncident >= 0.0 && thetaIncident <= 0.5 * M_PI))
+    throw std::invalid_argument(
+        fmt::format("the angle of incidence {:g} degrees lies outside [0, 90]", thetaIncident * 180.0 / M_PI));
+  if (!(lambdaNm > 0.0 && std::isfinite(lambdaNm)))
+    throw std::invalid_argument(fmt::format("the wavelength {:g} nm is not positive and finite", lambdaNm));
   auto check = [](Complex n, const char* what) {
     if (!(n.real() > 0.0) || n.imag() < 0.0 || !std::isfinite(n.real()) || !std::isfinite(n.imag()))
       throw std::invalid_argument(std::string(what) +
@@ -146,7 +153,12 @@ MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncid
   if (!stack.runs.empty() && covered != stack.layers.size())
     throw std::invalid_argument("the runs of layers must cover the stack's layers");
   MultilayerResponse r;
-  response(stack, stack.incidentIndex * std::sin(thetaIncident), lambdaNm, r);
+  const double tangential = stack.incidentIndex * std::sin(thetaIncident);
+  if (tangential == stack.incidentIndex) {  // grazing: the incident admittances are 0 (s) and infinite (p)
+    r.rs = r.rp = 1.0;
+    return r;
+  }
+  response(stack, tangential, lambdaNm, r);
   return r;
 }
 

@@ -42,9 +42,11 @@ struct MultilayerResponse {
 };
 
 // The stack's response to light of vacuum wavelength `lambdaNm` meeting it at `thetaIncident`
-// (radians from the normal, in the incident medium). Throws std::invalid_argument for a layer of
-// negative thickness, an index with negative real or imaginary part, or runs that do not cover
-// the layers.
+// (radians from the normal, in the incident medium, within [0, pi/2]). At grazing incidence, pi/2,
+// it is the limit R = 1, T = 0 (the incident medium's admittance is 0 for s and infinite for p).
+// Throws std::invalid_argument for an angle outside [0, pi/2] or NaN, a wavelength that is not
+// positive and finite, a layer of negative thickness, an index with negative real or imaginary
+// part, or runs that do not cover the layers.
 MultilayerResponse multilayerResponse(const LayerStack& stack, double thetaIncident, double lambdaNm);
 
 // The same stack seen from the substrate's side (the layers in reverse, the substrate as the

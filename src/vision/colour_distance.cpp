@@ -7,14 +7,10 @@
 namespace columba {
 
 std::vector<double> receptorNoise(const ReceptorNoise& noise) {
+  checkReceptorNoise(noise);
   const std::vector<double>& eta = noise.relativeDensities;
-  if (noise.weberReference >= eta.size())
-    throw std::invalid_argument("the Weber fraction's reference cone is out of range");
   std::vector<double> e;
-  for (double density : eta) {
-    if (!(density > 0.0)) throw std::invalid_argument("relative receptor densities must be positive");
-    e.push_back(noise.weberFraction * std::sqrt(eta[noise.weberReference] / density));
-  }
+  for (double density : eta) e.push_back(noise.weberFraction * std::sqrt(eta[noise.weberReference] / density));
   return e;
 }
 

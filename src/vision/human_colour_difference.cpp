@@ -2,6 +2,8 @@
 
 #include <lcms2.h>
 
+#include <stdexcept>
+
 #include "core/spectrum.h"
 
 namespace columba {
@@ -26,7 +28,8 @@ Vec3 reflectanceXYZ(const SpectralGrid& grid, const std::vector<float>& reflecta
     x += re * cmf.x, y += re * cmf.y, z += re * cmf.z;
     white += e * cmf.y;
   }
-  if (!(white > 0.0)) return Vec3(0.0f, 0.0f, 0.0f);
+  if (!(white > 0.0))
+    throw std::invalid_argument("the illuminant has no light the CIE 1931 observer sees (a white's Y under it is 0)");
   return Vec3(float(x / white), float(y / white), float(z / white));
 }
 

@@ -18,7 +18,8 @@ struct CIELab {
 CIELab labFromXYZ(const Vec3& xyz, const Vec3& white);
 
 // The CIE 1931 XYZ of a reflectance spectrum under an illuminant, both on `grid`, scaled so that a
-// perfect white reflector has Y = 1: X = sum R E xbar / sum E ybar, and so on.
+// perfect white reflector has Y = 1: X = sum R E xbar / sum E ybar, and so on. Throws
+// std::invalid_argument for an illuminant without light where ybar is positive (Y undefined).
 Vec3 reflectanceXYZ(const SpectralGrid& grid, const std::vector<float>& reflectance,
                     const std::vector<float>& illuminant);
 

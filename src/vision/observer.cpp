@@ -1,5 +1,7 @@
 #include "vision/observer.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -24,6 +26,25 @@ std::vector<float> coneSensitivity(const SpectralGrid& grid, const ConeClass& co
   return out;
 }
 
+void checkReceptorNoise(const ReceptorNoise& noise) {
+  const std::vector<double>& eta = noise.relativeDensities;
+  for (size_t i = 0; i < eta.size(); ++i)
+    if (!(eta[i] >= kLeastRelativeDensity && eta[i] <= kMostRelativeDensity))
+      throw std::invalid_argument(
+          fmt::format("densities[{}] (a cone's relative density) {:g} lies outside [{:g}, {:g}]", i, eta[i],
+                      kLeastRelativeDensity, kMostRelativeDensity));
+  if (noise.weberReference >= eta.size())
+    throw std::invalid_argument(fmt::format("weber_cone {} names no cone: give 0 to {}", noise.weberReference,
+                                            eta.empty() ? 0 : eta.size() - 1));
+  auto checkFraction = [](double w, const char* what) {
+    if (!(w >= kLeastWeberFraction && w <= kMostWeberFraction))
+      throw std::invalid_argument(
+          fmt::format("{} {:g} lies outside [{:g}, {:g}]", what, w, kLeastWeberFraction, kMostWeberFraction));
+  };
+  checkFraction(noise.weberFraction, "weber (the reference cone's Weber fraction)");
+  checkFraction(noise.achromaticWeberFraction, "the achromatic Weber fraction");
+}
+
 Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& grid) {
   if (definition.cones.size() < 2)
     throw std::invalid_argument("observer '" + definition.name + "' needs at least two chromatic cone classes");
@@ -31,9 +52,11 @@ Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& 
   if (noise.relativeDensities.size() != definition.cones.size())
     throw std::invalid_argument("observer '" + definition.name + "' has " + std::to_string(definition.cones.size()) +
                                 " cones but " + std::to_string(noise.relativeDensities.size()) + " relative densities");
-  if (noise.weberReference >= definition.cones.size())
-    throw std::invalid_argument("observer '" + definition.name +
-                                "': the Weber fraction's reference cone is out of range");
+  try {
+    checkReceptorNoise(noise);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("observer '" + definition.name + "': " + e.what());
+  }
   Observer observer;
   observer.name = definition.name;
   observer.grid = grid;

@@ -32,6 +32,18 @@ struct ReceptorNoise {
   double achromaticWeberFraction = 0.1;
 };
 
+// The receptor-noise parameters every observer is held to (a definition file's columns, Python's
+// observer dicts, makeObserver): relative densities within [1e-6, 1e6], Weber fractions within
+// [1e-6, 10]. A Weber fraction of 0 made every distance infinite, one of inf or NaN every distance 0
+// or NaN, and a density of inf a noise of NaN.
+constexpr double kLeastRelativeDensity = 1e-6, kMostRelativeDensity = 1e6;
+constexpr double kLeastWeberFraction = 1e-6, kMostWeberFraction = 10.0;
+
+// Throws std::invalid_argument naming the parameter as an observer dict names it (densities[i],
+// weber, weber_cone; and the achromatic Weber fraction) and its value where `noise` has one outside
+// those ranges, or a reference cone that is not one of its densities'.
+void checkReceptorNoise(const ReceptorNoise& noise);
+
 // A visual system as its published parameters.
 struct ObserverDefinition {
   std::string name;
@@ -59,7 +71,9 @@ struct Observer {
 // times the oil droplet's transmittance, divided by its integral over the grid (area 1, in 1/nm).
 std::vector<float> coneSensitivity(const SpectralGrid& grid, const ConeClass& cone);
 
-// The observer of a definition, tabulated on the grid (300-830 nm in 1 nm steps by default).
+// The observer of a definition, tabulated on the grid (300-830 nm in 1 nm steps by default). Throws
+// std::invalid_argument naming the observer for fewer than two cones, a density a cone short or
+// over, or receptor noise that checkReceptorNoise refuses.
 Observer makeObserver(const ObserverDefinition& definition, const SpectralGrid& grid = visionGrid());
 
 // The built-in definitions (docs/vision.md lists each with its sources).

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "core/table_rows.h"
 
 namespace columba {
 
@@ -57,7 +58,7 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
   d.name = name;
   d.description = "defined in " + path;
   std::vector<std::string> header;
-  int lineNumber = 0, headerLine = 0;
+  int headerLine = 0;
   // The cones as read, in the file's order, then sorted by name's place in kCones.
   struct Read {
     ConeClass cone;
@@ -66,11 +67,10 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
   };
   std::vector<Read> chromatic;
   std::optional<double> achromaticWeber;
-  for (std::string line; std::getline(in, line);) {
-    ++lineNumber;
+  TableRows rows(in, TableRows::Separators::CommasOrWhiteSpace);
+  for (std::vector<std::string> values; rows.next(values);) {
+    const int lineNumber = rows.line();
     if (lineNumber > 1000) throw InputError({path, lineNumber}, "more than 1000 lines: a definition has a row a cone");
-    const std::vector<std::string> values = listItems(line);
-    if (values.empty() || values.front()[0] == '#') continue;
     if (header.empty()) {
       header = values;
       headerLine = lineNumber;
@@ -121,8 +121,8 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
     }
     if ((!droplet || *droplet == "T") && (cut || mid))
       throw InputError({path, lineNumber}, "lambda_cut and lambda_mid belong to C, Y, R and P droplets: NA here");
-    const std::optional<double> density = row.number("density", 1e-6, 1e6);
-    const std::optional<double> weber = row.number("weber", 1e-6, 10.0);
+    const std::optional<double> density = row.number("density", kLeastRelativeDensity, kMostRelativeDensity);
+    const std::optional<double> weber = row.number("weber", kLeastWeberFraction, kMostWeberFraction);
     if (cone == "DBL") {
       if (density) throw InputError({path, lineNumber}, "the double cone has no density in the chromatic model: NA");
       d.doubleCone = c;
@@ -131,7 +131,7 @@ ObserverDefinition readObserverDefinition(std::istream& in, const std::string& p
     }
     chromatic.push_back({c, density, weber, lineNumber});
   }
-  if (header.empty()) throw InputError({path, lineNumber}, "no header row (cone, lambda_max, droplet, ...)");
+  if (header.empty()) throw InputError({path, rows.line()}, "no header row (cone, lambda_max, droplet, ...)");
   std::sort(chromatic.begin(), chromatic.end(), [](const Read& a, const Read& b) {
     return std::find(kCones.begin(), kCones.end(), a.cone.name) < std::find(kCones.begin(), kCones.end(), b.cone.name);
   });

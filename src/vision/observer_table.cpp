@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "core/table_rows.h"
 #include "vision/observer_definition_file.h"
 
 namespace columba {
@@ -29,14 +30,12 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
   static const std::vector<std::string> kCones = {"UVS", "VS", "SWS", "MWS", "LWS", "DBL"};
   static const std::map<std::string, double> kDensity = {{"UVS", 1}, {"VS", 1}, {"SWS", 2}, {"MWS", 2}, {"LWS", 4}};
   std::vector<std::string> header;
-  int headerLine = 0, lineNumber = 0;
+  int headerLine = 0;
   std::vector<double> wavelengths;
   std::vector<std::vector<double>> columns;
-  std::string line;
-  while (std::getline(table, line)) {
-    ++lineNumber;
-    const std::vector<std::string> row = listItems(line);
-    if (row.empty() || row.front()[0] == '#') continue;
+  TableRows rows(table, TableRows::Separators::CommasOrWhiteSpace);
+  for (std::vector<std::string> row; rows.next(row);) {
+    const int lineNumber = rows.line();
     if (header.empty()) {
       header = row;
       headerLine = lineNumber;
@@ -70,8 +69,8 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
       columns[c - 1].push_back(v);
     }
   }
-  if (header.empty()) throw InputError({path, lineNumber}, "no header row (wl and the cones' names)");
-  if (wavelengths.size() < 2) throw InputError({path, lineNumber}, "fewer than two rows of sensitivities");
+  if (header.empty()) throw InputError({path, rows.line()}, "no header row (wl and the cones' names)");
+  if (wavelengths.size() < 2) throw InputError({path, rows.line()}, "fewer than two rows of sensitivities");
 
   Observer o;
   o.name = name;
@@ -81,7 +80,12 @@ Observer readObserverTable(std::istream& table, const std::string& path, const s
   for (const std::string& cone : kCones) {
     const auto at = std::find(header.begin() + 1, header.end(), cone);
     if (at == header.end()) continue;
-    const std::vector<double>& column = columns[size_t(at - header.begin()) - 1];
+    // Divided by its largest value before it is summed, so that a curve in any unit, up to the
+    // largest double, has an area without overflow (1e307 a row summed to inf, and every catch to NaN).
+    std::vector<double> column = columns[size_t(at - header.begin()) - 1];
+    const double largest = *std::max_element(column.begin(), column.end());
+    if (largest > 0.0)
+      for (double& v : column) v /= largest;
     std::vector<double> curve(o.grid.count);
     double area = 0.0;
     for (size_t i = 0; i < o.grid.count; ++i)
@@ -133,16 +137,12 @@ Observer readObserverTableFile(const std::string& path) {
   in << file.rdbuf();
   const std::string name = std::filesystem::path(path).stem().string();
   // A definition's header starts with `cone`; a table's with its wavelength column.
-  for (std::string line; std::getline(in, line);) {
-    const std::vector<std::string> row = listItems(line);
-    if (row.empty() || row.front()[0] == '#') continue;
-    in.clear();
-    in.seekg(0);
-    if (isObserverDefinitionHeader(row.front())) return makeObserver(readObserverDefinition(in, path, name));
-    break;
-  }
+  std::vector<std::string> header;
+  const bool definition = TableRows(in, TableRows::Separators::CommasOrWhiteSpace).next(header) &&
+                          isObserverDefinitionHeader(header.front());
   in.clear();
   in.seekg(0);
+  if (definition) return makeObserver(readObserverDefinition(in, path, name));
   return readObserverTable(in, path, name);
 }
 

@@ -12,7 +12,8 @@ namespace columba {
 // `wavelength_nm` or `lambda`) and cone columns named UVS or VS, SWS, MWS, LWS (at least two) and
 // optionally DBL (the double cone); '#' lines are comments; commas, tabs or spaces separate. Each
 // curve is interpolated linearly onto the vision grid (300-830 nm, 1 nm), zero outside the table's
-// wavelengths, and divided by its area there (area 1, as the built-in observers). The receptor noise
+// wavelengths, and divided by its area there (area 1, as the built-in observers; in any unit, as the
+// column is divided by its largest value first). The receptor noise
 // is pavo's coldist default (relative densities UVS/VS 1, SWS 2, MWS 2, LWS 4; Weber fraction 0.1 of
 // the longest cone, 0.1 achromatic). The observer is named `name`. Throws InputError naming `path`
 // and the line for anything else.

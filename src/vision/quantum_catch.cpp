@@ -1,5 +1,8 @@
 #include "vision/quantum_catch.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -37,8 +40,18 @@ ConeCatches quantumCatches(const Observer& observer, const std::vector<float>& r
 
 ConeCatches backgroundCatches(const Observer& observer, const std::vector<float>& illuminant,
                               const std::vector<float>& background) {
-  if (background.empty()) return quantumCatches(observer, std::vector<float>(observer.grid.count, 1.0f), illuminant);
-  return quantumCatches(observer, background, illuminant);
+  const ConeCatches catches = quantumCatches(
+      observer, background.empty() ? std::vector<float>(observer.grid.count, 1.0f) : background, illuminant);
+  auto check = [&](double q, const std::string& cone) {
+    if (!(q > 0.0 && std::isfinite(q)))
+      throw std::invalid_argument(fmt::format(
+          "observer '{}': the background's catch in {} is {:g}, so nothing can be adapted to it: the illuminant (or "
+          "background) has no light where that cone is sensitive",
+          observer.name, cone, q));
+  };
+  for (size_t c = 0; c < catches.chromatic.size(); ++c) check(catches.chromatic[c], observer.channels[c]);
+  if (catches.achromatic) check(*catches.achromatic, observer.achromaticChannel);
+  return catches;
 }
 
 ConeCatches vonKries(const ConeCatches& catches, const ConeCatches& background) {

@@ -20,6 +20,8 @@ ConeCatches quantumCatches(const Observer& observer, const std::vector<float>& r
                            const std::vector<float>& illuminant);
 
 // The catches of an ideal white (R = 1) under the illuminant, or of the given background spectrum.
+// Throws std::invalid_argument naming the cone where one is not positive and finite (an illuminant
+// dark where that cone is sensitive): nothing could be adapted to it.
 ConeCatches backgroundCatches(const Observer& observer, const std::vector<float>& illuminant,
                               const std::vector<float>& background = {});
 

@@ -12,6 +12,7 @@
 
 #include "io/image.h"
 #include "support/cli_test_support.h"
+#include "vision/observer.h"
 
 namespace fs = std::filesystem;
 using columba::testing::CommandResult;
@@ -749,6 +750,34 @@ TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   CommandResult withoutSpecular = run("bsdf --mode spectra --observer bluetit -o " + dir_.string());
   EXPECT_NE(withoutSpecular.status, 0);
   EXPECT_NE(withoutSpecular.output.find("add --mode specular"), std::string::npos) << withoutSpecular.output;
+}
+
+// A table of sensitivities whose largest is 1e308 (their area once overflowed): the catches of the
+// blue tit's own curves so scaled are the built-in blue tit's, where the command failed naming no file.
+TEST_F(CliTest, BsdfConeCatchesOfATableInHugeUnitsAreTheBuiltInObserversOwn) {
+  const columba::Observer tit = columba::namedObserver("bluetit");
+  float peak = 0.0f;
+  for (const std::vector<float>& s : tit.sensitivities) peak = std::max(peak, *std::max_element(s.begin(), s.end()));
+  std::ofstream table(dir_ / "huge.csv");
+  table << "wl,UVS,SWS,MWS,LWS\n";
+  for (size_t i = 0; i < tit.grid.count; ++i) {
+    table << tit.grid.wavelength(i);
+    for (const std::vector<float>& s : tit.sensitivities) table << "," << double(s[i]) / peak * 1e308;
+    table << "\n";
+  }
+  table.close();
+  const std::string common = "bsdf --preset dove-green --mode specular --angles 0,30 --observer ";
+  CommandResult huge = run(common + (dir_ / "huge.csv").string() + " -o " + (dir_ / "huge").string());
+  ASSERT_EQ(huge.status, 0) << huge.output;
+  CommandResult builtIn = run(common + "bluetit -o " + (dir_ / "builtin").string());
+  ASSERT_EQ(builtIn.status, 0) << builtIn.output;
+  const auto a = csvRows(dir_ / "huge" / "bsdf_specular_catches.csv"),
+             e = csvRows(dir_ / "builtin" / "bsdf_specular_catches.csv");
+  ASSERT_EQ(a.size(), e.size());
+  for (size_t row = 1; row < e.size(); ++row)
+    for (size_t c = 1; c < e[row].size(); ++c)
+      EXPECT_NEAR(std::stod(a[row][c]), std::stod(e[row][c]), 1e-4 * std::abs(std::stod(e[row][c])) + 1e-6)
+          << e[0][c] << " at " << e[row][0] << " degrees";
 }
 
 TEST_F(CliTest, ConeChannelsOfASplitRenderMergeBitForBit) {

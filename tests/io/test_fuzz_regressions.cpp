@@ -44,6 +44,8 @@ const std::map<std::string, Reader>& readers() {
       {"manifest", columba::fuzz::manifestFromBytes},
       {"spectra_csv", columba::fuzz::spectraCSVFromBytes},
       {"layer_text", columba::fuzz::layerTextFromBytes},
+      {"observer_table", columba::fuzz::observerTableFromBytes},
+      {"observer_definition", columba::fuzz::observerDefinitionFromBytes},
   };
   return r;
 }
@@ -192,8 +194,8 @@ TEST(FuzzRegressions, ExrDeclaringMorePixelsThanTheFileCanHoldIsAnError) {
 TEST(FuzzRegressions, SeedsAreValidInputs) {
   // These targets' starting inputs must be read without an error (every image format, a piece
   // that completes the target's own, ...), or the fuzzer starts from nothing.
-  for (const char* target :
-       {"sdf_grid", "hdr_envmap", "bitmap", "merge_piece", "manifest", "spectra_csv", "layer_text"}) {
+  for (const char* target : {"sdf_grid", "hdr_envmap", "bitmap", "merge_piece", "manifest", "spectra_csv", "layer_text",
+                             "observer_table", "observer_definition"}) {
     int seeds = 0;
     for (const auto& entry : fs::directory_iterator(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/" + target)) {
       std::ifstream in(entry.path(), std::ios::binary);

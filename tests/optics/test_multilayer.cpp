@@ -4,6 +4,8 @@
 // layers raised to its power is the run written out.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <complex>
 
@@ -129,6 +131,34 @@ TEST(Multilayer, BadLayersAreRefused) {
   EXPECT_THROW(multilayerResponse({1.0, {{{1.5, -0.1}, 0.1}}, 1.0, {}}, 0.0, 500.0), std::invalid_argument);
   EXPECT_THROW(multilayerResponse({1.0, {}, {0.0, 1.0}, {}}, 0.0, 500.0), std::invalid_argument);
   EXPECT_THROW(reversed({1.0, {}, {1.5, 0.1}, {}}), std::invalid_argument);
+}
+
+// At 90 degrees the p admittance of the incident medium is infinite: R, T and A were NaN there.
+// The limit is R = 1, T = 0, which angles just below approach; angles beyond [0, 90] degrees, NaN
+// and wavelengths that are not positive and finite are refused, naming the value.
+TEST(Multilayer, GrazingIncidenceIsTheLimitAndBadAnglesAndWavelengthsAreRefused) {
+  const LayerStack film{1.0, {{{1.56, 0.0}, 0.2}, {{1.7, 0.3}, 0.1}}, {1.33, 0.0}, {}};
+  const MultilayerResponse grazing = multilayerResponse(film, M_PI / 2, 500.0);
+  EXPECT_EQ(grazing.rs, 1.0);
+  EXPECT_EQ(grazing.rp, 1.0);
+  EXPECT_EQ(grazing.transmittance(), 0.0);
+  EXPECT_EQ(grazing.absorptance(), 0.0);
+  const MultilayerResponse near = multilayerResponse(film, M_PI / 2 - 1e-6, 500.0);
+  EXPECT_NEAR(near.reflectance(), 1.0, 1e-4);
+  EXPECT_NEAR(near.transmittance(), 0.0, 1e-4);
+  auto error = [&](double theta, double lambda) {
+    try {
+      multilayerResponse(film, theta, lambda);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error(std::nan(""), 500.0), "the angle of incidence nan degrees lies outside [0, 90]");
+  EXPECT_EQ(error(M_PI, 500.0), "the angle of incidence 180 degrees lies outside [0, 90]");
+  EXPECT_EQ(error(-0.1, 500.0).substr(0, 25), "the angle of incidence -5");
+  for (double lambda : {-500.0, 0.0, std::nan(""), double(INFINITY)})
+    EXPECT_EQ(error(0.0, lambda), fmt::format("the wavelength {:g} nm is not positive and finite", lambda));
 }
 
 TEST(Multilayer, AThickAbsorberIsASemiInfiniteOne) {

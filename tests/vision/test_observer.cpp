@@ -6,6 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "support/error_test_support.h"
 #include "vision/observer.h"
 #include "vision/spectral_grid.h"
 
@@ -96,6 +101,31 @@ TEST(VisionObserver, UnknownNamesAreErrors) {
   ObserverDefinition d = definitionOf({{"a", 400.0, {}, true}, {"b", 500.0, {}, true}});
   d.noise.relativeDensities = {1.0};
   EXPECT_THROW(makeObserver(d), std::invalid_argument);
+}
+
+// A Weber fraction of 0 made every distance infinite, NaN or inf every distance NaN or 0, a density
+// of inf a noise of NaN: each is refused, naming the observer, the parameter and its value.
+TEST(VisionObserver, ReceptorNoiseOutsideItsRangesIsRefusedNamingTheParameter) {
+  const double nan = std::nan(""), inf = INFINITY;
+  auto error = [](const ReceptorNoise& noise) {
+    ObserverDefinition d = definitionOf({{"SWS", 450.0, {}, true}, {"LWS", 560.0, {}, true}});
+    d.noise = noise;
+    try {
+      makeObserver(d);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  for (double w : {0.0, nan, inf, -0.1, 11.0})
+    columba::testing::expectContains(error({{1, 1}, w, 1, 0.1}),
+                                     {"observer 'test'", "weber", fmt::format("{:g}", w).c_str(), "[1e-06, 10]"});
+  for (double density : {1e-300, inf, 0.0, nan})
+    columba::testing::expectContains(error({{1, density}, 0.1, 1, 0.1}),
+                                     {"densities[1]", fmt::format("{:g}", density).c_str(), "[1e-06, 1e+06]"});
+  columba::testing::expectContains(error({{1, 1}, 0.1, 2, 0.1}), {"weber_cone 2 names no cone: give 0 to 1"});
+  columba::testing::expectContains(error({{1, 1}, 0.1, 1, 0.0}), {"the achromatic Weber fraction 0"});
+  EXPECT_EQ(error({{1e-6, 1e6}, 10.0, 0, 1e-6}), "");  // the ranges' ends are taken
 }
 
 TEST(VisionObserver, ReadsEndlerMielkeLayout) {

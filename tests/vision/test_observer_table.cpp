@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -18,13 +19,19 @@ using namespace columba;
 using columba::testing::TempDirTest;
 
 namespace {
-// The blue tit's curves as a table, every `step` nm from 300 to 830 nm.
-std::string blueTitTable(int step) {
+// The blue tit's curves as a table, every `step` nm from 300 to 830 nm; where `largest` is given,
+// scaled so that the largest value is `largest`.
+std::string blueTitTable(int step, double largest = 0.0) {
   const Observer o = namedObserver("bluetit");
+  float peak = 0.0f;
+  for (const std::vector<float>& s : o.sensitivities) peak = std::max(peak, *std::max_element(s.begin(), s.end()));
+  auto value = [&](size_t c, size_t i) {
+    return largest > 0.0 ? o.sensitivities[c][i] / peak * largest : o.sensitivities[c][i];
+  };
   std::string text = "# the blue tit, written from Columba's own curves\nwl,UVS,SWS,MWS,LWS\n";
   for (size_t i = 0; i < o.grid.count; i += size_t(step))
-    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", o.grid.wavelength(i), o.sensitivities[0][i],
-                        o.sensitivities[1][i], o.sensitivities[2][i], o.sensitivities[3][i]);
+    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", o.grid.wavelength(i), value(0, i), value(1, i), value(2, i),
+                        value(3, i));
   return text;
 }
 
@@ -36,6 +43,21 @@ std::string tableError(const std::string& text) {
     return e.what();
   }
   return "";
+}
+
+// A 4 x 4 render of a lit diffuse plane by a film with `observer`.
+Image renderWithObserver(const std::string& observer) {
+  return columba::testing::renderSceneString(R"(<scene version="3.0.0"><integrator type="direct"/>
+      <sensor type="perspective"><float name="fov" value="1"/>
+        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/>
+          <string name="observer" value=")" + observer +
+                                             R"("/></film>
+        <sampler type="ldsampler"><integer name="sample_count" value="64"/></sampler></sensor>
+      <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
+        <bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.5, 0.3"/></bsdf></shape>
+      <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
+        <float name="irradiance" value="3"/></emitter></scene>)");
 }
 }  // namespace
 
@@ -72,6 +94,21 @@ TEST(ObserverTable, ACoarseTableIsInterpolatedAndHasAreaOne) {
     EXPECT_NEAR(integrateOnGrid(o.grid, s), 1.0, 1e-5);
 }
 
+// Sensitivities are in any unit: a curve whose largest value is 1e308 once summed to an infinite
+// area, every catch of that cone to NaN; tiny ones keep their precision.
+TEST(ObserverTable, ATableInAnyUnitGivesTheSameObserver) {
+  std::istringstream unit(blueTitTable(5));
+  const Observer one = readObserverTable(unit, "unit.csv", "unit");
+  for (double largest : {1e308, 1e-300}) {
+    std::istringstream in(blueTitTable(5, largest));
+    const Observer scaled = readObserverTable(in, "scaled.csv", "scaled");
+    for (size_t c = 0; c < 4; ++c)
+      for (size_t i = 0; i < one.grid.count; ++i)
+        ASSERT_NEAR(scaled.sensitivities[c][i], one.sensitivities[c][i], 1e-6 * one.sensitivities[c][i] + 1e-12)
+            << largest << " " << c << " " << i;
+  }
+}
+
 TEST(ObserverTable, BadTablesAreRefusedNamingTheLine) {
   using columba::testing::expectContains;
   expectContains(tableError("nm,UVS,SWS\n"), {"eye.csv:1", "not a wavelength column"});
@@ -89,28 +126,33 @@ TEST(ObserverTable, BadTablesAreRefusedNamingTheLine) {
 
 class ObserverTableFile : public TempDirTest {};
 
+// As spreadsheet programs save text: line 1 was "the first column is '<BOM>wl', not a wavelength
+// column", and a definition's header was taken for a table's.
+TEST_F(ObserverTableFile, ATableOrDefinitionMayStartWithAByteOrderMark) {
+  const Observer marked = readObserverTableFile(write("marked.csv", "\xEF\xBB\xBF" + blueTitTable(5)));
+  const Observer plain = readObserverTableFile(write("plain.csv", blueTitTable(5)));
+  ASSERT_EQ(marked.channels, plain.channels);
+  EXPECT_EQ(marked.sensitivities, plain.sensitivities);
+  const Observer defined = readObserverTableFile(write("defined.csv",
+                                                       "\xEF\xBB\xBF"
+                                                       "cone, lambda_max, droplet\nSWS, 450, NA\nLWS, 560, NA\n"));
+  EXPECT_EQ(defined.channels, (std::vector<std::string>{"SWS", "LWS"}));
+}
+
 TEST_F(ObserverTableFile, ARenderWithATablesObserverCatchesWhatTheBuiltInOneDoes) {
   const std::string table = write("bluetit.csv", blueTitTable(1));
-  auto scene = [](const std::string& observer) {
-    return columba::testing::renderSceneString(R"(<scene version="3.0.0"><integrator type="direct"/>
-      <sensor type="perspective"><float name="fov" value="1"/>
-        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
-        <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/>
-          <string name="observer" value=")" + observer +
-                                               R"("/></film>
-        <sampler type="ldsampler"><integer name="sample_count" value="64"/></sampler></sensor>
-      <shape type="rectangle"><transform name="to_world"><scale value="10"/></transform>
-        <bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.5, 0.3"/></bsdf></shape>
-      <emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
-        <float name="irradiance" value="3"/></emitter></scene>)");
-  };
-  const Image fromTable = scene(table), builtIn = scene("bluetit");
+  const Image fromTable = renderWithObserver(table), builtIn = renderWithObserver("bluetit");
   ASSERT_EQ(fromTable.cones.names, builtIn.cones.names);
   for (size_t i = 0; i < builtIn.cones.values.size(); ++i)
     EXPECT_NEAR(fromTable.cones.values[i], builtIn.cones.values[i], 1e-4 * builtIn.cones.values[i]) << i;
+  // A table whose largest value is 1e308 catches the same (its channels were NaN in every pixel).
+  const Image huge = renderWithObserver(write("huge.csv", blueTitTable(1, 1e308)));
+  ASSERT_EQ(huge.cones.names, builtIn.cones.names);
+  for (size_t i = 0; i < builtIn.cones.values.size(); ++i)
+    EXPECT_NEAR(huge.cones.values[i], builtIn.cones.values[i], 1e-4 * builtIn.cones.values[i]) << i;
   // A table that is not there is named with where it was looked for.
   try {
-    scene("nowhere.csv");
+    renderWithObserver("nowhere.csv");
     FAIL() << "no error";
   } catch (const InputError& e) {
     columba::testing::expectContains(e.what(), {"observer", "nowhere.csv", "not found"});

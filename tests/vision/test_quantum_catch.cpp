@@ -131,3 +131,16 @@ TEST(VisionColourDistance, HandComputedCases) {
   EXPECT_THROW(chromaticDistance({0.0, 1.0}, {1.0, 1.0}, {0.1, 0.1}), std::invalid_argument);
   EXPECT_THROW(chromaticDistance({1.0}, {1.0}, {0.1}), std::invalid_argument);
 }
+
+// A dark illuminant's white catches nothing: adapting to it divided 0 by 0 (NaN catches).
+TEST(QuantumCatch, AnIlluminantDarkWhereAConeSeesCannotBeAdaptedTo) {
+  const Observer o = namedObserver("bluetit");
+  std::vector<float> light(o.grid.count, 0.0f);
+  try {
+    backgroundCatches(o, light);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the background's catch in UVS is 0"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(adaptedQuantumCatches(o, std::vector<float>(o.grid.count, 0.5f), light), std::invalid_argument);
+}
