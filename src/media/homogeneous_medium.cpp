@@ -15,15 +15,14 @@ MediumCoefficients HomogeneousMedium::coefficients(const Vec3&, const Wavelength
   return {sigmaT, sigmaT * albedo_.sample(wl)};
 }
 
-std::optional<MajorantSegment> HomogeneousMedium::majorant(const Ray& ray, const Wavelengths& wl) const {
-  if (!(ray.tmin < ray.tmax)) return std::nullopt;
-  return MajorantSegment{ray.tmin, ray.tmax, sigmaT_.sample(wl) * scale_};
+MajorantIterator HomogeneousMedium::majorant(const Ray& ray, const Wavelengths& wl) const {
+  return MajorantIterator(ray.tmin, ray.tmax, sigmaT_.sample(wl) * scale_);
 }
 
 std::shared_ptr<Object> makeHomogeneousMedium(const Properties& props) {
   return std::make_shared<HomogeneousMedium>(props.getSpectrum("sigma_t", 1.0f, SpectrumUse::NonNegative),
                                              props.getSpectrum("albedo", 0.75f, SpectrumUse::Reflectance),
-                                             mediumScale(props), mediumPhase(props));
+                                             mediumScale(props), mediumPhase(props), &props);
 }
 
 }  // namespace columba

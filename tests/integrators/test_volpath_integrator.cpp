@@ -129,7 +129,8 @@ TEST(VolumetricPath, SingleScatteringInAThinSlabMatchesItsClosedFormSlow) {
 TEST(VolumetricPath, ScatteringSphereUnderUniformLightIsAFurnaceSlow) {
   // Inside a sphere of non-absorbing medium under a uniform white environment, radiance is the
   // environment's everywhere, however the extinction varies in space and with the wavelength: a
-  // check of delta tracking with null collisions, ratio tracking and spectral MIS together.
+  // check of delta tracking with null collisions, ratio tracking and spectral MIS together. At 256
+  // spp the heterogeneous sphere's mean strayed 0.03 from 1 for some seeds (heavy tails): 1024.
   const std::string media[] = {
       R"(<medium type="homogeneous" id="m"><rgb name="sigma_t" value="1"/><float name="albedo" value="1"/>
          <phase type="hg"><float name="g" value="0.5"/></phase></medium>)",
@@ -142,7 +143,7 @@ TEST(VolumetricPath, ScatteringSphereUnderUniformLightIsAFurnaceSlow) {
       <sensor type="perspective"><float name="fov" value="60"/>
         <transform name="to_world"><lookat origin="0, 0, 0.3" target="0, 0, 0" up="0, 1, 0"/></transform>
         <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
-        <sampler type="independent"><integer name="sample_count" value="256"/></sampler><ref id="m"/></sensor>
+        <sampler type="independent"><integer name="sample_count" value="1024"/></sampler><ref id="m"/></sensor>
       <emitter type="constant"><rgb name="radiance" value="1"/></emitter>)" +
                             medium + R"(
       <shape type="sphere"><float name="radius" value="1"/><bsdf type="null"/><ref name="interior" id="m"/></shape>
