@@ -36,6 +36,7 @@ GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const T
                                   " is " + fmt::format("{:g}", grid.values[i]) +
                                   "; a volume's values must lie in [0, " + fmt::format("{:g}", kLargest) + "]");
     }
+  for (float v : grid.values) largestGiven_ = std::max(largestGiven_, v);
   if (grid.channels == 1) {
     values_ = grid.values;
   } else if (grid.channels == 3) {

@@ -24,6 +24,7 @@ class GridVolume final : public Volume {
   std::array<int, 3> majorantResolution() const override;
   // The largest value of the whole grid.
   float maxValue() const { return max_; }
+  float largestGivenValue() const override { return largestGiven_; }
 
  protected:
   Spectrum evalLocal(const Vec3& p, const Wavelengths& wl) const override;
@@ -38,6 +39,7 @@ class GridVolume final : public Volume {
   std::vector<float> values_;         // one channel: a value per voxel
   std::vector<RGBSpectrum> spectra_;  // three channels: a spectrum per voxel
   float max_ = 0.0f;
+  float largestGiven_ = 0.0f;  // of the file's values, every channel
 };
 
 std::shared_ptr<Object> makeGridVolume(const Properties& props);

@@ -22,6 +22,9 @@ class Volume : public Object {
   // No value at any wavelength exceeds it within the box lo to hi of the volume's own space (a
   // part of the unit cube, or any box for a volume filling space).
   virtual float maxValue(const Vec3& lo, const Vec3& hi) const = 0;
+  // The largest value the scene gave for it (a grid's largest voxel value, a colour's largest
+  // component), for parameters whose values are bounded.
+  virtual float largestGivenValue() const = 0;
   // The cells per axis of a grid of such bounds over the unit cube that follows the volume's
   // variation (MajorantGrid); 1 for a volume of one value.
   virtual std::array<int, 3> majorantResolution() const { return {1, 1, 1}; }
@@ -44,7 +47,7 @@ class Volume : public Object {
 // A medium's volume parameter `name`: a nested <volume name="..."> or, as Mitsuba reads it, a
 // <float>, <rgb> or <spectrum> given directly (a constant volume over all space), or `def`.
 // `use` says how an RGB colour becomes a spectrum (SpectrumUse::NonNegative for an extinction,
-// Reflectance for an albedo).
+// Fraction for an albedo, which is refused outside [0, 1] as a value or a volume).
 std::shared_ptr<Volume> mediumVolume(const Properties& props, const std::string& name, float def, SpectrumUse use);
 
 }  // namespace columba

@@ -204,6 +204,29 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
                                                                               (dir_ / "negative.vol").string() +
                                                                               R"("/></volume></medium>)" + sphere)),
                  {"vol.xml:13", "negative.vol", "x 1, y 1, z 0", "-0.25", "must lie in [0, 8.50706e+37]"});
+  // An albedo outside [0, 1] is refused in every form, naming the value: -1 gave negative pixels,
+  // 5 a mean of 9041 where 0.8 gives 0.93, and an <rgb> was clamped.
+  for (const auto& [medium, value] :
+       {std::pair(R"(<medium type="homogeneous" id="fog"><float name="albedo" value="-1"/></medium>)", "-1"),
+        std::pair(R"(<medium type="heterogeneous" id="fog"><float name="albedo" value="5"/></medium>)", "5"),
+        std::pair(R"(<medium type="homogeneous" id="fog"><rgb name="albedo" value="0.5, 1.2, 0.5"/></medium>)", "1.2"),
+        std::pair(R"(<medium type="heterogeneous" id="fog"><rgb name="albedo" value="0.5, -0.1, 0.5"/></medium>)",
+                  "-0.1"),
+        std::pair(R"(<medium type="homogeneous" id="fog"><spectrum name="albedo" value="400:0.5, 700:1.5"/></medium>)",
+                  "1.5")})
+    expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", std::string(medium) + sphere)),
+                   {"vol.xml:12", "parameter 'albedo'", "must lie in [0, 1]", value});
+  std::string twos = header;
+  for (int i = 0; i < 64; ++i) {
+    const float v = i == 7 ? 2.0f : 0.5f;
+    twos += std::string(reinterpret_cast<const char*>(&v), 4);
+  }
+  write("twos.vol", twos);
+  expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", R"(<medium type="heterogeneous" id="fog">
+    <volume type="gridvolume" name="albedo"><string name="filename" value=")" +
+                                                                              (dir_ / "twos.vol").string() +
+                                                                              R"("/></volume></medium>)" + sphere)),
+                 {"vol.xml:13", "parameter 'albedo'", "must lie in [0, 1]", "reach 2"});
   // A volpath parameter volpath does not have is unknown, as in Mitsuba.
   expectContains(
       loadError(sphereScene(R"(<integrator type="volpath"><string name="strategy" value="bsdf"/></integrator>)")),
