@@ -18,13 +18,13 @@ Mitsuba 3: not in Mitsuba 3.
 */
 #include "bsdfs/barbulearms.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 
 #include "barbule/barbule_film.h"
 #include "barbule/normals.h"
 #include "barbule/parameter_reader.h"
-#include "core/number_text.h"
 
 namespace columba {
 
@@ -193,16 +193,10 @@ std::shared_ptr<Object> makeBarbuleArmsBSDF(const Properties& props) {
     warn(props.locationOf(odd->parameter), "barbulearms, parameter '" + odd->parameter + "': " + odd->message);
 
   std::vector<double> tilts;
-  const std::string tiltText = props.getString("arm_tilts");
-  const std::vector<std::string> items = listItems(tiltText);
-  const size_t commas = size_t(std::count(tiltText.begin(), tiltText.end(), ','));
-  if (commas > 0 && commas + 1 != items.size())
-    throw props.error("arm_tilts", "'" + excerpt(tiltText) + "' has an empty place between its commas");
-  for (const std::string& item : items) {
-    const std::optional<double> degrees = parseNumber<double>(item);
-    if (!degrees || !(std::abs(*degrees) * kPiDouble / 180.0 <= kMaxArmTilt))
-      throw props.error("arm_tilts", "'" + excerpt(item) + "' is not a tilt in degrees from -89 to 89");
-    tilts.push_back(*degrees * kPiDouble / 180.0);
+  for (double degrees : props.getNumberList("arm_tilts")) {
+    if (!(std::abs(degrees) * kPiDouble / 180.0 <= kMaxArmTilt))
+      throw props.error("arm_tilts", fmt::format("'{:g}' is not a tilt in degrees from -89 to 89", degrees));
+    tilts.push_back(degrees * kPiDouble / 180.0);
   }
   if (tilts.empty() || tilts.size() > size_t(kMaxBarbuleArms))
     throw props.error("arm_tilts",

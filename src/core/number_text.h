@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -51,6 +52,34 @@ inline std::vector<std::string> listItems(const std::string& text) {
   }
   if (!item.empty()) items.push_back(item);
   return items;
+}
+
+// The numbers of a list a scene gives as text (tabphase's values, barbulearms' tilts): separated by
+// commas and/or white space, as listItems splits them, but an empty place between commas (or a
+// comma first or last) is an error, not dropped, since it shifts every number after it. Throws
+// std::invalid_argument naming the text and the place: the number of the item, the item.
+inline std::vector<double> listNumbers(const std::string& text) {
+  std::vector<double> numbers;
+  const bool commas = text.find(',') != std::string::npos;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const std::string field = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::vector<std::string> items = listItems(field);
+    if (items.empty() && commas)
+      throw std::invalid_argument("'" + excerpt(text) + "' has an empty place between its commas, item " +
+                                  std::to_string(numbers.size() + 1) +
+                                  (numbers.empty() ? " (before the first comma)" : ""));
+    for (const std::string& item : items) {
+      const std::optional<double> number = parseNumber<double>(item);
+      if (!number)
+        throw std::invalid_argument("'" + excerpt(text) + "': item " + std::to_string(numbers.size() + 1) + ", '" +
+                                    excerpt(item) + "', is not a number");
+      numbers.push_back(*number);
+    }
+    if (comma == std::string::npos) return numbers;
+    start = comma + 1;
+  }
 }
 
 }  // namespace columba

@@ -113,6 +113,15 @@ std::string Properties::getString(const std::string& name) const {
   return require(name, {Kind::String}, "a <string>").text;
 }
 
+std::vector<double> Properties::getNumberList(const std::string& name) const {
+  const std::string text = getString(name);
+  try {
+    return listNumbers(text);
+  } catch (const std::invalid_argument& e) {
+    throw error(name, e.what());
+  }
+}
+
 std::string Properties::getString(const std::string& name, const std::string& def) const {
   const Value* v = find(name, {Kind::String}, "a <string>");
   return v ? v->text : def;
@@ -148,6 +157,24 @@ SpectralDistribution Properties::getSpectrum(const std::string& name, float def,
       throw InputError(v->location,
                        fmt::format("parameter '{}' of {} {}cannot be negative (its lowest value is {:g})", name,
                                    element(), use == SpectrumUse::Emission ? "is emitted light and " : "", lowest));
+  }
+  if (use == SpectrumUse::Fraction && v) {
+    float lowest = 0.0f, highest = 0.0f;
+    if (v->kind != Kind::Spectrum) {
+      lowest = highest = float(v->number);
+    } else if (v->isRGB) {
+      lowest = std::min({v->rgb.x, v->rgb.y, v->rgb.z});
+      highest = std::max({v->rgb.x, v->rgb.y, v->rgb.z});
+    } else {
+      // At every nanometre a path may carry.
+      lowest = highest = v->spectrum.eval(kSpectralMin);
+      for (float lambda = kSpectralMin; lambda <= kLambdaMax; lambda += 1.0f) {
+        lowest = std::min(lowest, v->spectrum.eval(lambda));
+        highest = std::max(highest, v->spectrum.eval(lambda));
+      }
+    }
+    if (!(lowest >= 0.0f && highest <= 1.0f))
+      throw error(name, fmt::format("a fraction must lie in [0, 1], not {:g}", lowest < 0.0f ? lowest : highest));
   }
   // Mitsuba's convention: a single value or a colour given for an emitter is an illuminant (D65
   // scaled to that luminance, or the colour's spectrum times D65); a tabulated spectrum is taken

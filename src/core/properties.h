@@ -18,7 +18,8 @@ namespace columba {
 // emission may exceed 1, and a single value or an RGB colour for it is an illuminant (times D65,
 // as Mitsuba reads emitters); unbounded values (indices of refraction) are taken as given, and
 // non-negative ones (a conductor's optical constants) too, but refused below zero, as emission is.
-enum class SpectrumUse { Reflectance, Emission, Unbounded, NonNegative };
+// A fraction (a medium's albedo) is refused outside [0, 1] in every form, an RGB colour included.
+enum class SpectrumUse { Reflectance, Emission, Unbounded, NonNegative, Fraction };
 
 // The largest emitted value (radiance, intensity, irradiance) a scene may give. An image's pixels
 // are float sums of emitted values times the estimators' weights (geometry terms, over densities
@@ -53,6 +54,9 @@ class Properties {
   bool getBool(const std::string& name, bool def) const;
   std::string getString(const std::string& name) const;
   std::string getString(const std::string& name, const std::string& def) const;
+  // A list of numbers given as a <string>, separated by commas and/or white space (listNumbers);
+  // InputError naming the file, line, the whole text and the bad place.
+  std::vector<double> getNumberList(const std::string& name) const;
   Vec3 getVector(const std::string& name, const Vec3& def) const;  // <point> or <vector>
   Transform getTransform(const std::string& name, const Transform& def = Transform()) const;
   // A file name looked up in `searchDirs`, then the working directory; throws InputError (file,

@@ -1,5 +1,5 @@
 /*! plugin volume gridvolume
-Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that becomes a smooth spectrum per voxel, twice its largest component times the spectrum of the colour scaled to 1/2 there, as Mitsuba upsamples one), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; within half a voxel of a face the neighbour is the face's own voxel (`clamp`, and `mirror`, which reflects onto the same voxel) or the opposite face's (`repeat`). Outside the cube the volume is empty. A medium's majorant is the largest value of the grid.
+Values on a grid of voxels read from a Mitsuba grid volume file (`.vol`: one channel, a value at every wavelength, or three, a linear sRGB colour that becomes a smooth spectrum per voxel, twice its largest component times the spectrum of the colour scaled to 1/2 there, as Mitsuba upsamples one), over the unit cube that `to_world` places in the scene. Voxel values lie at the voxels' centres and are interpolated trilinearly; within half a voxel of a face the neighbour is the face's own voxel (`clamp`, and `mirror`, which reflects onto the same voxel) or the opposite face's (`repeat`). Outside the cube the volume is empty. A medium tracks collisions against a majorant grid: the cube is cut into cells (half a voxel each along an axis of up to 8 voxels, else 16 along it), each bounded by the largest voxel its filter reaches, so a few dense voxels slow the tracking only near themselves.
 Mitsuba 3: `raw` true with three channels is refused; where `to_world` rotates, the volume is the rotated cube, not the box around it.
 | parameter | type | default | meaning | Mitsuba 3 |
 | filename | string | — | the `.vol` file (float32 values; 1 or 3 channels) | same |
@@ -7,7 +7,7 @@ Mitsuba 3: `raw` true with three channels is refused; where `to_world` rotates, 
 | to_world | transform | identity | places the unit cube [0, 1]³ in the scene | same |
 | use_grid_bbox | boolean | false | true: the unit cube is first mapped onto the bounding box the file's header gives, then placed by `to_world` | same |
 | wrap_mode | string | `clamp` | `clamp`, `repeat` or `mirror`: the neighbour of a voxel on a face, for the trilinear filter | same |
-| max_value | float | the grid's largest value | a bound on the values, the majorant; one below the grid's largest value is raised to it, with a warning | same, taken as given |
+| max_value | float | the grid's largest value | a bound on the values, checked (one below the grid's largest value is warned about) but not used: the majorant grid's cells are bounded by the voxels | the majorant, taken as given |
 | raw | boolean | false | must be false for three channels (they are always upsampled) | `true` keeps the three channels as given |
 */
 #include "media/grid_volume.h"
@@ -36,18 +36,56 @@ GridVolume::GridVolume(const VolumeGrid& grid, Filter filter, Wrap wrap, const T
                                   " is " + fmt::format("{:g}", grid.values[i]) +
                                   "; a volume's values must lie in [0, " + fmt::format("{:g}", kLargest) + "]");
     }
+  for (float v : grid.values) largestGiven_ = std::max(largestGiven_, v);
   if (grid.channels == 1) {
     values_ = grid.values;
-    for (float v : values_) max_ = std::max(max_, v);
   } else if (grid.channels == 3) {
     // Each voxel's spectrum from the table of fits, as an environment map's pixels get theirs.
     spectra_ = tabulatedRGBSpectra(grid.values.data(), grid.values.size() / 3);
-    // The interpolated shape stays within [0, 1], so the largest scale bounds every value.
-    for (const RGBSpectrum& s : spectra_) max_ = std::max(max_, s.scale);
   } else {
     throw std::invalid_argument("the grid has " + std::to_string(grid.channels) +
                                 " channels; a volume takes 1 (a value) or 3 (an RGB colour)");
   }
+  for (size_t i = 0; i < size_t(xres_) * size_t(yres_) * size_t(zres_); ++i) max_ = std::max(max_, voxelBound(i));
+}
+
+float GridVolume::maxValue(const Vec3& lo, const Vec3& hi) const {
+  // The voxels each axis reaches from lo to hi. Trilinear: a point x voxels along blends the
+  // voxels whose centres lie either side of it, floor(x - 1/2) and the next, so the box reaches
+  // from floor(lo - 1/2) to ceil(hi - 1/2) (a voxel on the box's face with weight 0 left out).
+  // Nearest: the voxel holding the point, floor(lo) to ceil(hi) - 1. Clamp takes the range to
+  // the grid; repeat wraps it round.
+  const int res[3] = {xres_, yres_, zres_};
+  std::vector<int> reached[3];
+  for (int a = 0; a < 3; ++a) {
+    const double from = double(lo[a]) * res[a], to = double(hi[a]) * res[a];
+    const double first = filter_ == Filter::Trilinear ? std::floor(from - 0.5) : std::floor(from);
+    const double last = std::max(first, filter_ == Filter::Trilinear ? std::ceil(to - 0.5) : std::ceil(to) - 1.0);
+    if (wrap_ == Wrap::Repeat && last - first + 1.0 >= res[a]) {
+      for (int i = 0; i < res[a]; ++i) reached[a].push_back(i);
+      continue;
+    }
+    if (wrap_ == Wrap::Repeat) {
+      for (double i = first; i <= last; ++i) reached[a].push_back(int(i - res[a] * std::floor(i / res[a])));
+      continue;
+    }
+    for (int i = int(std::clamp(first, 0.0, double(res[a] - 1))); i <= int(std::clamp(last, 0.0, double(res[a] - 1)));
+         ++i)
+      reached[a].push_back(i);
+  }
+  float largest = 0.0f;
+  for (int z : reached[2])
+    for (int y : reached[1])
+      for (int x : reached[0])
+        largest = std::max(largest, voxelBound((size_t(z) * size_t(yres_) + size_t(y)) * size_t(xres_) + size_t(x)));
+  return largest;
+}
+
+std::array<int, 3> GridVolume::majorantResolution() const {
+  std::array<int, 3> cells{};
+  const int res[3] = {xres_, yres_, zres_};
+  for (int a = 0; a < 3; ++a) cells[a] = res[a] <= 8 ? 2 * res[a] : 16;
+  return cells;
 }
 
 Spectrum GridVolume::voxel(int x, int y, int z, const Wavelengths& wl) const {
@@ -161,20 +199,16 @@ std::shared_ptr<Object> makeGridVolume(const Properties& props) {
     throw props.error("filename", path + ": " + e.what());
   }
   if (props.has("max_value")) {
+    // Mitsuba tracks against max_value; here each cell of the majorant grid is bounded by the
+    // voxels it reaches, so a bound from the scene is only checked.
     const float bound = props.getFloat("max_value");
     if (!(bound >= 0.0f) || !std::isfinite(bound))
       throw props.error("max_value", "max_value must be a finite number, not negative, not " + std::to_string(bound));
-    if (bound > 1000.0f * volume->maxValue())
-      warn(props.locationOf("max_value"),
-           fmt::format("max_value {:g} is over 1000 times the grid's largest value {:g}: tracking takes as many "
-                       "more steps",
-                       bound, volume->maxValue()));
     if (bound < volume->maxValue())
       warn(props.locationOf("max_value"),
-           fmt::format("max_value {:g} is below the grid's largest value {:g}, which is used as the majorant instead "
-                       "(a smaller one would bias the tracking)",
+           fmt::format("max_value {:g} is below the grid's largest value {:g}; the majorants are taken from the "
+                       "grid's values (a smaller one would bias the tracking)",
                        bound, volume->maxValue()));
-    volume->raiseMaxValue(bound);
   }
   return volume;
 }

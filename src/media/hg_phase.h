@@ -15,8 +15,9 @@ class HenyeyGreensteinPhase final : public PhaseFunction {
   float g() const { return g_; }
 
  private:
-  // The density at cosTheta, the cosine between the light's direction of travel before and after.
-  float density(float cosTheta) const;
+  // The density at angle theta between the light's direction of travel before and after, given
+  // as 1 - cos theta and 1 + cos theta (each accurate where it is small).
+  float density(double oneMinusCos, double onePlusCos) const;
   float g_;
 };
 

@@ -3,7 +3,7 @@ A medium of the same extinction σ_t and single-scattering albedo everywhere: li
 Mitsuba 3: `sigma_t` and `albedo` take values only (no nested `<volume>`); `sample_emitters` and `has_spectral_extinction` are not read.
 | parameter | type | default | meaning | Mitsuba 3 |
 | sigma_t | spectrum | 1 | the extinction coefficient per unit of scene distance, before `scale`; not negative | same |
-| albedo | spectrum | 0.75 | the fraction of extinction that scatters, in [0, 1] | same |
+| albedo | spectrum | 0.75 | the fraction of extinction that scatters, in [0, 1] in every form (`<float>`, `<rgb>`, `<spectrum>`), refused outside it | same, but not refused outside [0, 1] (an `<rgb>` is clamped) |
 | scale | float | 1 | multiplies `sigma_t` (the scene's unit of distance); not negative | same |
 */
 #include "media/homogeneous_medium.h"
@@ -15,15 +15,14 @@ MediumCoefficients HomogeneousMedium::coefficients(const Vec3&, const Wavelength
   return {sigmaT, sigmaT * albedo_.sample(wl)};
 }
 
-std::optional<MajorantSegment> HomogeneousMedium::majorant(const Ray& ray, const Wavelengths& wl) const {
-  if (!(ray.tmin < ray.tmax)) return std::nullopt;
-  return MajorantSegment{ray.tmin, ray.tmax, sigmaT_.sample(wl) * scale_};
+MajorantIterator HomogeneousMedium::majorant(const Ray& ray, const Wavelengths& wl) const {
+  return MajorantIterator(ray.tmin, ray.tmax, sigmaT_.sample(wl) * scale_);
 }
 
 std::shared_ptr<Object> makeHomogeneousMedium(const Properties& props) {
   return std::make_shared<HomogeneousMedium>(props.getSpectrum("sigma_t", 1.0f, SpectrumUse::NonNegative),
-                                             props.getSpectrum("albedo", 0.75f, SpectrumUse::Reflectance),
-                                             mediumScale(props), mediumPhase(props));
+                                             props.getSpectrum("albedo", 0.75f, SpectrumUse::Fraction),
+                                             mediumScale(props), mediumPhase(props), &props);
 }
 
 }  // namespace columba

@@ -10,10 +10,10 @@ class HomogeneousMedium final : public Medium {
  public:
   // sigmaT per unit distance (scale applied), albedo in [0, 1].
   HomogeneousMedium(SpectralDistribution sigmaT, SpectralDistribution albedo, float scale,
-                    std::shared_ptr<PhaseFunction> phase)
-      : Medium(std::move(phase)), sigmaT_(std::move(sigmaT)), albedo_(std::move(albedo)), scale_(scale) {}
+                    std::shared_ptr<PhaseFunction> phase, const Properties* element = nullptr)
+      : Medium(std::move(phase), element), sigmaT_(std::move(sigmaT)), albedo_(std::move(albedo)), scale_(scale) {}
   MediumCoefficients coefficients(const Vec3& p, const Wavelengths& wl) const override;
-  std::optional<MajorantSegment> majorant(const Ray& ray, const Wavelengths& wl) const override;
+  MajorantIterator majorant(const Ray& ray, const Wavelengths& wl) const override;
 
  private:
   SpectralDistribution sigmaT_, albedo_;

@@ -25,35 +25,51 @@ inline Spectrum nullCoefficient(const Spectrum& sigmaMaj, const Spectrum& sigmaT
   return sigmaN;
 }
 
-// At most this many tentative collisions along one ray: a grid whose largest value is huge beside
-// the rest (a hostile or broken file) would otherwise walk through ~sigma_maj x length null
-// collisions, which can be forever. Past it the light is taken as absorbed: a walk that long has a
-// majorant optical depth of about a million, where nothing gets through anyway.
+// At most this many tentative collisions along one ray. The majorant grid keeps a few huge values
+// from raising the majorant far from them, but within a cell that also holds thin parts (a value
+// of 1e30 beside ones) a walk would still pass ~sigma_maj x length null collisions, which can be
+// forever. Past it the light is taken as absorbed, with a warning naming the medium: a walk that
+// long has a majorant optical depth of about a million, where nothing gets through anyway.
 inline constexpr int kMostTentativeCollisions = 1 << 20;
 
-// Walks `ray` (from ray.tmin to ray.tmax; d need not be unit length) through `medium`. At each
-// tentative collision calls visit(p, coefficients at p, sigma_maj, T_maj), T_maj being the
+// Walks `ray` (from ray.tmin to ray.tmax; d need not be unit length) through `medium`, segment by
+// segment of its majorant. Within a segment the distance to the next tentative collision is
+// exponential at the segment's rate sigma_maj (the hero wavelength's, lane 0); one that would pass
+// the segment's end is not taken, and drawing starts afresh at the end with the next segment's
+// rate: the exponential distribution forgets how far it has come, so this draws collisions with
+// the density of the piecewise-constant majorant, exp(-integral of sigma_maj) sigma_maj.
+// At each tentative collision calls visit(p, coefficients at p, sigma_maj, T_maj), T_maj being the
 // majorant transmittance since the previous collision (or the start); visit returns false to stop
 // the walk. Returns the majorant transmittance from the last collision to ray.tmax, 1 when visit
 // stopped the walk, or 0 after kMostTentativeCollisions.
 template <typename Visit>
 Spectrum trackMajorant(const Medium& medium, const Ray& ray, const Wavelengths& wl, PCG32& rng, Visit&& visit) {
-  const std::optional<MajorantSegment> segment = medium.majorant(ray, wl);
-  if (!segment) return Spectrum(1.0f);
+  MajorantIterator segments = medium.majorant(ray, wl);
   // Distances along the ray in units of its parameter t.
   const float speed = length(ray.d);
-  const Spectrum sigmaMaj = segment->sigmaMaj;
-  if (!(sigmaMaj[0] > 0.0f)) return majorantTransmittance(sigmaMaj, (segment->tmax - segment->tmin) * speed);
-  float t = segment->tmin;
-  for (int collisions = 0;; ++collisions) {
-    if (collisions == kMostTentativeCollisions) return Spectrum(0.0f);
-    const float step = -std::log(1.0f - rng.nextFloat()) / (sigmaMaj[0] * speed);
-    if (!(t + step < segment->tmax)) return majorantTransmittance(sigmaMaj, (segment->tmax - t) * speed);
-    t += step;
-    const Vec3 p = ray.at(t);
-    if (!visit(p, medium.coefficients(p, wl), sigmaMaj, majorantTransmittance(sigmaMaj, step * speed)))
-      return Spectrum(1.0f);
+  Spectrum tMaj(1.0f);  // since the last collision
+  int collisions = 0;
+  while (const std::optional<MajorantSegment> segment = segments.next()) {
+    const Spectrum& sigmaMaj = segment->sigmaMaj;
+    float t = segment->tmin;
+    while (true) {
+      const float step = sigmaMaj[0] > 0.0f ? -std::log(1.0f - rng.nextFloat()) / (sigmaMaj[0] * speed) : INFINITY;
+      if (!(t + step < segment->tmax)) {
+        tMaj *= majorantTransmittance(sigmaMaj, (segment->tmax - t) * speed);
+        break;
+      }
+      if (++collisions > kMostTentativeCollisions) {
+        medium.warnWalkCut(kMostTentativeCollisions);
+        return Spectrum(0.0f);
+      }
+      t += step;
+      const Vec3 p = ray.at(t);
+      if (!visit(p, medium.coefficients(p, wl), sigmaMaj, tMaj * majorantTransmittance(sigmaMaj, step * speed)))
+        return Spectrum(1.0f);
+      tMaj = Spectrum(1.0f);
+    }
   }
+  return tMaj;
 }
 
 }  // namespace columba

@@ -20,10 +20,14 @@ struct PhaseSample {
 // The direction at scattering angle theta (its cosine `cosTheta`) from the light's direction of
 // travel, -wi, at azimuth 2 pi uPhi around it: how each phase function here turns a drawn cos theta
 // into wo.
-inline Vec3 scatteredDirection(const Vec3& wi, float cosTheta, float uPhi) {
-  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+// sinTheta given: where theta is too small for 1 - cos^2 in float (a phase function peaked within
+// 1e-4 rad of forward).
+inline Vec3 scatteredDirection(const Vec3& wi, float cosTheta, float sinTheta, float uPhi) {
   const float phi = kTwoPi * uPhi;
   return Frame::fromNormal(-wi).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+}
+inline Vec3 scatteredDirection(const Vec3& wi, float cosTheta, float uPhi) {
+  return scatteredDirection(wi, cosTheta, std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta)), uPhi);
 }
 
 class PhaseFunction : public Object {

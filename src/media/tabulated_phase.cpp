@@ -2,27 +2,31 @@
 A phase function given as a table of values over the cosine of the scattering angle, at regularly spaced points from −1 (backward) to 1 (forward: on along the light's direction of travel), linear between them and normalised over the sphere. Directions are drawn by inverting the piecewise-linear distribution of cos θ exactly.
 Mitsuba 3: as Mitsuba 3's `tabphase`.
 | parameter | type | default | meaning | Mitsuba 3 |
-| values | string | required | the values, separated by commas or spaces: at least two, none negative, not all zero | same |
+| values | string | required | the values, separated by commas or spaces (an empty place between commas is an error): at least two, finite, none negative, not all zero; only their ratios matter, whatever their scale | same |
 */
 #include "media/tabulated_phase.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/error.h"
-#include "core/number_text.h"
 
 namespace columba {
 
-TabulatedPhase::TabulatedPhase(std::vector<float> values) : values_(std::move(values)) {
-  if (values_.size() < 2) throw std::invalid_argument("a tabulated phase function needs at least two values");
+TabulatedPhase::TabulatedPhase(const std::vector<double>& values) {
+  if (values.size() < 2) throw std::invalid_argument("a tabulated phase function needs at least two values");
+  // The table is normalised, so only the ratios of its values matter: divided by the largest (in
+  // double) they lie in [0, 1], and neither 1e38 nor 1e-38 given overflows or vanishes in float.
+  const double largest = *std::max_element(values.begin(), values.end());
+  if (!(largest > 0.0)) throw std::invalid_argument("the tabulated values are all zero");
+  for (double v : values) values_.push_back(float(v / largest));
   spacing_ = 2.0f / float(values_.size() - 1);
   areaCdf_.assign(values_.size(), 0.0);
   for (size_t i = 1; i < values_.size(); ++i)
     areaCdf_[i] = areaCdf_[i - 1] + 0.5 * double(spacing_) * (double(values_[i - 1]) + values_[i]);
-  totalArea_ = areaCdf_.back();
-  if (!(totalArea_ > 0.0)) throw std::invalid_argument("the tabulated values are all zero");
+  totalArea_ = areaCdf_.back();  // at least half a spacing: the largest value is 1
   for (double& a : areaCdf_) a /= totalArea_;
   scale_ = float(1.0 / (totalArea_ * 2.0 * double(kPi)));
 }
@@ -56,14 +60,10 @@ std::optional<PhaseSample> TabulatedPhase::sample(const Vec3& wi, Vec2 u) const 
 
 std::shared_ptr<Object> makeTabulatedPhase(const Properties& props) {
   if (!props.has("values")) throw InputError(props.location, "'tabphase' needs its 'values'");
-  std::vector<float> values;
-  for (const std::string& piece : listItems(props.getString("values"))) {
-    const std::optional<float> v = parseNumber<float>(piece);
-    if (!v || !std::isfinite(*v) || *v < 0.0f)
-      throw props.error("values",
-                        "'" + piece + "' is not a number at least 0 (value " + std::to_string(values.size() + 1) + ")");
-    values.push_back(*v);
-  }
+  const std::vector<double> values = props.getNumberList("values");
+  for (size_t i = 0; i < values.size(); ++i)
+    if (!(values[i] >= 0.0))
+      throw props.error("values", fmt::format("'{:g}' is not a number at least 0 (value {})", values[i], i + 1));
   try {
     return std::make_shared<TabulatedPhase>(std::move(values));
   } catch (const std::invalid_argument& e) {

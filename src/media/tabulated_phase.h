@@ -9,8 +9,8 @@ namespace columba {
 
 class TabulatedPhase final : public PhaseFunction {
  public:
-  // At least two values, none negative, not all zero.
-  explicit TabulatedPhase(std::vector<float> values);
+  // At least two values, none negative, not all zero, finite.
+  explicit TabulatedPhase(const std::vector<double>& values);
   float eval(const Vec3& wi, const Vec3& wo) const override;
   std::optional<PhaseSample> sample(const Vec3& wi, Vec2 u) const override;
 

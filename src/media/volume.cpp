@@ -1,5 +1,7 @@
 #include "media/volume.h"
 
+#include <fmt/format.h>
+
 #include "media/const_volume.h"
 
 namespace columba {
@@ -26,6 +28,10 @@ std::optional<std::pair<float, float>> Volume::clip(const Ray& ray) const {
 std::shared_ptr<Volume> mediumVolume(const Properties& props, const std::string& name, float def, SpectrumUse use) {
   if (auto nested = props.namedChild<Volume>(name)) {
     if (props.has(name)) throw props.error(name, "'" + name + "' is given both as a value and as a nested <volume>");
+    // The values are not negative (every volume refuses that); a fraction's must not pass 1.
+    const float largest = nested->largestGivenValue();
+    if (use == SpectrumUse::Fraction && largest > 1.0f)
+      throw props.error(name, fmt::format("a fraction must lie in [0, 1]; the volume's values reach {:g}", largest));
     return nested;
   }
   return std::make_shared<ConstVolume>(props.getSpectrum(name, def, use), std::nullopt);

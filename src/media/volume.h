@@ -2,6 +2,7 @@
 // The volume interface: a spectrum at every point of space (a medium's extinction or albedo),
 // given over the unit cube [0, 1]^3 of its own space and placed in the scene by `to_world`; a
 // value given directly to a medium fills all space instead.
+#include <array>
 #include <memory>
 #include <optional>
 #include "core/properties.h"
@@ -18,8 +19,17 @@ class Volume : public Object {
       : toLocal_(toWorld ? toWorld->inverse() : Transform()), bounded_(toWorld.has_value()) {}
   // The value at world point p at the path's wavelengths.
   Spectrum eval(const Vec3& p, const Wavelengths& wl) const { return evalLocal(toLocal_.point(p), wl); }
-  // No value at any point and wavelength exceeds it.
-  virtual float maxValue() const = 0;
+  // No value at any wavelength exceeds it within the box lo to hi of the volume's own space (a
+  // part of the unit cube, or any box for a volume filling space).
+  virtual float maxValue(const Vec3& lo, const Vec3& hi) const = 0;
+  // The largest value the scene gave for it (a grid's largest voxel value, a colour's largest
+  // component), for parameters whose values are bounded.
+  virtual float largestGivenValue() const = 0;
+  // The cells per axis of a grid of such bounds over the unit cube that follows the volume's
+  // variation (MajorantGrid); 1 for a volume of one value.
+  virtual std::array<int, 3> majorantResolution() const { return {1, 1, 1}; }
+  // From the scene to the volume's own space (the identity for a volume filling space).
+  const Transform& worldToLocal() const { return toLocal_; }
   // The range of ray parameters (tmin, tmax clipped) within which the ray is inside the volume's
   // unit cube (all of it for a volume filling space), or nullopt where it misses it.
   std::optional<std::pair<float, float>> clip(const Ray& ray) const;
@@ -37,7 +47,7 @@ class Volume : public Object {
 // A medium's volume parameter `name`: a nested <volume name="..."> or, as Mitsuba reads it, a
 // <float>, <rgb> or <spectrum> given directly (a constant volume over all space), or `def`.
 // `use` says how an RGB colour becomes a spectrum (SpectrumUse::NonNegative for an extinction,
-// Reflectance for an albedo).
+// Fraction for an albedo, which is refused outside [0, 1] as a value or a volume).
 std::shared_ptr<Volume> mediumVolume(const Properties& props, const std::string& name, float def, SpectrumUse use);
 
 }  // namespace columba

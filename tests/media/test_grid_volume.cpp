@@ -107,12 +107,12 @@ TEST_F(GridVolumeFile, UseGridBBoxPlacesTheCubeOnTheHeadersBox) {
   expectContains(message, {"scene.xml:5", "use_grid_bbox", "(0, 0, 0) to (1, 0, 1)", "empty or not finite"});
 }
 
-TEST_F(GridVolumeFile, MaxValueRaisesTheMajorantButNeverLowersIt) {
+TEST_F(GridVolumeFile, MaxValueIsCheckedAndTheMajorantsComeFromTheVoxels) {
   std::ofstream(dir_ / "ramp.vol", std::ios::binary) << volBytes({1, 2, 3, 4}, {0, 0, 0}, {1, 1, 1});
   EXPECT_EQ(make(grid("ramp.vol"))->maxValue(), 4.0f);
   Properties higher = grid("ramp.vol");
   higher.setFloat("max_value", 10.0);
-  EXPECT_EQ(make(higher)->maxValue(), 10.0f);
+  EXPECT_EQ(make(higher)->maxValue(), 4.0f);
   Properties lower = grid("ramp.vol");
   lower.setFloat("max_value", 2.0);
   ::testing::internal::CaptureStderr();
