@@ -8,7 +8,7 @@ COLUMBA := $(BUILD)/columba
 FUZZ_BUILD ?= build-fuzz
 SANITIZE_BUILD ?= build-asan
 FUZZ_SECONDS ?= 300
-FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition
+FUZZ_TARGETS ?= scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition medium_grid number_list
 
 .PHONY: deps configure build demo test slurm-test install bench figures clean fuzz fuzz-build sanitize format docs
 

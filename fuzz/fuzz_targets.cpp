@@ -12,15 +12,22 @@
 
 #include "builtin/builtin_plugins.h"
 #include "core/error.h"
+#include "core/number_text.h"
 #include "core/transform.h"
 #include "distribute/manifest.h"
 #include "distribute/merge.h"
 #include "emitters/envmap_emitter.h"
 #include "fit/spectra_fit.h"
+#include "integrators/volume_transport.h"
 #include "io/feather_ply.h"
 #include "io/image.h"
 #include "io/image_file_reader.h"
 #include "io/volume_grid_file.h"
+#include "media/const_volume.h"
+#include "media/grid_volume.h"
+#include "media/heterogeneous_medium.h"
+#include "media/isotropic_phase.h"
+#include "media/tabulated_phase.h"
 #include "optics/film_layer_text.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -255,6 +262,58 @@ void observerTableFromBytes(const uint8_t* data, size_t size) {
 void observerDefinitionFromBytes(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   checkObserverCurves(makeObserver(readObserverDefinition(in, "fuzz.csv", "fuzz")));
+}
+
+void mediumGridFromBytes(const uint8_t* data, size_t size) {
+  const VolumeGrid grid = parseVolumeGrid(std::string(reinterpret_cast<const char*>(data), size), "<fuzz>");
+  std::shared_ptr<Volume> sigmaT;
+  try {
+    sigmaT = std::make_shared<GridVolume>(grid, GridVolume::Filter::Trilinear, GridVolume::Wrap::Clamp,
+                                          Transform::scale(Vec3(2, 1, 0.5f)));
+  } catch (const std::invalid_argument& e) {
+    throw InputError({}, e.what());
+  }
+  const HeterogeneousMedium medium(sigmaT,
+                                   std::make_shared<ConstVolume>(SpectralDistribution::constant(0.5f), std::nullopt),
+                                   1.0f, std::make_shared<IsotropicPhase>());
+  PCG32 rng(7);
+  const Wavelengths wl = Wavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  const Vec3 origins[] = {Vec3(-1, 0.3f, 0.2f), Vec3(1, 0.5f, 0.25f), Vec3(3, 2, 1)};
+  for (const Vec3& o : origins)
+    for (const Vec3& target : {Vec3(1, 0.6f, 0.25f), Vec3(0.1f, 0.9f, 0.05f), Vec3(1.9f, 0.1f, 0.45f)}) {
+      Ray ray{o, normalize(target - o)};
+      ray.tmax = 10.0f;
+      TrackedTransmittance tr;
+      ratioTrack(medium, ray, wl, rng, tr);
+      for (int k = 0; k < kSpectrumSamples; ++k)
+        if (!(tr.T[k] >= 0.0f && tr.T[k] <= 1.0f) || !std::isfinite(tr.rL[k]))
+          throw std::logic_error("a transmittance estimate through the grid is " + std::to_string(tr.T[k]));
+    }
+}
+
+void numberListFromBytes(const uint8_t* data, size_t size) {
+  std::vector<double> values;
+  try {
+    values = listNumbers(std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const std::invalid_argument& e) {
+    throw InputError({}, e.what());
+  }
+  if (values.size() < 2) return;
+  std::optional<TabulatedPhase> phase;
+  try {
+    phase.emplace(values);
+  } catch (const std::invalid_argument& e) {
+    throw InputError({}, e.what());
+  }
+  const Vec3 wi = normalize(Vec3(0.3f, -0.2f, 0.9f));
+  for (const Vec2& u : {Vec2(0.01f, 0.3f), Vec2(0.5f, 0.5f), Vec2(0.999f, 0.9f)}) {
+    const std::optional<PhaseSample> s = phase->sample(wi, u);
+    if (!s) continue;
+    const float value = phase->eval(wi, s->wo);
+    if (!(s->pdf >= 0.0f) || !std::isfinite(s->pdf) || !(std::abs(value - s->pdf) <= 1e-3f * s->pdf + 1e-6f))
+      throw std::logic_error("a tabulated phase sample's density is " + std::to_string(s->pdf) +
+                             " where its value is " + std::to_string(value));
+  }
 }
 
 }  // namespace columba::fuzz

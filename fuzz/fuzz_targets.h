@@ -56,6 +56,17 @@ void observerTableFromBytes(const uint8_t* data, size_t size);
 // its curves held to the same.
 void observerDefinitionFromBytes(const uint8_t* data, size_t size);
 
+// A Mitsuba grid volume (parseVolumeGrid, then a gridvolume) as the extinction of a heterogeneous
+// medium, with ratio tracking along a few rays through it: every transmittance estimate must be a
+// finite number in [0, 1] (else std::logic_error), and each walk ends (the majorant grid's bounds
+// and the tracking's caps).
+void mediumGridFromBytes(const uint8_t* data, size_t size);
+// A list parameter's text (listNumbers, as tabphase's values and barbulearms' arm_tilts are read),
+// then, with two or more numbers, a tabulated phase function of them, evaluated and sampled: its
+// values and densities must be finite and not negative, a sample's density its value (else
+// std::logic_error).
+void numberListFromBytes(const uint8_t* data, size_t size);
+
 // The readers take paths: the bytes are written to a file of this process named with `suffix`
 // (".ply", ".obj", ".exr"), which is returned.
 std::string writeScratchFile(const uint8_t* data, size_t size, const std::string& suffix);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built in BUILD_DIR, one after another, each for SECONDS:
-#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition)
+#   fuzz/run.sh BUILD_DIR SECONDS [TARGET...]     (targets: scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition medium_grid number_list)
 # Each target's corpus grows in BUILD_DIR/fuzz/corpus/TARGET, seeded from fuzz/seeds/TARGET (small
 # scenes, meshes, feathers written by `columba feather`, EXR images of every compression, images
 # of every format stb_image reads, a piece of a split render, a manifest, a spectra table, observer tables and definitions), the
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 build=$1 seconds=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition)
+[ ${#targets[@]} -eq 0 ] && targets=(scene ply_mesh feather_ply obj_mesh serialized_mesh sdf_grid exr_envmap hdr_envmap bitmap merge_piece manifest spectra_csv layer_text observer_table observer_definition medium_grid number_list)
 work="$build/fuzz"
 columba=${COLUMBA:-build/columba}
 mkdir -p "$work/logs"
@@ -42,10 +42,11 @@ seed() {  # seed TARGET CORPUS
 dict_of() {
   case $1 in scene) echo fuzz/dict/scene.dict ;; ply_mesh|feather_ply) echo fuzz/dict/ply.dict ;;
     obj_mesh) echo fuzz/dict/obj.dict ;; exr_envmap) echo fuzz/dict/exr.dict ;;
-    serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid) echo fuzz/dict/vol.dict ;;
+    serialized_mesh) echo fuzz/dict/serialized.dict ;; sdf_grid|medium_grid) echo fuzz/dict/vol.dict ;;
     hdr_envmap) echo fuzz/dict/hdr.dict ;; bitmap) echo fuzz/dict/bitmap.dict ;; merge_piece) echo fuzz/dict/piece.dict ;;
     manifest) echo fuzz/dict/manifest.dict ;; spectra_csv) echo fuzz/dict/spectra.dict ;;
-    layer_text) echo fuzz/dict/layers.dict ;; observer_table|observer_definition) echo fuzz/dict/observer.dict ;; esac
+    layer_text) echo fuzz/dict/layers.dict ;; observer_table|observer_definition) echo fuzz/dict/observer.dict ;;
+    number_list) echo fuzz/dict/list.dict ;; esac
 }
 
 # Memory limits (MB: one allocation, the whole process). The image and piece readers check every

@@ -25,6 +25,10 @@ MajorantIterator::MajorantIterator(const MajorantGrid& grid, float scale, const 
   for (int a = 0; a < 3; ++a) {
     // In units of cells along this axis.
     const float p = start[a] * float(res[a]), v = d[a] * float(res[a]);
+    if (!std::isfinite(p) || !std::isfinite(v)) {  // no ray: no cells (a cell index from NaN is undefined)
+      tmin_ = tmax_;
+      return;
+    }
     cell_[a] = int(std::clamp(std::floor(p), 0.0f, float(res[a] - 1)));
     if (v == 0.0f) {
       nextCrossing_[a] = std::numeric_limits<float>::infinity();
@@ -56,7 +60,9 @@ std::optional<MajorantSegment> MajorantIterator::next() {
   int axis = 0;
   if (nextCrossing_[1] < nextCrossing_[axis]) axis = 1;
   if (nextCrossing_[2] < nextCrossing_[axis]) axis = 2;
-  const float exit = std::min(tmax_, nextCrossing_[axis]);
+  // Rounding may put a face just behind the start (a ray entering on a cell's face): an empty
+  // segment then, never one that runs backwards.
+  const float exit = std::max(tmin_, std::min(tmax_, nextCrossing_[axis]));
   const MajorantSegment segment{tmin_, exit, Spectrum(scale_ * grid_->bound(cell_))};
   tmin_ = exit;
   cell_[axis] += step_[axis];

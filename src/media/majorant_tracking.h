@@ -31,6 +31,12 @@ inline Spectrum nullCoefficient(const Spectrum& sigmaMaj, const Spectrum& sigmaT
 // forever. Past it the light is taken as absorbed, with a warning naming the medium: a walk that
 // long has a majorant optical depth of about a million, where nothing gets through anyway.
 inline constexpr int kMostTentativeCollisions = 1 << 20;
+// At most this many tentative collisions in a row that cannot move t: where a step is below float
+// resolution, every collision falls on the same point, and the walk ends there only after
+// ~sigma_maj / sigma_t of them (a ray entering a cell of a 1e30 voxel where it weighs nothing).
+// Past it the light is taken as absorbed, as past the cap: the majorant's optical depth per float
+// step is then over ~1e-7 x sigma_maj x t, far beyond what any light gets through.
+inline constexpr int kMostStalledCollisions = 64;
 
 // Walks `ray` (from ray.tmin to ray.tmax; d need not be unit length) through `medium`, segment by
 // segment of its majorant. Within a segment the distance to the next tentative collision is
@@ -41,14 +47,14 @@ inline constexpr int kMostTentativeCollisions = 1 << 20;
 // At each tentative collision calls visit(p, coefficients at p, sigma_maj, T_maj), T_maj being the
 // majorant transmittance since the previous collision (or the start); visit returns false to stop
 // the walk. Returns the majorant transmittance from the last collision to ray.tmax, 1 when visit
-// stopped the walk, or 0 after kMostTentativeCollisions.
+// stopped the walk, or 0 after kMostTentativeCollisions (or kMostStalledCollisions in a row).
 template <typename Visit>
 Spectrum trackMajorant(const Medium& medium, const Ray& ray, const Wavelengths& wl, PCG32& rng, Visit&& visit) {
   MajorantIterator segments = medium.majorant(ray, wl);
   // Distances along the ray in units of its parameter t.
   const float speed = length(ray.d);
   Spectrum tMaj(1.0f);  // since the last collision
-  int collisions = 0;
+  int collisions = 0, stalled = 0;
   while (const std::optional<MajorantSegment> segment = segments.next()) {
     const Spectrum& sigmaMaj = segment->sigmaMaj;
     float t = segment->tmin;
@@ -58,8 +64,9 @@ Spectrum trackMajorant(const Medium& medium, const Ray& ray, const Wavelengths& 
         tMaj *= majorantTransmittance(sigmaMaj, (segment->tmax - t) * speed);
         break;
       }
-      if (++collisions > kMostTentativeCollisions) {
-        medium.warnWalkCut(kMostTentativeCollisions);
+      stalled = t + step == t ? stalled + 1 : 0;
+      if (++collisions > kMostTentativeCollisions || stalled > kMostStalledCollisions) {
+        medium.warnWalkCut(collisions - 1);
         return Spectrum(0.0f);
       }
       t += step;

@@ -46,6 +46,8 @@ const std::map<std::string, Reader>& readers() {
       {"layer_text", columba::fuzz::layerTextFromBytes},
       {"observer_table", columba::fuzz::observerTableFromBytes},
       {"observer_definition", columba::fuzz::observerDefinitionFromBytes},
+      {"medium_grid", columba::fuzz::mediumGridFromBytes},
+      {"number_list", columba::fuzz::numberListFromBytes},
   };
   return r;
 }
@@ -195,7 +197,7 @@ TEST(FuzzRegressions, SeedsAreValidInputs) {
   // These targets' starting inputs must be read without an error (every image format, a piece
   // that completes the target's own, ...), or the fuzzer starts from nothing.
   for (const char* target : {"sdf_grid", "hdr_envmap", "bitmap", "merge_piece", "manifest", "spectra_csv", "layer_text",
-                             "observer_table", "observer_definition"}) {
+                             "observer_table", "observer_definition", "medium_grid", "number_list"}) {
     int seeds = 0;
     for (const auto& entry : fs::directory_iterator(std::string(COLUMBA_SOURCE_DIR) + "/fuzz/seeds/" + target)) {
       std::ifstream in(entry.path(), std::ios::binary);
