@@ -6,7 +6,7 @@
 /*! parameters mesh
 | parameter | type | default | meaning | Mitsuba 3 |
 | face_normals | boolean | false | flat shading with each triangle's own normal, ignoring the file's normals; a mesh without normals is otherwise shaded with smooth vertex normals, each face weighted by its angle at the vertex | same |
-| flip_normals | boolean | false | turns the normals (and the side an area emitter lights) around | same |
+| flip_normals | boolean | false | turns the normals (and the side an area emitter lights) around. The front side is the side of the vertex normals where the mesh has them (a triangle wound against its vertex normals is shaded, lit and bounds media by them), else that from which the triangle's vertices run counter-clockwise | same |
 */
 /*! plugin shape cube
 The cube [−1, 1]³ as a mesh of twelve triangles with face normals and per-face uv, placed by `to_world`. Like every shape, it takes a nested BSDF (default: `diffuse`) and may take a nested `area` emitter.
@@ -101,6 +101,20 @@ Vec3 TriangleMesh::faceNormal(size_t tri) const {
   return flip_ ? -n : n;
 }
 
+std::optional<Vec3> TriangleMesh::vertexNormal(size_t tri, float b1, float b2) const {
+  if (mesh_.normals.empty()) return std::nullopt;
+  const uint32_t* idx = &mesh_.indices[3 * tri];
+  const Vec3 n = mesh_.normals[idx[0]] * (1.0f - b1 - b2) + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2;
+  const float len = length(n);
+  if (!(len > 0.0f)) return std::nullopt;
+  return flip_ ? -n / len : n / len;
+}
+
+Vec3 TriangleMesh::geometricNormal(size_t tri, const std::optional<Vec3>& vertex) const {
+  const Vec3& n = faceFrames_[tri].n;
+  return vertex && dot(*vertex, n) < 0.0f ? -n : n;
+}
+
 SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hit) const {
   const uint32_t* idx = &mesh_.indices[3 * size_t(hit.primID)];
   const Frame& face = faceFrames_[hit.primID];
@@ -109,19 +123,12 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
   si.t = hit.t;
   si.shape = this;
   si.p = mesh_.positions[idx[0]] * b0 + mesh_.positions[idx[1]] * b1 + mesh_.positions[idx[2]] * b2;
-  si.ng = face.n;
+  const std::optional<Vec3> ns = vertexNormal(size_t(hit.primID), b1, b2);
+  si.ng = geometricNormal(size_t(hit.primID), ns);
   si.shading = face;
-  const Vec3 interpolated = mesh_.normals.empty()
-                                ? Vec3(0, 0, 0)
-                                : mesh_.normals[idx[0]] * b0 + mesh_.normals[idx[1]] * b1 + mesh_.normals[idx[2]] * b2;
-  // A vanishing interpolated normal (computed normals that cancel) leaves the face frame.
-  if (const float len = length(interpolated); len > 0.0f) {
-    Vec3 ns = interpolated / len;
-    if (flip_) ns = -ns;
-    if (dot(ns, si.ng) < 0.0f) ns = -ns;
-    // dp/du lies in the face's plane, so the face frame's s has its direction.
-    si.shading = Frame::fromNormalAndS(ns, face.s);
-  }
+  // dp/du lies in the face's plane, so the face frame's s has its direction. A vanishing
+  // interpolated normal (computed normals that cancel) leaves the face frame.
+  if (ns) si.shading = Frame::fromNormalAndS(*ns, face.s);
   const TexturePoint where = texturePointAt(hit.primID, b1, b2);
   si.uv = where.uv;
   si.meshAttributes = where.mesh;
@@ -138,7 +145,7 @@ PositionSample TriangleMesh::samplePosition(Vec2 u, bool withTexturePoint) const
   const uint32_t* idx = &mesh_.indices[3 * tri];
   PositionSample ps;
   ps.p = mesh_.positions[idx[0]] * (1.0f - b.x - b.y) + mesh_.positions[idx[1]] * b.x + mesh_.positions[idx[2]] * b.y;
-  ps.n = faceFrames_[tri].n;
+  ps.n = geometricNormal(tri, vertexNormal(tri, b.x, b.y));
   if (withTexturePoint) ps.point = texturePointAt(tri, b.x, b.y);
   ps.pdfArea = 1.0f / area_;
   return ps;

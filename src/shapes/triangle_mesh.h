@@ -1,5 +1,6 @@
 #pragma once
 // Triangle meshes in world space (obj, ply, cube), intersected by Embree.
+#include <optional>
 #include <utility>
 #include <vector>
 #include "core/distribution.h"
@@ -34,6 +35,13 @@ class TriangleMesh : public Shape {
 
  private:
   Vec3 faceNormal(size_t tri) const;
+  // The vertex normals interpolated at barycentric coordinates (b1, b2) of `tri`, unit length and
+  // turned with flip_normals; nullopt without vertex normals or where they cancel.
+  std::optional<Vec3> vertexNormal(size_t tri, float b1, float b2) const;
+  // The geometric normal there: the face normal, turned toward the vertex normal where the
+  // triangle is wound against it (the front side is the vertex normals', as Mitsuba 3 and
+  // pbrt-v4 take it).
+  Vec3 geometricNormal(size_t tri, const std::optional<Vec3>& vertex) const;
   // Surface derivative along u (the shading frame's first axis, as in Mitsuba).
   // dp/du and dp/dv of a triangle: from its uvs where they are usable, else from the barycentric
   // coordinates that stand in for them (p1 - p0 and p2 - p0).

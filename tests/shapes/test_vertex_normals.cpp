@@ -1,8 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <utility>
 
 #include "builtin/builtin_plugins.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 #include "shapes/vertex_normals.h"
 #include "support/temp_dir_test.h"
@@ -106,6 +110,66 @@ TEST_F(MeshWithoutNormals, FaceNormalsKeepsTheFacets) {
                      "'/><boolean name='face_normals' value='true'/></shape>");
     expectNear(si.shading.n, Vec3(0, 0, 1));
   }
+}
+
+// A latitude-longitude unit sphere as OBJ text with outward vertex normals, its triangles wound
+// counter-clockwise seen from outside (`outward`) or from inside, as exported meshes sometimes are.
+std::string sphereObj(bool outward) {
+  const int rings = 24, segments = 48;
+  std::string text;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const float theta = kPi * float(i) / float(rings), phi = kTwoPi * float(j) / float(segments);
+      const Vec3 p(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      text += fmt::format("v {} {} {}\nvn {} {} {}\n", p.x, p.y, p.z, p.x, p.y, p.z);
+    }
+  auto vertex = [&](int i, int j) { return i * segments + (j % segments) + 1; };
+  auto face = [&](int a, int b, int c) {
+    if (!outward) std::swap(b, c);
+    text += fmt::format("f {0}//{0} {1}//{1} {2}//{2}\n", a, b, c);
+  };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      // Seen from outside, (i, j) -> (i + 1, j) -> (i + 1, j + 1) runs counter-clockwise.
+      if (i > 0) face(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
+      if (i < rings - 1) face(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
+    }
+  return text;
+}
+
+// A mesh wound against its vertex normals is shaded by them, as Mitsuba 3 and pbrt-v4 shade it: it
+// rendered black with diffuse and roughconductor when the normals were turned to the winding.
+TEST_F(MeshWithoutNormals, AMeshWoundAgainstItsVertexNormalsIsShadedByThem) {
+  write("out.obj", sphereObj(true));
+  write("in.obj", sphereObj(false));
+  for (const char* bsdf :
+       {"<bsdf type='diffuse'/>", "<bsdf type='roughconductor'><float name='alpha' value='0.3'/></bsdf>"}) {
+    SCOPED_TRACE(bsdf);
+    auto render = [&](const std::string& file) {
+      const std::string xml = R"(<scene version="3.0.0"><integrator type="direct"/>
+        <sensor type="perspective"><float name="fov" value="30"/>
+          <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+          <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="32"/></film>
+          <sampler type="independent"><integer name="sample_count" value="64"/></sampler></sensor>
+        <shape type="obj"><string name="filename" value=")" +
+                              (dir_ / file).string() + "\"/>" + bsdf + R"(</shape>
+        <emitter type="directional"><vector name="direction" x="-0.3" y="-0.2" z="-1"/></emitter></scene>)";
+      ParsedScene parsed = loadSceneString(xml, "scene.xml", dir_.string(), {}, builtinPlugins());
+      Scene scene(parsed, SourceLocation{"scene.xml", 0});
+      RenderStats stats;
+      return renderImage(scene, RenderSettings{}, stats);
+    };
+    const Image out = render("out.obj"), in = render("in.obj");
+    double sumOut = 0.0, sumIn = 0.0;
+    for (size_t i = 0; i < out.rgb.size(); ++i) sumOut += out.rgb[i], sumIn += in.rgb[i];
+    EXPECT_GT(sumOut, 1.0);
+    EXPECT_NEAR(sumIn / sumOut, 1.0, 0.02);
+  }
+  // The geometric normal is turned to the vertex normals, so the front (and an emitter's lit side,
+  // and the media a shape bounds) is theirs.
+  const SurfaceInteraction si = hitFromAbove("<shape type='obj'><string name='filename' value='in.obj'/></shape>");
+  EXPECT_GT(si.ng.z, 0.9f);
+  EXPECT_GT(dot(si.ng, si.shading.n), 0.99f);
 }
 
 }  // namespace
