@@ -63,12 +63,20 @@ RefractiveIndex indexFrom(const py::object& value, const std::string& parameter)
     if (!ior) parameterError(parameter, "unknown index of refraction '" + name + "'");
     return *ior;
   }
+  RefractiveIndex n;
   if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
     auto ab = value.cast<std::vector<float>>();
     if (ab.size() != 2) parameterError(parameter, "a Cauchy index is given as (a, b), n = a + b / lambda^2 (nm)");
-    return RefractiveIndex::cauchy(ab[0], ab[1]);
+    n = RefractiveIndex::cauchy(ab[0], ab[1]);
+  } else {
+    n = RefractiveIndex::constant(value.cast<float>());
   }
-  return RefractiveIndex::constant(value.cast<float>());
+  // As a scene's film index is bounded (findProblem): beyond kMaxFilmIndex no material, and the
+  // films' arithmetic is not held to stay finite.
+  if (!(n.minimumVisible() > 0.0f && n.maximumVisible() <= kMaxFilmIndex))
+    parameterError(parameter, fmt::format("the index must lie in (0, {:g}] from 300 to 830 nm, not {:g} to {:g}",
+                                          kMaxFilmIndex, n.minimumVisible(), n.maximumVisible()));
+  return n;
 }
 
 // An index given as a name or number (`name`), or for the film as (a, b) of Cauchy's law
@@ -201,25 +209,53 @@ class PyArms {
 };
 
 // N x 3 directions.
+// Directions as unit vectors: a row whose length differs from 1 by more than 1e-5 is normalised
+// (the BSDF's formulas take unit vectors; a direction scaled by 3 read 0.0346 where 0.0976 is its
+// value), one within it taken as given, so that a float32 unit vector (a sample's wo) is the same
+// direction bit for bit; a zero or non-finite row is refused, naming it.
 FloatArray directions(const py::array& input, const char* name) {
-  FloatArray a = FloatArray::ensure(input);
+  DoubleArray a = DoubleArray::ensure(input);
   if (!a || a.ndim() != 2 || a.shape(1) != 3)
     throw py::value_error(std::string(name) + " must be an N x 3 array of directions in the local frame");
-  return a;
+  FloatArray unit({a.shape(0), py::ssize_t(3)});
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    const double* v = a.data() + 3 * i;
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(length > 0.0) || !std::isfinite(length))
+      throw py::value_error(
+          fmt::format("{} row {} ({:g}, {:g}, {:g}) is not a direction: give a finite, non-zero "
+                      "vector (it is normalised)",
+                      name, i, v[0], v[1], v[2]));
+    const double scale = std::abs(length - 1.0) > 1e-5 ? 1.0 / length : 1.0;
+    for (int c = 0; c < 3; ++c) unit.mutable_data()[3 * i + c] = float(v[c] * scale);
+  }
+  return unit;
 }
 
-// Every value of `values` in [lo, hi] (or [lo, hi) when `openAbove`); NaN is in no range.
-void requireRange(const float* values, py::ssize_t count, float lo, float hi, bool openAbove, const char* what) {
-  for (py::ssize_t i = 0; i < count; ++i) {
-    const float v = values[i];
-    if (v >= lo && (openAbove ? v < hi : v <= hi)) continue;
-    throw py::value_error(
-        fmt::format("{} must lie in [{:g}, {:g}{}, not {:g} (element {})", what, lo, hi, openAbove ? ")" : "]", v, i));
+// Uniform random numbers for sampling, in [0, 1] as float64 gives them: numpy's random() draws
+// 1 - 2^-53, which rounds to 1 in float32, so numbers are checked in double and then held below 1
+// (the largest float32 under 1), as the samplers' own are. NaN and numbers outside [0, 1] are
+// refused, naming the element.
+FloatArray uniformNumbers(const py::array& input, const char* name) {
+  DoubleArray a = DoubleArray::ensure(input);
+  if (!a) throw py::value_error(std::string(name) + " must be a numeric array");
+  FloatArray u(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
+  for (py::ssize_t i = 0; i < a.size(); ++i) {
+    const double v = a.data()[i];
+    if (!(v >= 0.0 && v <= 1.0))
+      throw py::value_error(fmt::format("{} must lie in [0, 1], not {:g} (element {})", name, v, i));
+    u.mutable_data()[i] = std::min(float(v), kOneMinusEpsilon);
   }
+  return u;
 }
-// The wavelengths the BSDF is evaluated at: the renderer's range, birds' ultraviolet included.
+
+// The wavelengths the BSDF is evaluated at: the renderer's range, birds' ultraviolet included (NaN
+// is in no range).
 void requireVisible(const float* lambdas, py::ssize_t count) {
-  requireRange(lambdas, count, kSpectralMin, kLambdaMax, false, "wavelengths (nm)");
+  for (py::ssize_t i = 0; i < count; ++i)
+    if (!(lambdas[i] >= kSpectralMin && lambdas[i] <= kLambdaMax))
+      throw py::value_error(fmt::format("wavelengths (nm) must lie in [{:g}, {:g}], not {:g} (element {})",
+                                        kSpectralMin, kLambdaMax, lambdas[i], i));
 }
 
 // Wavelengths (nm), N (one per direction, in all four lanes) or N x 4 (a path's four).
@@ -301,13 +337,10 @@ py::dict sampleArray(const Wrapper& self, const py::array& wiIn, const py::array
                      const py::array& wlIn) {
   FloatArray wi = directions(wiIn, "wi");
   py::ssize_t n = wi.shape(0);
-  FloatArray u1 = FloatArray::ensure(u1In), u2 = FloatArray::ensure(u2In);
-  if (!u1 || u1.ndim() != 1 || u1.shape(0) != n)
-    throw py::value_error("u1 must have shape (N,): one number per direction");
-  if (!u2 || u2.ndim() != 2 || u2.shape(0) != n || u2.shape(1) != 2)
+  FloatArray u1 = uniformNumbers(u1In, "u1"), u2 = uniformNumbers(u2In, "u2");
+  if (u1.ndim() != 1 || u1.shape(0) != n) throw py::value_error("u1 must have shape (N,): one number per direction");
+  if (u2.ndim() != 2 || u2.shape(0) != n || u2.shape(1) != 2)
     throw py::value_error("u2 must have shape (N, 2): two numbers per direction");
-  requireRange(u1.data(), u1.size(), 0.0f, 1.0f, true, "u1");
-  requireRange(u2.data(), u2.size(), 0.0f, 1.0f, true, "u2");
   WavelengthArg wl = wavelengths(wlIn, n);
   py::array_t<float> wo({n, py::ssize_t(3)}), pdf(n);
   py::array_t<float> weight = spectrumArray(wl, n);

@@ -215,14 +215,55 @@ def test_values_outside_their_range_are_value_errors():
             bsdf.specular_spectra(30, wavelengths=[500.0, bad])
         with pytest.raises(ValueError, match="wavelengths"):
             bsdf.lobe_reflectance(30, wavelengths=[bad])
-    for bad in (np.nan, -0.1, 1.0):
-        with pytest.raises(ValueError, match=r"u1 must lie in \[0, 1\)"):
+    for bad in (np.nan, -0.1, 1.0 + 1e-9):
+        with pytest.raises(ValueError, match=r"u1 must lie in \[0, 1\], not .* \(element 2\)"):
             bsdf.sample(wi, np.array([0.5, 0.5, bad, 0.5]), u2, wl)
-        with pytest.raises(ValueError, match=r"u2 must lie in \[0, 1\)"):
+        with pytest.raises(ValueError, match=r"u2 must lie in \[0, 1\]"):
             bsdf.sample(wi, u1, np.array([[0.5, 0.5]] * 3 + [[0.5, bad]]), wl)
     # Birds see from 300 nm: the model is evaluated there (keratin's Cauchy fit extrapolated).
     ends = bsdf.specular_spectra(30, wavelengths=[300.0, 360.0, 830.0])
     assert np.all(np.isfinite(ends["R"])) and np.all(ends["R"] > 0)
+
+
+def test_sampling_takes_numpys_random_numbers_as_they_come():
+    # numpy's random() draws 1 - 2**-53, which rounds to 1 in float32: such numbers, and 1 itself,
+    # are held below 1 as the samplers' own are (about 9 % of runs of 10**6 samples raised before).
+    bsdf = columba.BarbuleBSDF()
+    wi = directions(4, 7)
+    top = 1.0 - 2.0**-53
+    for u in (top, 1.0):
+        s = bsdf.sample(wi, np.full(4, u), np.full((4, 2), u), np.full(4, 550.0))
+        held = bsdf.sample(wi, np.full(4, np.nextafter(np.float32(1), np.float32(0))),
+                           np.full((4, 2), np.nextafter(np.float32(1), np.float32(0))), np.full(4, 550.0))
+        np.testing.assert_array_equal(s["wo"], held["wo"])
+        np.testing.assert_array_equal(s["valid"], held["valid"])
+    rng = np.random.default_rng(3)
+    n = 1000
+    s = bsdf.sample(directions(n, 5), rng.random(n), rng.random((n, 2)), np.full(n, 550.0))
+    assert np.all(np.isfinite(s["pdf"]))
+
+
+def test_directions_are_normalised_and_a_zero_or_nan_one_is_refused():
+    # A direction scaled by 3 read 0.0346 where its value is 0.0976; a zero or NaN one gave 0.
+    bsdf = columba.BarbuleBSDF()
+    wi, wo = directions(6, 11), directions(6, 12)
+    wl = np.full(6, 500.0)
+    np.testing.assert_allclose(bsdf.eval(3 * wi, 0.25 * wo, wl), bsdf.eval(wi, wo, wl), rtol=1e-5)
+    np.testing.assert_allclose(bsdf.pdf(3 * wi, wo, wl), bsdf.pdf(wi, wo, wl), rtol=1e-5)
+    for bad in ([0.0, 0.0, 0.0], [np.nan, 0.0, 1.0], [np.inf, 0.0, 1.0]):
+        given = wo.copy()
+        given[4] = bad
+        with pytest.raises(ValueError, match=r"wo row 4 .* is not a direction"):
+            bsdf.eval(wi, given, wl)
+
+
+def test_a_film_index_beyond_any_material_is_refused():
+    # A Cauchy b of 1e10 (an index of 1.1e5 at 300 nm) gave NaN from eval and the spectra.
+    for make in (lambda **k: columba.BarbuleBSDF(**k), lambda **k: columba.BarbuleArmsBSDF(arm_tilts="0", **k)):
+        with pytest.raises(ValueError, match=r"film_cauchy_b': the film's index reaches 111113"):
+            make(film_ior=(1.5, 1e10))
+    with pytest.raises(ValueError, match=r"the index must lie in \(0, 100\]"):
+        columba.multilayer(0.0, [500.0], [((1.5, 1e10), 0.1)])
 
 
 def test_spectral_hemisphere_reads_back(cli, tmp_path):
