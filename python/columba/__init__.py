@@ -3,6 +3,7 @@
 Everything is computed by Columba's C++ library (the extension ``columba._columba``); this
 module only adapts arguments. See docs/python.md for the API with examples.
 """
+import functools as _functools
 import numbers as _numbers
 import os as _os
 import tempfile as _tempfile
@@ -19,14 +20,13 @@ try:
         PURPLE_CORTEX_THICKNESS,
         BarbuleArmsBSDF,
         BarbuleBSDF,
+        ColumbaWarning,
         InputError,
         Scene,
         __version__,
         colour_distance,
         cone_catches,
         direction,
-        fit,
-        fit_spectra,
         fresnel,
         human_colour_difference,
         melanin_reflectance,
@@ -52,7 +52,7 @@ __all__ = [
     "load_file", "load_string", "load_default", "render", "write_image", "read_image", "read_cones",
     "BarbuleBSDF", "BarbuleArmsBSDF", "presets", "direction", "thin_film", "ior", "keratin_ior", "melanin_reflectance",
     "fresnel", "fresnel_amplitudes", "multilayer", "generate_feathers", "read_feather_ply", "write_feather_ply", "feather_barbs",
-    "Scene", "InputError", "to_srgb", "from_srgb", "fit", "fit_spectra",
+    "Scene", "InputError", "ColumbaWarning", "to_srgb", "from_srgb", "fit", "fit_spectra",
     "observers", "observer", "cone_catches", "colour_distance", "human_colour_difference",
 ]
 
@@ -74,7 +74,14 @@ def _defines(defines, extra=None):
 def _warn_unused(scene, defines):
     for name in scene.unused_defines:
         _warnings.warn(f"{name}={defines[name]}: the scene uses no variable ${name}, so it has no effect",
-                       stacklevel=3)
+                       ColumbaWarning, stacklevel=3)
+
+
+def _reissue_warnings():
+    """Columba's warnings about what was just loaded, rendered or fitted (also printed on stderr)
+    as Python warnings of category ColumbaWarning, so that a notebook shows them."""
+    for text in _columba._take_warnings():
+        _warnings.warn(text, ColumbaWarning, stacklevel=3)
 
 
 def load_file(path, defines=None, **kwargs):
@@ -84,7 +91,10 @@ def load_file(path, defines=None, **kwargs):
     Malformed input raises columba.InputError (a ValueError) with the CLI's file:line message.
     """
     d = _defines(kwargs, defines)
-    scene = _columba._load_file(_os.fspath(path), d)
+    try:
+        scene = _columba._load_file(_os.fspath(path), d)
+    finally:
+        _reissue_warnings()
     _warn_unused(scene, d)
     return scene
 
@@ -93,7 +103,10 @@ def load_string(xml, base_dir=None, name="<string>", defines=None, **kwargs):
     """Loads a scene from XML text; relative file names resolve against base_dir (default: the
     current directory), messages name it `name`; $variables as for load_file."""
     d = _defines(kwargs, defines)
-    scene = _columba._load_string(xml, name, _os.fspath(base_dir) if base_dir is not None else _os.getcwd(), d)
+    try:
+        scene = _columba._load_string(xml, name, _os.fspath(base_dir) if base_dir is not None else _os.getcwd(), d)
+    finally:
+        _reissue_warnings()
     _warn_unused(scene, d)
     return scene
 
@@ -101,7 +114,10 @@ def load_string(xml, base_dir=None, name="<string>", defines=None, **kwargs):
 def load_default(defines=None, **kwargs):
     """The scene `columba render` draws without a scene file (a generated neck)."""
     d = _defines(kwargs, defines)
-    scene = _columba._load_default(d)
+    try:
+        scene = _columba._load_default(d)
+    finally:
+        _reissue_warnings()
     _warn_unused(scene, d)
     return scene
 
@@ -125,10 +141,28 @@ def render(scene, spp=None, seed=0, threads=None, stats=False, adaptive=False, t
         raise ValueError(f"spp must be between 1 and {1 << 24}, not {spp}")
     if threads is not None and threads < 1:
         raise ValueError(f"threads must be between 1 and 65536, not {threads}")
-    image, info = _columba._render(scene, 0 if spp is None else int(spp), int(seed),
-                                   0 if threads is None else int(threads), bool(adaptive),
-                                   0.0 if target_error is None else float(target_error))
+    try:
+        image, info = _columba._render(scene, 0 if spp is None else int(spp), int(seed),
+                                       0 if threads is None else int(threads), bool(adaptive),
+                                       0.0 if target_error is None else float(target_error))
+    finally:
+        _reissue_warnings()
     return (image, info) if stats else image
+
+
+def _reissuing(function):
+    """`function` of the extension, followed by _reissue_warnings whether it returns or raises."""
+    @_functools.wraps(function)
+    def call(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        finally:
+            _reissue_warnings()
+    return call
+
+
+fit = _reissuing(_columba.fit)
+fit_spectra = _reissuing(_columba.fit_spectra)
 
 
 def write_image(path, image):

@@ -35,6 +35,7 @@ namespace py = pybind11;
 namespace columba::python {
 
 py::array_t<float> imageArray(Image&& image);  // module.cpp
+PyObject* columbaWarning();                    // module.cpp
 
 namespace {
 
@@ -167,7 +168,7 @@ class PyBarbule {
     BarbuleParameters p = readBarbuleParameters(props, odd);
     if (odd) {
       std::string text = "<bsdf> 'barbulebsdf', parameter '" + odd->parameter + "': " + odd->message;
-      PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1);
+      if (PyErr_WarnEx(columbaWarning(), text.c_str(), 1) != 0) throw py::error_already_set();
     }
     return {p, readBarbuleQuadrature(props)};
   }

@@ -12,11 +12,14 @@
 #include <filesystem>
 #include <mutex>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "builtin/builtin_plugins.h"
 #include "builtin/default_scene.h"
 #include "core/error.h"
 #include "core/version.h"
+#include "core/warning_listener.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -27,8 +30,20 @@ namespace columba::python {
 void bindModel(py::module_& m);   // model.cpp: the barbule BSDF, optics, feathers
 void bindFit(py::module_& m);     // fit.cpp: parameter fits to images and spectra
 void bindVision(py::module_& m);  // vision.cpp: avian visual models
+// The category of Columba's warnings in Python (columba.ColumbaWarning, a UserWarning).
+PyObject* columbaWarning();
+
+PyObject* columbaWarning() {
+  static PyObject* category = PyErr_NewException("columba.ColumbaWarning", PyExc_UserWarning, nullptr);
+  return category;
+}
 
 namespace {
+
+// Columba's warnings since they were last taken, from whichever thread warned (a render's workers
+// warn with the GIL released): Python reissues them as ColumbaWarnings (columba/__init__.py).
+std::mutex warningsMutex;
+std::vector<std::string> warnings;
 
 // A loaded scene with what it was loaded from.
 struct PyScene {
@@ -219,6 +234,18 @@ PYBIND11_MODULE(_columba, m) {
   m.doc() = "Columba: spectral rendering of iridescent rock dove feathers (the C++ core)";
   m.attr("__version__") = kColumbaVersion;
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.attr("ColumbaWarning") = py::handle(columbaWarning());
+  setWarningListener([](const std::string& text) {
+    std::lock_guard<std::mutex> lock(warningsMutex);
+    warnings.push_back(text);
+  });
+  m.def(
+      "_take_warnings",
+      [] {
+        std::lock_guard<std::mutex> lock(warningsMutex);
+        return std::exchange(warnings, {});
+      },
+      "Columba's warnings (FILE:LINE: message) since the last call, oldest first");
 
   py::class_<PyScene, std::shared_ptr<PyScene>>(m, "Scene", "A loaded scene (columba.load_file, load_string)")
       .def_property_readonly("source", [](const PyScene& s) { return s.source; })

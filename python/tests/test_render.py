@@ -3,6 +3,7 @@ import os
 import signal
 import threading
 import time
+import warnings
 
 import numpy as np
 import pytest
@@ -82,8 +83,24 @@ def test_missing_scene_file(cli, tmp_path):
 
 
 def test_unused_define_warns(repo):
-    with pytest.warns(UserWarning, match=r"nosuch=1: the scene uses no variable \$nosuch"):
+    with pytest.warns(columba.ColumbaWarning, match=r"nosuch=1: the scene uses no variable \$nosuch"):
         columba.load_file(repo / "examples" / "tiny_feather.xml", nosuch=1, res=8)
+
+
+def test_scene_warnings_reach_python(repo):
+    # A scene's warnings went to C++'s stderr alone: in a notebook two renders of different
+    # thickness came out the same and nothing showed why. They are ColumbaWarnings too, naming the
+    # place, and only once each.
+    xml = """<scene version="3.0.0">
+  <bsdf type="barbulebsdf" id="b"><float name="height" value="6"/></bsdf>
+</scene>"""
+    with pytest.warns(columba.ColumbaWarning, match=r"thin.xml:2: .*a film 6 um thick is implausible") as caught:
+        columba.load_string(xml, name="thin.xml")
+    assert sum("implausible" in str(w.message) for w in caught) == 1
+    assert issubclass(columba.ColumbaWarning, UserWarning)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        columba.load_file(repo / "examples" / "tiny_feather.xml", res=8)  # warns nothing, and nothing is left over
 
 
 def test_render_argument_errors(repo):
