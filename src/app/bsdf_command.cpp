@@ -161,10 +161,11 @@ SpectralFigure spectralFigure(const BSDFOptions& o, const std::vector<float>& la
 void measureAlbedo(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir, nlohmann::json& record,
                    std::vector<std::string>& written) {
   const std::vector<float> lambdas = wavelengthGrid(kSpectralMin, 1.0f);
-  auto [plot, table] = spectralFigure(o, lambdas, "Directional reflectance of the barbule lobes",
-                                      "directional reflectance (R solid, TRT dashed)",
-                                      "directional reflectance (albedo) of the R and TRT lobes: the integral over "
-                                      "outgoing directions of f |cos theta_o| (dimensionless)");
+  auto [plot, table] = spectralFigure(
+      o, lambdas, "Directional reflectance of the barbule lobes", "directional reflectance (R solid, TRT dashed)",
+      "directional reflectance (albedo) of the R and TRT lobes: the integral over "
+      "outgoing directions of f |cos theta_o| (dimensionless), to 0.1 % (docs/model.md, "
+      "Measurements)");
   float peak = 0.0f;
   fmt::print("directional reflectance (albedo), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  mean R    mean TRT  coverage  R peaks (nm, 1 nm grid)\n");
@@ -518,7 +519,8 @@ void addBSDFCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 89.9));
   cmd->add_option("--phi", o->phiDegrees, "Light azimuth, degrees; 0 = across the barbules (default 0)");
   cmd->add_option("--mode", o->modes,
-                  "What to measure, one or more of hemisphere, specular, plane, spectra (default hemisphere,spectra)")
+                  "What to measure, one or more of hemisphere, specular, plane, spectra (the lobes' albedo, to 0.1 %) "
+                  "(default hemisphere,spectra)")
       ->delimiter(',')
       ->check(CLI::IsMember({"hemisphere", "specular", "plane", "spectra"}));
   cmd->add_flag("--spectral", o->spectral, "Hemisphere images also as wavelength bins (EXR channels S0.<nm>nm)");

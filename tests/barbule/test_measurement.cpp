@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include "barbule/measurement.h"
+#include "barbule/model.h"
 #include "bsdfs/barbulebsdf.h"
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "support/barbule_albedo.h"
 
 using namespace columba;
+using namespace columba::testing;
 
 TEST(BarbuleMeasurement, LobeReflectanceMatchesMonteCarloIntegrationSlow) {
   BarbuleBSDF bsdf{BarbuleParameters{}};
@@ -30,10 +34,60 @@ TEST(BarbuleMeasurement, LobeReflectanceMatchesMonteCarloIntegrationSlow) {
       }
     }
     for (int k = 0; k < 4; ++k) {
-      SCOPED_TRACE(testing::Message() << "theta " << thetaDeg << " lambda " << lambdas[k]);
+      SCOPED_TRACE(::testing::Message() << "theta " << thetaDeg << " lambda " << lambdas[k]);
       EXPECT_NEAR(grid.reflection[k], r[k], 0.03 * r[k] + 1e-4);
       EXPECT_NEAR(grid.trt[k], t[k], 0.02 * t[k] + 1e-4);
       EXPECT_LE(grid.reflection[k] + grid.trt[k], 1.0f);
+    }
+  }
+}
+
+// The albedo to 0.1 % (docs/model.md, "Measurements"): R against the midpoint rule over omega_o in
+// double, 1024 x 2304 over the band R reaches (agreeing with 2048 x 4608 to 3e-4), and against the
+// means over visible normals, which need no lobe at all (their own midpoint rule is good to 2e-5); TRT against a full-sphere grid (which
+// agrees with one four times finer to 1e-5). A superellipse's R is singular along a curve of
+// directions that such a grid cannot integrate (at p 3 it scatters by 0.2 % between grid sizes), so
+// there only the visible normals' means judge it: within 0.1 % for oblique light, and within 0.25 %
+// with the light in the plane across the barbules, where the measurement misses the part of the
+// flat side's peak closer than 3e-5 rad to its normal (0.19 % low at 450 nm). The old fixed 600 x 180 grid over omega_o read R
+// 2.4 % low at 20 degrees, 450 nm (0.02158 against 0.02210) and 35 % low at p 4.
+TEST(BarbuleMeasurement, LobeReflectanceMatchesConvergedQuadraturesSlow) {
+  const std::vector<float> lambdas = {450.0f, 530.0f, 610.0f, 690.0f};
+  const Wavelengths wl = Wavelengths::fixed({450.0f, 530.0f, 610.0f, 690.0f});
+  BarbuleParameters superellipse;
+  superellipse.profileExponent = 3.0f;
+  struct Case {
+    BarbuleParameters params;
+    float thetaDeg, phiDeg;
+    bool grid;  // whether the omega_o grid can judge R
+    float tolerance = 1e-3f;
+  };
+  const Case cases[] = {{BarbuleParameters{}, 0.0f, 0.0f, true},
+                        {BarbuleParameters{}, 20.0f, 0.0f, true},
+                        {BarbuleParameters{}, 60.0f, 30.0f, true},
+                        {superellipse, 20.0f, 0.0f, false, 2.5e-3f},
+                        {superellipse, 50.0f, 60.0f, false}};
+  for (const Case& c : cases) {
+    BarbuleModel model(c.params);
+    const Vec3 light = directionFromAngles(degToRad(c.thetaDeg), degToRad(c.phiDeg));
+    LobeSpectra measured = lobeReflectance(model, light, lambdas);
+    LobeAlbedo grid = integrateLobeGrid([&](const Vec3& wo) { return model.lobes(light, wo, wl); }, light, 1,
+                                        [](const Vec3&) { return 0; })
+                          .front();
+    LobeAlbedo means = visibleNormalMeans(c.params, light, wl);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      SCOPED_TRACE(::testing::Message() << "p " << c.params.profileExponent << " light (" << c.thetaDeg << ", "
+                                        << c.phiDeg << ") deg, " << lambdas[size_t(k)] << " nm");
+      std::printf("p %g light (%g, %g) %g nm: R %.6f (grid %.6f, means %.6f) TRT %.6f (grid %.6f)\n",
+                  c.params.profileExponent, c.thetaDeg, c.phiDeg, lambdas[size_t(k)], measured.reflection[size_t(k)],
+                  grid.reflection[k], means.reflection[k], measured.trt[size_t(k)], grid.trt[k]);
+      if (c.grid) {
+        EXPECT_NEAR(measured.reflection[size_t(k)], grid.reflection[k], 1e-3f * grid.reflection[k]);
+      }
+      EXPECT_NEAR(measured.reflection[size_t(k)], means.reflection[k], c.tolerance * means.reflection[k] + 2e-5f);
+      EXPECT_NEAR(measured.trt[size_t(k)], grid.trt[k], 1e-3f * grid.trt[k]);
+      const float total = measured.reflection[size_t(k)] + measured.trt[size_t(k)];
+      EXPECT_NEAR(total, means.reflection[k] + grid.trt[k], c.tolerance * total + 2e-5f);
     }
   }
 }
@@ -95,7 +149,7 @@ TEST(BarbuleMeasurement, SpecularPeaksAreTheFilmsInterferenceMaxima) {
       for (float peak : peakWavelengths(lambdas, s.reflection))
         if (peak >= 380.0f && peak <= 780.0f) found.push_back(peak);
       std::vector<float> expected = interferenceMaxima(height, degToRad(thetaDeg));
-      SCOPED_TRACE(testing::Message() << "height " << height << " theta " << thetaDeg);
+      SCOPED_TRACE(::testing::Message() << "height " << height << " theta " << thetaDeg);
       ASSERT_EQ(found.size(), expected.size());
       for (size_t i = 0; i < found.size(); ++i) EXPECT_NEAR(found[i], expected[i], 2.0f);
       // The reflectance factor is pi times the BSDF value there.

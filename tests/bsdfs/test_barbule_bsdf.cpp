@@ -20,6 +20,7 @@
 #include "optics/film_layer_text.h"
 #include "optics/melanin.h"
 #include "optics/thin_film.h"
+#include "support/barbule_albedo.h"
 #include "support/bsdf_test_support.h"
 #include "support/chi_square.h"
 
@@ -327,110 +328,16 @@ TEST(BarbuleBSDF, AWeightWithoutPdfIsTheWeightWithIt) {
 
 namespace {
 
-// Integral over omega_o of each lobe's f |cos theta_o|, by the midpoint rule on an equal-area grid
-// around the barbule axis: fine in t . omega_o over the band the R lobe can reach
-// (|t . (omega_i + omega_o)| <= 2 sin(thetaD)), coarser for TRT over the whole sphere.
-struct LobeAlbedo {
-  Spectrum reflection, trt;
-};
-// The same integrals over each of `regions` parts of the sphere, `regionOf(omega_o)` naming the part.
+// The integrals of eval over omega_o, whole or by region, of the BSDF's own lobes.
 template <typename RegionOf>
 std::vector<LobeAlbedo> integrateLobesByRegion(const BarbuleBSDF& bsdf, const Vec3& wi, int regions,
                                                const RegionOf& regionOf) {
   const BSDFContext ctx;
-  std::vector<LobeAlbedo> out(static_cast<size_t>(regions));
-  auto grid = [&](float yLo, float yHi, int rows, int columns, bool reflection) {
-    // millions of terms: float sums would drift
-    std::vector<std::array<double, kSpectrumSamples>> sum(size_t(regions), std::array<double, kSpectrumSamples>{});
-    double cell = (yHi - yLo) / rows * (2.0 * M_PI / columns);
-    for (int i = 0; i < rows; ++i)
-      for (int j = 0; j < columns; ++j) {
-        float y = yLo + (yHi - yLo) * (i + 0.5f) / rows, gamma = kTwoPi * (j + 0.5f) / columns;
-        float r = safeSqrt(1.0f - y * y);
-        Vec3 wo(r * std::sin(gamma), y, r * std::cos(gamma));
-        BarbuleBSDF::Lobes lobes = bsdf.evalLobes(ctx, wi, wo, kWavelengths);
-        const Spectrum& f = reflection ? lobes.reflection : lobes.trt;
-        std::array<double, kSpectrumSamples>& s = sum[size_t(regionOf(wo))];
-        for (int k = 0; k < kSpectrumSamples; ++k) s[k] += double(f[k]) * std::abs(wo.z);
-      }
-    for (int region = 0; region < regions; ++region) {
-      Spectrum& lobe = reflection ? out[size_t(region)].reflection : out[size_t(region)].trt;
-      for (int k = 0; k < kSpectrumSamples; ++k) lobe[k] = float(sum[size_t(region)][k] * cell);
-    }
-  };
-  float band = 2.0f * kSinBarbuleThetaD;
-  grid(std::max(-wi.y - band, -1.0f), std::min(-wi.y + band, 1.0f), 1024, 2304, true);
-  grid(-1.0f, 1.0f, 160, 320, false);
-  return out;
+  return integrateLobeGrid([&](const Vec3& wo) { return bsdf.evalLobes(ctx, wi, wo, kWavelengths); }, wi, regions,
+                           regionOf);
 }
 LobeAlbedo integrateLobes(const BarbuleBSDF& bsdf, const Vec3& wi) {
   return integrateLobesByRegion(bsdf, wi, 1, [](const Vec3&) { return 0; }).front();
-}
-
-// r times the means over the visible normals of I_R (with the visibility and longitudinal
-// shadowing toward the mirror direction) and of the TRT energy (integral over omega_o of I_TRT
-// |cos theta_o| / pi on the normal's front side, visible from omega_o), from the film and the
-// cross-section geometry directly rather than through the BSDF's lobes and their Jacobians.
-LobeAlbedo visibleNormalMeans(const BarbuleParameters& p, const Vec3& wi) {
-  BarbuleCrossSection geometry(p.b, p.phi0, p.phi1, p.mu, p.H, p.profileExponent);
-  // The film: the cortex alone, whose transmittance is 1 - R, or with layers under it, whose
-  // transmittance (absorbing layers take their share) comes from the transfer matrices.
-  BarbuleFilm film(p, p.height, kWavelengths);
-  const bool layeredFilm = !p.layersBelow.empty();
-  Spectrum melanin;
-  for (int k = 0; k < kSpectrumSamples; ++k)
-    melanin[k] = p.melanin ? p.melanin->eval(kWavelengths[k]) : melaninReflectance(kWavelengths[k]);
-  InPlaneDirection ip = inPlane(wi);
-  LitArc arc = geometry.litArc(ip.dir);
-  float r = geometry.coverage(arc, ip.dir);
-  LobeAlbedo out;
-  if (!(arc.width() > 0.0f)) return out;
-  // R: visible normals on a fine grid of the (exact) visible-normal warp.
-  const int hSteps = 2000, thetaSteps = 48;
-  double sumR[kSpectrumSamples] = {};
-  for (int i = 0; i < hSteps; ++i)
-    for (int j = 0; j < thetaSteps; ++j) {
-      VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hSteps, (j + 0.5f) / thetaSteps));
-      // The drawn point itself (on a superellipse's flat side its normal does not fix it).
-      Vec2 point = geometry.pointAt(arc, arc.hMin + (i + 0.5f) / hSteps * arc.width());
-      Vec3 wo = reflect(wi, vn.m);
-      if (!geometry.isLitAt(geometry.litArc(inPlane(wo).dir), point, vn.localNormal)) continue;
-      Vec2 n = geometry.toWorld(vn.localNormal);
-      float shadow = LongitudinalDensity(inPlaneProjection(wo, n), wo.y).shadowing();
-      FreeStandingFilm::Reflectance R = film.reflectance(dot(wi, vn.m));
-      for (int k = 0; k < kSpectrumSamples; ++k) sumR[k] += 0.5 * shadow * (R.s[k] + R.p[k]);
-    }
-  for (int k = 0; k < kSpectrumSamples; ++k) out.reflection[k] = float(sumR[k] * r / (hSteps * thetaSteps));
-
-  // TRT: coarser normals, and for each a grid of outgoing directions on the front side of its
-  // in-plane normal (|cos theta_o| / pi integrates to 1 there).
-  const int hCoarse = 48, thetaCoarse = 4, rows = 64, columns = 128;
-  double sumTRT[kSpectrumSamples] = {};
-  for (int i = 0; i < hCoarse; ++i)
-    for (int j = 0; j < thetaCoarse; ++j) {
-      VisibleNormal vn = sampleVisibleNormal(geometry, arc, wi, Vec2((i + 0.5f) / hCoarse, (j + 0.5f) / thetaCoarse));
-      Vec2 point = geometry.pointAt(arc, arc.hMin + (i + 0.5f) / hCoarse * arc.width());
-      Vec2 n2 = geometry.toWorld(vn.localNormal);
-      Vec3 m0(n2.y, 0.0f, n2.x);  // theta = 0: its front side is the in-plane facing half-space
-      Frame frame = Frame::fromNormal(m0);
-      FreeStandingFilm::Reflectance in = film.reflectance(dot(wi, vn.m));
-      for (int a = 0; a < rows; ++a)
-        for (int b = 0; b < columns; ++b) {
-          // Equal-area cells of the hemisphere around m0.
-          float z = (a + 0.5f) / rows, phi = kTwoPi * (b + 0.5f) / columns, s = safeSqrt(1.0f - z * z);
-          Vec3 wo = frame.toWorld(Vec3(s * std::cos(phi), s * std::sin(phi), z));
-          if (!geometry.isLitAt(geometry.litArc(inPlane(wo).dir), point, vn.localNormal)) continue;
-          FreeStandingFilm::Reflectance out = film.reflectance(std::abs(dot(wo, vn.m)));
-          float weight = std::abs(wo.z) / kPi * (kTwoPi / (rows * columns));
-          Spectrum energy =
-              layeredFilm
-                  ? weight * melanin * film.transmittanceProduct(dot(wi, vn.m), std::abs(dot(wo, vn.m)))
-                  : (0.5f * weight) * melanin * ((1.0f - in.s) * (1.0f - out.s) + (1.0f - in.p) * (1.0f - out.p));
-          for (int k = 0; k < kSpectrumSamples; ++k) sumTRT[k] += energy[k];
-        }
-    }
-  for (int k = 0; k < kSpectrumSamples; ++k) out.trt[k] = float(sumTRT[k] * r / (hCoarse * thetaCoarse));
-  return out;
 }
 
 // The mean of 100,000 sample weights from wi (T included) with its standard error, per wavelength.
@@ -479,7 +386,7 @@ TEST(BarbuleBSDF, WhiteFurnaceMatchesTheVisibleNormalMeansSlow) {
                                direction(80.0f, 250.0f), direction(45.0f, 0.0f)})) {
       float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
       EXPECT_NEAR(t, 1.0f - bsdf.coverage(ctx, wi), 1e-6f);
-      LobeAlbedo integral = integrateLobes(bsdf, wi), expected = visibleNormalMeans(set.params, wi);
+      LobeAlbedo integral = integrateLobes(bsdf, wi), expected = visibleNormalMeans(set.params, wi, kWavelengths);
 
       // The expected value of the sample weight (T included) is the same total, by Monte Carlo.
       const WeightMean weights = meanSampleWeight(bsdf, wi);
@@ -547,7 +454,7 @@ TEST(BarbuleBSDF, SuperellipseSamplesFollowThePdfAndWeighTheirEnergySlow) {
     BarbuleBSDF bsdf(squarer(exponent), BarbuleBSDF::Role::CameraIncident, BarbuleQuadrature{16, 4, 4});
     for (const Vec3& wi : {direction(0.0f, 0.0f), direction(60.0f, 110.0f)}) {
       float t = bsdf.passThrough(ctx, wi, kWavelengths)[0];
-      LobeAlbedo expected = visibleNormalMeans(squarer(exponent), wi);
+      LobeAlbedo expected = visibleNormalMeans(squarer(exponent), wi, kWavelengths);
       const WeightMean weights = meanSampleWeight(bsdf, wi);
       const Spectrum& mean = weights.mean;
       for (int k = 0; k < kSpectrumSamples; ++k) {
