@@ -26,11 +26,12 @@ class CliTest : public columba::testing::TempDirTest {};
 
 const char* kTinyScene = R"(<scene version="3.0.0">
   <default name="res" value="8"/>
+  <default name="radiance" value="0.5"/>
   <sensor type="perspective">
     <film type="hdrfilm"><integer name="width" value="$res"/><integer name="height" value="$res"/></film>
     <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
   </sensor>
-  <emitter type="constant"><spectrum name="radiance" value="0.5"/></emitter>
+  <emitter type="constant"><spectrum name="radiance" value="$radiance"/></emitter>
 </scene>
 )";
 }  // namespace
@@ -668,26 +669,18 @@ TEST_F(CliTest, BsdfRefusesIndicesBeyondAnyMaterialAndSaysWhatHasNoEffect) {
 // a render whose pixels are not all finite all the same fails and writes nothing (an emitter of
 // 1e37 wrote an all-NaN EXR with status 0).
 TEST_F(CliTest, ARenderNeverWritesANonFinitePixel) {
-  const std::string scene = write("bright.xml", R"(<scene version="3.0.0">
-  <default name="L" value="1e37"/>
-  <sensor type="perspective">
-    <film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/></film>
-    <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
-  </sensor>
-  <emitter type="constant"><rgb name="radiance" value="$L"/></emitter>
-</scene>
-)");
+  const std::string scene = write("bright.xml", kTinyScene);
   const std::string out = (dir_ / "bright.exr").string();
   for (const char* value : {"1e37", "1e35"}) {
-    CommandResult r = run("render " + scene + " -D L=" + value + " -o " + out);
+    CommandResult r = run("render " + scene + " -D res=4 -D radiance=" + value + " -o " + out);
     EXPECT_NE(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("bright.xml:7"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bright.xml:8"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("parameter 'radiance' of <emitter> 'constant' is emitted light that reaches"),
               std::string::npos)
         << r.output;
     EXPECT_FALSE(fs::exists(out));
   }
-  CommandResult r = run("render " + scene + " -D L=1e29 -o " + out);
+  CommandResult r = run("render " + scene + " -D res=4 -D radiance=1e29 -o " + out);
   ASSERT_EQ(r.status, 0) << r.output;
   const columba::Image image = columba::readEXR(out);
   for (float v : image.rgb) ASSERT_TRUE(std::isfinite(v) && v > 1e28f) << v;

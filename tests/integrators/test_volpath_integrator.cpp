@@ -193,12 +193,16 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
     expectContains(loadError(xml), {"vol.xml:13", file});
   }
   // Negative extinction in a grid names the voxel and the value.
-  std::string negative = header;
-  for (int i = 0; i < 64; ++i) {
-    const float v = i == 5 ? -0.25f : 1.0f;
-    negative += std::string(reinterpret_cast<const char*>(&v), 4);
-  }
-  write("negative.vol", negative);
+  // A 4 x 4 x 4 grid of `rest` but for one voxel of `odd`.
+  auto gridWithOne = [&](int voxel, float odd, float rest) {
+    std::string grid = header;
+    for (int i = 0; i < 64; ++i) {
+      const float v = i == voxel ? odd : rest;
+      grid += std::string(reinterpret_cast<const char*>(&v), 4);
+    }
+    return grid;
+  };
+  write("negative.vol", gridWithOne(5, -0.25f, 1.0f));
   expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", R"(<medium type="heterogeneous" id="fog">
     <volume type="gridvolume" name="sigma_t"><string name="filename" value=")" +
                                                                               (dir_ / "negative.vol").string() +
@@ -216,12 +220,7 @@ TEST_F(VolumetricPathErrors, BadMediaAreRefusedNamingFileLineAndValue) {
                   "1.5")})
     expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", std::string(medium) + sphere)),
                    {"vol.xml:12", "parameter 'albedo'", "must lie in [0, 1]", value});
-  std::string twos = header;
-  for (int i = 0; i < 64; ++i) {
-    const float v = i == 7 ? 2.0f : 0.5f;
-    twos += std::string(reinterpret_cast<const char*>(&v), 4);
-  }
-  write("twos.vol", twos);
+  write("twos.vol", gridWithOne(7, 2.0f, 0.5f));
   expectContains(loadError(sphereScene(R"(<integrator type="volpath"/>)", R"(<medium type="heterogeneous" id="fog">
     <volume type="gridvolume" name="albedo"><string name="filename" value=")" +
                                                                               (dir_ / "twos.vol").string() +
