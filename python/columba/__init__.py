@@ -112,7 +112,7 @@ def load_string(xml, base_dir=None, name="<string>", defines=None, **kwargs):
 
 
 def load_default(defines=None, **kwargs):
-    """The scene `columba render` draws without a scene file (a generated neck)."""
+    """The scene `columba render` draws without a scene file (a generated rock dove)."""
     d = _defines(kwargs, defines)
     try:
         scene = _columba._load_default(d)
