@@ -267,7 +267,8 @@ def test_a_film_index_beyond_any_material_is_refused():
 
 
 def test_spectral_hemisphere_reads_back(cli, tmp_path):
-    hemisphere(cli, tmp_path, "--angles", "20", "--res", "16", "--spectral", "--bins", "4")
+    hemisphere(cli, tmp_path, "--angles", "20", "--res", "16", "--spectral", "--bins", "4",
+               "--spectral-range", "400:700")
     rgb, centres, bands = columba.read_image(tmp_path / "bsdf_hemisphere_theta20.exr", spectral=True)
     np.testing.assert_array_equal(rgb, columba.BarbuleBSDF().scatterometer_image(20, resolution=16))
     np.testing.assert_allclose(centres, [437.5, 512.5, 587.5, 662.5])

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <limits>
 
+#include "app/scene_options.h"
 #include "barbule/measurement.h"
 #include "barbule/model.h"
 #include "barbule/parameter_reader.h"
@@ -38,6 +39,7 @@ struct BSDFOptions {
   std::vector<std::string> modes{"hemisphere", "spectra"};
   bool spectral = false;
   int bins = 16;
+  std::string spectralRange;  // LO:HI nm; "": 300-830, the range the model is evaluated over
   int resolution = 256;
   std::string outputDir = ".";
   std::string observer;  // a bird's: the specular spectra's cone catches and colour distances
@@ -102,18 +104,28 @@ void writeTable(const fs::path& path, const CsvTable& table, std::vector<std::st
   written.push_back(path.string());
 }
 
+// The bins of --spectral: --spectral-range, or the whole range the model is evaluated over.
+std::pair<float, float> bsdfSpectralRange(const BSDFOptions& o) {
+  return o.spectralRange.empty() ? std::pair{kSpectralMin, kLambdaMax} : parseSpectralRange(o.spectralRange);
+}
+
 void measureHemispheres(const BarbuleLobeSource& model, const BSDFOptions& o, const fs::path& dir,
                         std::vector<std::string>& written) {
   for (float angle : o.angles) {
     Vec3 light = lightDirection(o, angle);
     Image image = scatterometerImage(model, light, o.resolution);
-    if (o.spectral) image.spectral = spectralScatterometerBands(model, light, o.resolution, o.bins, 400.0f, 700.0f);
-    const ImageMetadata metadata = {
+    const auto [lo, hi] = bsdfSpectralRange(o);
+    if (o.spectral) image.spectral = spectralScatterometerBands(model, light, o.resolution, o.bins, lo, hi);
+    ImageMetadata metadata = {
         {"Measurement",
          "scatterometer image: f(light, camera) |cos theta_camera| per steradian under a D65 beam of "
          "unit luminance (RGB); spectral channels: f |cos theta_camera| per steradian, bin means"},
         {"Light", fmt::format("theta {:g} deg, phi {:g} deg", angle, o.phiDegrees)},
         {"Parameters", describeParameters(o)}};
+    if (o.spectral) {
+      metadata.emplace_back("Spectral channels", fmt::format("{} bins of {:g} nm over {:g}-{:g} nm (S0.<centre>nm)",
+                                                             o.bins, (hi - lo) / float(o.bins), lo, hi));
+    }
     fs::path exr = dir / ("bsdf_hemisphere_" + angleTag(angle) + ".exr");
     writeEXR(exr.string(), image, metadata);
     // The PNG is the chart a person reads; the EXR holds the data.
@@ -414,7 +426,10 @@ void runBSDF(const BSDFOptions& o) {
                            {"light_phi_deg", o.phiDegrees},
                            {"modes", o.modes},
                            {"resolution", o.resolution}};
-  if (o.spectral) record["spectral_bins"] = {{"count", o.bins}, {"from_nm", 400}, {"to_nm", 700}};
+  if (o.spectral) {
+    const auto [lo, hi] = bsdfSpectralRange(o);
+    record["spectral_bins"] = {{"count", o.bins}, {"from_nm", lo}, {"to_nm", hi}};
+  }
   std::vector<std::string> written;
   for (const std::string& mode : o.modes) {
     if (mode == "hemisphere")
@@ -524,8 +539,10 @@ void addBSDFCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"hemisphere", "specular", "plane", "spectra"}));
   cmd->add_flag("--spectral", o->spectral, "Hemisphere images also as wavelength bins (EXR channels S0.<nm>nm)");
-  cmd->add_option("--bins", o->bins, "Wavelength bins over 400-700 nm for --spectral (default 16)")
-      ->check(CLI::Range(1, 300));
+  cmd->add_option("--spectral-range", o->spectralRange,
+                  "LO:HI nm, the range of --spectral's bins within 300-830 (default 300:830)")
+      ->needs("--spectral");
+  cmd->add_option("--bins", o->bins, "Wavelength bins for --spectral (default 16)")->check(CLI::Range(1, 300));
   cmd->add_option("--res", o->resolution, "Hemisphere image size in pixels (default 256)")->check(CLI::Range(16, 4096));
   cmd->add_option("-o,--output", o->outputDir, "Output directory, made if missing (default: the working directory)");
   cmd->add_option("--observer", o->observer,
@@ -541,6 +558,7 @@ void addBSDFCommand(CLI::App& app) {
   cmd->callback([o, given, cmd] {
     if (!o->observer.empty() && std::find(o->modes.begin(), o->modes.end(), "specular") == o->modes.end())
       throw CLI::ValidationError("--observer", "measures the specular spectra's cone catches: add --mode specular");
+    bsdfSpectralRange(*o);  // checked before anything is measured
     if (cmd->count("--arm-tilts") > 0 && o->armTilts.find_first_not_of(" \t") == std::string::npos)
       throw CLI::ValidationError("--arm-tilts", "gives no arm: give the arms' tilts in degrees, e.g. '-30,0,30'");
     resolveParameters(*o, *cmd, *given);

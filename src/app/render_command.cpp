@@ -9,6 +9,7 @@
 #include <iterator>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "app/cli_checks.h"
 #include "app/interruption.h"
@@ -154,6 +155,7 @@ RenderPlan planRender(const RenderOptions& options) {
   plan.exposure = options.exposure;
   plan.toneMap = toneMapNamed(options.toneMap);
   if (plan.spectral) settings.spectralBins = bins;
+  std::tie(settings.spectralMin, settings.spectralMax) = parseSpectralRange(options.scene.spectralRange);
   if (!options.part.empty()) plan.part = parsePieceIndex("--part", options.part, 65536);
   if (!options.pass.empty()) plan.pass = parsePieceIndex("--pass", options.pass, kMaxSamplesPerPixel);
   plan.frames = planFrames(options.scene, options.output);
@@ -227,12 +229,13 @@ PieceInfo framePiece(const RenderPlan& plan, int f, const Scene& scene, const st
   const PixelRect& crop = scene.sensor().film().crop();
   info.frameWidth = crop.width();
   info.frameHeight = crop.height();
-  if (plan.spectral)
+  if (plan.spectral) {
+    const auto [lo, hi] = spectralRange(settings, scene.sensor().film(), "--spectral-range");
     info.spectral = fmt::format(
         "{} bins of {:g} nm over {:g}-{:g} nm: mean radiance per nm over each bin "
         "(S0.<centre>nm)",
-        settings.spectralBins, (settings.spectralMax - settings.spectralMin) / settings.spectralBins,
-        settings.spectralMin, settings.spectralMax);
+        settings.spectralBins, (hi - lo) / float(settings.spectralBins), lo, hi);
+  }
   if (const ObserverResponse* observer = scene.sensor().film().observer()) info.observer = describeObserver(*observer);
   if (plan.part) {
     // Bands of rows of about equal cost, from a pilot every part computes alike.

@@ -3,6 +3,7 @@
 // plan from them and each frame's scene.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "distribute/frame_plan.h"
@@ -17,10 +18,14 @@ struct SceneOptions {
   uint64_t seed = 0;
   bool spectral = false;  // radiance per wavelength bin in the EXR besides RGB
   std::string bins = "16";
+  std::string spectralRange;  // LO:HI nm for the bins; "": the whole range the film renders
   std::vector<std::string> sweeps;
   std::string framesPattern;
 };
 void addSceneOptions(CLI::App* command, SceneOptions& options);
+// --spectral-range's LO:HI as (LO, HI) nm, within 300-830 (0, 0 for ""); std::runtime_error naming
+// the option and the text otherwise. Whether the film renders that range is the renderer's check.
+std::pair<float, float> parseSpectralRange(const std::string& text);
 
 // The frames of a render to `output` (-o, or "" for the scene's name in the working directory);
 // throws std::runtime_error for a bad sweep, pattern, output name or scene path, before any work.

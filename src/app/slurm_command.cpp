@@ -170,6 +170,7 @@ SlurmPlan planSlurm(const SlurmOptions& options) {
   sp.cpus = parseCount("--cpus-per-task", options.cpusPerTask, 1, 4096);
   sp.spp = parseCount("--spp", options.scene.spp, 1, kMaxSamplesPerPixel);
   parseCount("--bins", options.scene.bins, 1, kMaxSpectralBins);
+  parseSpectralRange(options.scene.spectralRange);
   sp.stem =
       options.scene.scenePath.empty() ? std::string("default") : fs::path(options.scene.scenePath).stem().string();
   sp.outDir = fs::absolute(options.outDir.empty() ? "slurm-" + sp.stem : options.outDir).lexically_normal();
@@ -220,6 +221,7 @@ SlurmJob slurmJob(const SlurmOptions& options, const SlurmPlan& sp) {
   if (sp.spp) args.insert(args.end(), {"--spp", std::to_string(sp.spp)});
   args.insert(args.end(), {"--seed", std::to_string(options.scene.seed)});
   if (options.scene.spectral) args.insert(args.end(), {"--spectral", "--bins", options.scene.bins});
+  if (!options.scene.spectralRange.empty()) args.insert(args.end(), {"--spectral-range", options.scene.spectralRange});
   for (const SweepAxis& axis : sp.frames.axes) args.insert(args.end(), {"--sweep", axis.spec});
   if (sp.pieceOptions.framesPattern.empty())
     args.insert(args.end(), {"-o", (sp.partsDir / (sp.stem + ".exr")).string()});

@@ -256,6 +256,18 @@ void RenderSettings::validate(const RenderSettingNames& names) const {
                     targetError));
 }
 
+std::pair<float, float> spectralRange(const RenderSettings& settings, const Film& film, const std::string& option) {
+  const WavelengthTable& rendered = wavelengthTable(settings, film);
+  if (settings.spectralMin == 0.0f && settings.spectralMax == 0.0f) return {rendered.first(), rendered.last()};
+  const float lo = settings.spectralMin, hi = settings.spectralMax;
+  if (!(lo < hi) || !(lo >= rendered.first()) || !(hi <= rendered.last()))
+    throw std::invalid_argument(
+        fmt::format("{} {:g}-{:g} nm is not a range within the {:g}-{:g} nm this film renders (an RGB film renders "
+                    "{:g}-{:g} nm; a film with a bird's observer, its observer's range)",
+                    option, lo, hi, rendered.first(), rendered.last(), kLambdaMin, kLambdaMax));
+  return {lo, hi};
+}
+
 namespace {
 Image renderCameraPaths(const Scene& scene, const RenderSettings& settings, RenderStats& stats) {
   const Sensor& sensor = scene.sensor();
@@ -279,8 +291,8 @@ Image renderCameraPaths(const Scene& scene, const RenderSettings& settings, Rend
   Image image = whole ? film.makeImage() : film.resized(width, height)->makeImage();
   WavelengthBins bins;
   if (settings.spectralBins > 0) {
-    bins = {settings.spectralBins, settings.spectralMin,
-            (settings.spectralMax - settings.spectralMin) / float(settings.spectralBins)};
+    const auto [lo, hi] = spectralRange(settings, film);
+    bins = {settings.spectralBins, lo, (hi - lo) / float(settings.spectralBins)};
     for (int b = 0; b < bins.count; ++b) image.spectral.centres.push_back(bins.lo + (b + 0.5f) * bins.width);
     image.spectral.values.assign(size_t(width) * size_t(height) * size_t(bins.count), 0.0f);
   }

@@ -6,6 +6,8 @@
 // light tracing instead (render/light_path_renderer.h).
 #include <atomic>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 #include "io/image.h"
 #include "scene/scene.h"
@@ -13,7 +15,7 @@
 namespace columba {
 
 inline constexpr int kMaxRenderThreads = 65536;
-inline constexpr int kMaxSpectralBins = 470;  // 1 nm bins over 360-830 nm
+inline constexpr int kMaxSpectralBins = 530;  // 1 nm bins over 300-830 nm
 
 // What the settings are called where they were given (the command line's options, Python's
 // keyword arguments), for RenderSettings::validate's messages.
@@ -32,8 +34,9 @@ struct RenderSettings {
       nullptr;  // set to stop early (checked before every sample); finished tiles are kept
   // Radiance per wavelength bin besides RGB (Image::spectral): `spectralBins` equal bins over
   // [spectralMin, spectralMax] nm, each pixel's mean of the bin's mean radiance. 0: RGB only.
+  // Both 0: the whole range the film renders (spectralRange); a range must lie within it.
   int spectralBins = 0;
-  float spectralMin = 400.0f, spectralMax = 700.0f;
+  float spectralMin = 0.0f, spectralMax = 0.0f;
   // Called from worker threads as tiles finish (done, total); must be thread-safe.
   std::function<void(int, int)> onTileDone;
   // A piece of the render. `window` (empty: the film's crop window, normally the whole film)
@@ -69,6 +72,13 @@ struct RenderStats {
   int pilotSamples = 0, fewestSamples = 0, mostSamples = 0;
   double predictedRelativeError = 0.0;
 };
+
+// The wavelengths the spectral bins cover, [first, last] nm: the settings' range, or where they
+// give none the whole range the film renders (360-830 nm for an RGB film, its observer's for a
+// film with a bird's observer). Throws std::invalid_argument, naming `option`, for a range that is
+// empty or reaches beyond what the film renders (its bins would be empty, not dark).
+std::pair<float, float> spectralRange(const RenderSettings& settings, const Film& film,
+                                      const std::string& option = "the spectral range");
 
 // Renders the scene's image (or the window of it the settings name). Every value of the image is
 // finite: one that is not fails the render with std::runtime_error, naming how many and where.

@@ -448,9 +448,30 @@ TEST_F(CliTest, BSDFGoniometerWritesPlotsWithTheirDataSlow) {
   for (const char* key : {"\"columba_version\"", "\"height_um\": 0.58", "\"preset\": \"dove-green\"", "\"R_peaks_nm\"",
                           "\"profile_exponent\": 2.0"})
     EXPECT_NE(json.str().find(key), std::string::npos) << key;
-  // The spectral hemisphere: RGB plus four bins over 400-700 nm.
+  // The spectral hemisphere: RGB plus four bins over the model's whole range, 300-830 nm, or over
+  // --spectral-range; the EXR says which.
   columba::Image hemisphere = columba::readEXR((dir_ / "bsdf_hemisphere_theta30.exr").string());
-  EXPECT_EQ(hemisphere.spectral.centres, (std::vector<float>{437.5f, 512.5f, 587.5f, 662.5f}));
+  EXPECT_EQ(hemisphere.spectral.centres, (std::vector<float>{366.25f, 498.75f, 631.25f, 763.75f}));
+  ASSERT_EQ(run("bsdf --preset dove-green --mode hemisphere --angles 30 --res 16 --spectral --bins 4 "
+                "--spectral-range 400:700 -o " +
+                (dir_ / "visible").string())
+                .status,
+            0);
+  const columba::EXRImageFile visible =
+      columba::readEXRFile((dir_ / "visible" / "bsdf_hemisphere_theta30.exr").string());
+  EXPECT_EQ(visible.image.spectral.centres, (std::vector<float>{437.5f, 512.5f, 587.5f, 662.5f}));
+  EXPECT_EQ(columba::metadataValue(visible.metadata, "Spectral channels"),
+            "4 bins of 75 nm over 400-700 nm (S0.<centre>nm)");
+  for (const char* range : {"200:700", "700:400", "400"}) {
+    CommandResult wrong = run(std::string("bsdf --mode hemisphere --spectral --spectral-range ") + range + " -o " +
+                              (dir_ / "wrong").string());
+    EXPECT_NE(wrong.status, 0) << range;
+    EXPECT_NE(
+        wrong.output.find("--spectral-range '" + std::string(range) + "': give LO:HI in nm, 300 <= LO < HI <= 830"),
+        std::string::npos)
+        << wrong.output;
+    EXPECT_FALSE(fs::exists(dir_ / "wrong")) << range;
+  }
   // Parameter mistakes get short messages naming the option.
   CommandResult bad = run("bsdf --H 0 --mode specular -o " + dir_.string());
   EXPECT_NE(bad.status, 0);
@@ -668,6 +689,31 @@ TEST_F(CliTest, BsdfRefusesIndicesBeyondAnyMaterialAndSaysWhatHasNoEffect) {
 // Emitted light that would overflow the image's float sums is refused where the scene gives it;
 // a render whose pixels are not all finite all the same fails and writes nothing (an emitter of
 // 1e37 wrote an all-NaN EXR with status 0).
+// --spectral's bins cover the whole range the film renders unless --spectral-range narrows it,
+// and the EXR says which (they stopped at 400-700 nm while the renderer draws 360-830).
+TEST_F(CliTest, SpectralBinsCoverTheRenderedRangeOrTheOneAskedFor) {
+  const std::string scene = write("tiny.xml", kTinyScene);
+  const std::string out = (dir_ / "s.exr").string();
+  CommandResult r = run("render " + scene + " --spectral --bins 4 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  columba::EXRImageFile file = columba::readEXRFile(out);
+  EXPECT_EQ(file.image.spectral.centres, (std::vector<float>{418.75f, 536.25f, 653.75f, 771.25f}));
+  EXPECT_NE(columba::metadataValue(file.metadata, "Spectral channels").find("4 bins of 117.5 nm over 360-830 nm"),
+            std::string::npos);
+  r = run("render " + scene + " --spectral --bins 3 --spectral-range 400:700 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(columba::readEXR(out).spectral.centres, (std::vector<float>{450.0f, 550.0f, 650.0f}));
+  r = run("render " + scene + " --spectral --spectral-range 300:700 -o " + (dir_ / "uv.exr").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--spectral-range 300-700 nm is not a range within the 360-830 nm this film renders"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "uv.exr"));
+  r = run("render " + scene + " --spectral-range 400:700 -o " + (dir_ / "alone.exr").string());
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--spectral-range requires --spectral"), std::string::npos) << r.output;
+}
+
 TEST_F(CliTest, ARenderNeverWritesANonFinitePixel) {
   const std::string scene = write("bright.xml", kTinyScene);
   const std::string out = (dir_ / "bright.exr").string();
