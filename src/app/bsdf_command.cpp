@@ -21,6 +21,7 @@
 #include "plot/line_plot.h"
 #include "scene/xml_values.h"
 #include "vision/colour_distance.h"
+#include "vision/colour_summary.h"
 #include "vision/observer_table.h"
 
 namespace columba {
@@ -277,6 +278,7 @@ void measureSpecular(const BarbuleLobeSource& model, const BSDFOptions& o, const
                                       "their sum, relative to a white diffuse standard (dimensionless)");
   float peak = 0.0f;
   std::vector<std::vector<float>> totals;  // per light angle
+  std::vector<std::string> summaries;      // the rows of pavo's summary variables
   fmt::print("specular reflectance factor (pi f in the mirror direction), light azimuth {:g} deg\n", o.phiDegrees);
   fmt::print("light theta (deg)  total peaks (nm)   R peaks (nm)   TRT peaks (nm)   max total\n");
   for (size_t a = 0; a < o.angles.size(); ++a) {
@@ -300,14 +302,31 @@ void measureSpecular(const BarbuleLobeSource& model, const BSDFOptions& o, const
                        trtPeaks = peakWavelengths(lambdas, s.trt);
     fmt::print("{:17g}  {:<18} {:<14} {:<16} {:.4f}\n", o.angles[a], fmt::format("{}", fmt::join(totalPeaks, " ")),
                fmt::format("{}", fmt::join(rPeaks, " ")), fmt::format("{}", fmt::join(trtPeaks, " ")), largest);
+    const ColourSummary summary = colourSummary(lambdas, total),
+                        visible = colourSummary(lambdas, total, 400.0f, 700.0f);
+    summaries.push_back(fmt::format("{:17g}  {:<8.2f} {:<8.3f} {:<8g} {:g}", o.angles[a], summary.B1, summary.S8,
+                                    summary.H1, visible.H1));
     record["specular"].push_back({{"light_theta_deg", o.angles[a]},
                                   {"total_peaks_nm", totalPeaks},
                                   {"R_peaks_nm", rPeaks},
                                   {"TRT_peaks_nm", trtPeaks},
-                                  {"max_total", largest}});
+                                  {"max_total", largest},
+                                  {"visible_peak_nm", visible.H1},
+                                  {"pavo_summary",
+                                   {{"range_nm", {300, 700}},
+                                    {"B1", summary.B1},
+                                    {"B2", summary.B2},
+                                    {"S8", summary.S8},
+                                    {"H1_nm", summary.H1}}}});
     plot.series.push_back(std::move(sum));
     plot.series.push_back(std::move(r));
   }
+  // Every local maximum above is an interference order; the colour's summary is pavo's.
+  fmt::print(
+      "colour summary of the total, pavo's summary.rspec over 300-700 nm (Montgomerie 2006): B1 the sum at 1 nm, S8 "
+      "(max - min) / mean, H1 the wavelength of the maximum; and the maximum over 400-700 nm\n"
+      "light theta (deg)  B1       S8       H1 (nm)  400-700 nm peak (nm)\n{}\n",
+      fmt::join(summaries, "\n"));
   plot.yMax = std::max(0.05f, peak * 1.1f);
   writePlot(dir / "bsdf_specular.png", plot, written);
   writeTable(dir / "bsdf_specular.csv", table, written);

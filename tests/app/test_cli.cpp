@@ -10,6 +10,8 @@
 #include <iterator>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "io/image.h"
 #include "support/cli_test_support.h"
 #include "vision/observer.h"
@@ -768,6 +770,29 @@ TEST_F(CliTest, BsdfWritesSpecularSpectraInPavosLayoutAndTheirConeCatches) {
   ASSERT_EQ(full[0].back(), "total_theta30");
   EXPECT_EQ(full[1].back(), pavo[1].back());
   EXPECT_EQ(full[401].back(), pavo[401].back());
+  // pavo's summary variables of each column, recomputed here from the pavo file as summary.rspec
+  // would: B1 the sum, S8 (max - min) / mean, H1 the first wavelength of the maximum; and the
+  // maximum over 400-700 nm, which for the green barbule at 0 degrees is the order at 404 nm.
+  std::stringstream json;
+  json << std::ifstream(dir_ / "bsdf.json").rdbuf();
+  const nlohmann::json record = nlohmann::json::parse(json.str());
+  for (size_t column = 1; column <= 2; ++column) {
+    double sum = 0.0, largest = -1.0, smallest = 1e30, hue = 0.0, visiblePeak = 0.0, visibleLargest = -1.0;
+    for (size_t row = 1; row < pavo.size(); ++row) {
+      const double wl = std::stod(pavo[row][0]), v = std::stod(pavo[row][column]);
+      sum += v;
+      if (v > largest) largest = v, hue = wl;
+      smallest = std::min(smallest, v);
+      if (wl >= 400.0 && v > visibleLargest) visibleLargest = v, visiblePeak = wl;
+    }
+    const nlohmann::json& entry = record["specular"][column - 1];
+    EXPECT_NEAR(entry["pavo_summary"]["B1"].get<double>(), sum, 1e-3 * sum);
+    EXPECT_NEAR(entry["pavo_summary"]["S8"].get<double>(), (largest - smallest) / (sum / 401.0), 1e-3);
+    EXPECT_EQ(entry["pavo_summary"]["H1_nm"].get<double>(), hue);
+    EXPECT_EQ(entry["visible_peak_nm"].get<double>(), visiblePeak);
+  }
+  EXPECT_EQ(record["specular"][0]["visible_peak_nm"].get<double>(), 404.0);
+  EXPECT_NE(r.output.find("colour summary of the total, pavo's summary.rspec over 300-700 nm"), std::string::npos);
   // Cone catches: relative catches sum to 1, the first angle is 0 JND from itself and the second is not.
   const auto catches = csvRows(dir_ / "bsdf_specular_catches.csv");
   ASSERT_EQ(catches.size(), 3u);
