@@ -38,6 +38,7 @@ class BarbuleArmsBSDF : public BSDF, public BarbuleLobeSource {
   void noteValuesGivenByShape(const ShapePointValues& given) const override;
   // The arms' flat faces above p = 3, as barbulebsdf's (docs/model.md, "Which estimators converge").
   bool hasSingularValues() const override { return film_.profileExponent > 3.0f; }
+  bool followsSurfaceAxis() const override { return true; }
 
   const ArmedCrossSection& geometry() const { return geometry_; }
   // The film's parameters, with the cross-section's b, profile exponent, mu and the spacing H it

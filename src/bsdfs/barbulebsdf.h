@@ -94,6 +94,7 @@ class BarbuleBSDF : public BSDF {
   void noteValuesGivenByShape(const ShapePointValues& given) const override;
   // A superellipse's flat faces above p = 3 (docs/model.md, "Which estimators converge").
   bool hasSingularValues() const override { return model_.parameters().profileExponent > 3.0f; }
+  bool followsSurfaceAxis() const override { return true; }
 
  private:
   // The model at the point: the cross-section with the point's own b, mu and H where textures or

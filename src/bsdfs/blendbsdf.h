@@ -21,6 +21,7 @@ class BlendBSDF : public BSDF {
   bool hasPassThrough() const override { return first_->hasPassThrough() || second_->hasPassThrough(); }
   bool isDeltaOnly() const override { return first_->isDeltaOnly() && second_->isDeltaOnly(); }
   bool hasSingularValues() const override { return first_->hasSingularValues() || second_->hasSingularValues(); }
+  bool followsSurfaceAxis() const override { return first_->followsSurfaceAxis() || second_->followsSurfaceAxis(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override {
     first_->noteValuesGivenByShape(given);
     second_->noteValuesGivenByShape(given);

@@ -153,6 +153,10 @@ class BSDF : public Object {
   // faces make its normal distribution singular): estimators that only evaluate it, without
   // sampling it, have an infinite variance (docs/model.md, "Which estimators converge").
   virtual bool hasSingularValues() const { return false; }
+  // True when the BSDF's values turn with the shading frame's first axis about the normal (a
+  // barbule's axis): a shape whose surface gives no such direction (a mesh without uvs) then
+  // chooses one, and says so.
+  virtual bool followsSurfaceAxis() const { return false; }
 };
 
 inline float cosTheta(const Vec3& w) { return w.z; }

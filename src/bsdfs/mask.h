@@ -21,6 +21,7 @@ class MaskBSDF : public BSDF {
   bool hasPassThrough() const override { return true; }
   bool isDeltaOnly() const override { return nested_->isDeltaOnly(); }
   bool hasSingularValues() const override { return nested_->hasSingularValues(); }
+  bool followsSurfaceAxis() const override { return nested_->followsSurfaceAxis(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override { nested_->noteValuesGivenByShape(given); }
   bool samplesAllItScatters() const override { return nested_->samplesAllItScatters(); }
 

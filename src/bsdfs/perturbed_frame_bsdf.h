@@ -20,6 +20,7 @@ class PerturbedFrameBSDF : public BSDF {
   bool hasPassThrough() const final { return nested_->hasPassThrough(); }
   bool isDeltaOnly() const final { return nested_->isDeltaOnly(); }
   bool hasSingularValues() const final { return nested_->hasSingularValues(); }
+  bool followsSurfaceAxis() const final { return nested_->followsSurfaceAxis(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const final { nested_->noteValuesGivenByShape(given); }
   bool samplesAllItScatters() const final { return nested_->samplesAllItScatters(); }
 

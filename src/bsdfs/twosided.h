@@ -20,6 +20,7 @@ class TwoSidedBSDF : public BSDF {
   bool hasPassThrough() const override { return front_->hasPassThrough() || back_->hasPassThrough(); }
   bool isDeltaOnly() const override { return front_->isDeltaOnly() && back_->isDeltaOnly(); }
   bool hasSingularValues() const override { return front_->hasSingularValues() || back_->hasSingularValues(); }
+  bool followsSurfaceAxis() const override { return front_->followsSurfaceAxis() || back_->followsSurfaceAxis(); }
   void noteValuesGivenByShape(const ShapePointValues& given) const override {
     front_->noteValuesGivenByShape(given);
     back_->noteValuesGivenByShape(given);

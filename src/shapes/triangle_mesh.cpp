@@ -6,6 +6,7 @@
 /*! parameters mesh
 | parameter | type | default | meaning | Mitsuba 3 |
 | face_normals | boolean | false | flat shading with each triangle's own normal, ignoring the file's normals; a mesh without normals is otherwise shaded with smooth vertex normals, each face weighted by its angle at the vertex | same |
+| tangent_axis | vector | (0, 1, 0) | on a mesh without uvs, the direction that stands in for dp/du (in the mesh's own space, placed by `to_world`), projected onto the surface at each point: the shading frame's x. Barbules (`barbulebsdf`, `barbulearms`) run along its y, n × x, across this direction. With uvs, dp/du gives x, as in Mitsuba (a tangent_axis then warns that it has no effect); a barbule BSDF on a mesh with neither warns that the default was chosen | Columba's own |
 | flip_normals | boolean | false | turns the normals (and the side an area emitter lights) around. The front side is the side of the vertex normals where the mesh has them (a triangle wound against its vertex normals is shaded, lit and bounds media by them), else that from which the triangle's vertices run counter-clockwise | same |
 */
 /*! plugin shape cube
@@ -30,8 +31,14 @@ uses: mesh, media
 namespace columba {
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals,
-                           const SourceLocation& where)
+                           const SourceLocation& where, const std::optional<Vec3>& surfaceAxis)
     : mesh_(std::move(mesh)), flip_(flipNormals) {
+  // One direction for the whole mesh, projected at each point, so that the frame turns smoothly
+  // with the surface (each triangle's first edge made a sphere of barbules patchy).
+  const Vec3 axis = toWorld.vector(surfaceAxis.value_or(Vec3(0, 1, 0)));
+  if (!(length(axis) > 0.0f) || !isFinite(axis))
+    throw InputError(where, "tangent_axis must be a finite, non-zero direction");
+  surfaceAxis_ = normalize(axis);
   if (mesh_.indices.empty() || mesh_.indices.size() % 3 != 0) throw InputError(where, "the mesh has no triangles");
   for (uint32_t i : mesh_.indices)
     if (i >= mesh_.positions.size())
@@ -67,7 +74,8 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNor
   if (!mesh_.attributes.empty()) mesh_.attributes.setTriangles(mesh_.indices);
   faceFrames_.resize(primitiveCount());
   for (size_t t = 0; t < faceFrames_.size(); ++t)
-    faceFrames_[t] = Frame::fromNormalAndS(faceNormal(t), positionDerivatives(t).first);
+    faceFrames_[t] =
+        Frame::fromNormalAndS(faceNormal(t), mesh_.uvs.empty() ? surfaceAxis_ : positionDerivatives(t).first);
 }
 
 unsigned TriangleMesh::addToEmbree(RTCDevice device, RTCScene scene) const {
@@ -126,9 +134,10 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const HitRecord& hi
   const std::optional<Vec3> ns = vertexNormal(size_t(hit.primID), b1, b2);
   si.ng = geometricNormal(size_t(hit.primID), ns);
   si.shading = face;
-  // dp/du lies in the face's plane, so the face frame's s has its direction. A vanishing
-  // interpolated normal (computed normals that cancel) leaves the face frame.
-  if (ns) si.shading = Frame::fromNormalAndS(*ns, face.s);
+  // dp/du lies in the face's plane, so the face frame's s has its direction; without uvs the
+  // mesh's axis is projected at the point itself. A vanishing interpolated normal (computed
+  // normals that cancel) leaves the face frame.
+  if (ns) si.shading = Frame::fromNormalAndS(*ns, mesh_.uvs.empty() ? surfaceAxis_ : face.s);
   const TexturePoint where = texturePointAt(hit.primID, b1, b2);
   si.uv = where.uv;
   si.meshAttributes = where.mesh;
@@ -181,9 +190,18 @@ void attachMaterial(const Properties& props, Shape& shape) {
 std::shared_ptr<Object> finishMeshShape(const Properties& props, MeshData mesh, const Transform& toWorld,
                                         bool fileFaceNormals) {
   bool faceNormals = props.getBool("face_normals", false) || fileFaceNormals;
+  const std::optional<Vec3> axis =
+      props.has("tangent_axis") ? std::optional<Vec3>(props.getVector("tangent_axis", Vec3(0, 1, 0))) : std::nullopt;
   auto shape = std::make_shared<TriangleMesh>(std::move(mesh), toWorld, faceNormals,
-                                              props.getBool("flip_normals", false), props.location);
+                                              props.getBool("flip_normals", false), props.location, axis);
   attachMaterial(props, *shape);
+  if (!shape->hasUVs() && !axis && shape->bsdf && shape->bsdf->followsSurfaceAxis())
+    warn(props.location,
+         "the mesh has no uvs, so the direction its barbules run across (the shading frame's x, which dp/du gives "
+         "elsewhere) is the mesh's own y axis projected onto the surface, a choice of Columba's, undefined where the "
+         "surface faces along y: give the mesh uvs, or <vector name=\"tangent_axis\"> to choose it");
+  if (axis && shape->hasUVs())
+    warn(props.locationOf("tangent_axis"), "tangent_axis has no effect: the mesh has uvs, whose dp/du gives the axis");
   return shape;
 }
 

@@ -25,13 +25,16 @@ class TriangleMesh : public Shape {
   // Transforms `mesh` by `toWorld`; `faceNormals` ignores vertex normals, and without it a mesh
   // without normals gets smooth ones (angleWeightedVertexNormals); `flipNormals` turns the front
   // side around. Throws InputError (at `where`) for degenerate or invalid input.
-  TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals,
-               const SourceLocation& where);
+  // `surfaceAxis` (in the mesh's own space; default its y axis) is the direction the shading
+  // frame's first axis follows on a mesh without uvs, projected onto the surface at each point.
+  TriangleMesh(MeshData mesh, const Transform& toWorld, bool faceNormals, bool flipNormals, const SourceLocation& where,
+               const std::optional<Vec3>& surfaceAxis = std::nullopt);
   unsigned addToEmbree(RTCDevice device, RTCScene scene) const override;
   SurfaceInteraction interaction(const Ray& ray, const HitRecord& hit) const override;
   float surfaceArea() const override { return area_; }
   PositionSample samplePosition(Vec2 u, bool withTexturePoint) const override;
   size_t primitiveCount() const override { return mesh_.indices.size() / 3; }
+  bool hasUVs() const { return !mesh_.uvs.empty(); }
 
  private:
   Vec3 faceNormal(size_t tri) const;
@@ -51,6 +54,7 @@ class TriangleMesh : public Shape {
   TexturePoint texturePointAt(size_t tri, float b1, float b2) const;
   MeshData mesh_;
   bool flip_;
+  Vec3 surfaceAxis_;  // world space, unit: the first axis's direction where there are no uvs
   float area_ = 0.0f;
   Distribution1D triangleByArea_;
   // Per triangle: the face normal (front side) and dp/du, the shading frame without vertex normals.

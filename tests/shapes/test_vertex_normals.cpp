@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <utility>
 
 #include "builtin/builtin_plugins.h"
+#include "core/warning_listener.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "shapes/vertex_normals.h"
@@ -131,8 +135,9 @@ std::string sphereObj(bool outward) {
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < segments; ++j) {
       // Seen from outside, (i, j) -> (i + 1, j) -> (i + 1, j + 1) runs counter-clockwise.
-      if (i > 0) face(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
-      if (i < rings - 1) face(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
+      // The rows at the poles are fans: their other triangle would have two vertices at the pole.
+      if (i < rings - 1) face(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1));
+      if (i > 0) face(vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1));
     }
   return text;
 }
@@ -170,6 +175,52 @@ TEST_F(MeshWithoutNormals, AMeshWoundAgainstItsVertexNormalsIsShadedByThem) {
   const SurfaceInteraction si = hitFromAbove("<shape type='obj'><string name='filename' value='in.obj'/></shape>");
   EXPECT_GT(si.ng.z, 0.9f);
   EXPECT_GT(dot(si.ng, si.shading.n), 0.99f);
+}
+
+// On a mesh without uvs the shading frame's first axis (a barbule's axis) is one direction of the
+// mesh projected at each point, so it turns smoothly over the surface; each triangle's first edge
+// made a sphere of barbules faceted and patchy. The default is the mesh's y axis, with a warning
+// where a barbule BSDF depends on it; `tangent_axis` chooses another.
+TEST_F(MeshWithoutNormals, AMeshWithoutUVsGivesItsBarbulesASmoothAxis) {
+  write("sphere.obj", sphereObj(true));
+  std::vector<std::string> warnings;
+  setWarningListener([&](const std::string& text) { warnings.push_back(text); });
+  struct StopListening {
+    ~StopListening() { setWarningListener(nullptr); }
+  } stop;
+  auto load = [&](const std::string& shape) {
+    ParsedScene parsed = loadSceneString("<scene version='3.0.0'>" + shape + "</scene>", "scene.xml", dir_.string(), {},
+                                         builtinPlugins());
+    return std::make_unique<Scene>(parsed, SourceLocation{"scene.xml", 0});
+  };
+  const auto plain = load(
+      "<shape type='obj'><string name='filename' value='sphere.obj'/>"
+      "<bsdf type='barbulebsdf'/></shape>");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("the mesh has no uvs, so the direction its barbules run across"), std::string::npos)
+      << warnings[0];
+  // Rays down onto the sphere a little apart cross many triangles: the axis turns slowly, and is
+  // y projected onto the surface.
+  float largestTurn = 0.0f;
+  std::optional<Vec3> previous;
+  for (int i = 0; i <= 40; ++i) {
+    const float x = -0.4f + 0.02f * float(i);
+    const auto hit = plain->intersect(Ray{Vec3(x, 0.3f, 3.0f), Vec3(0, 0, -1)});
+    ASSERT_TRUE(hit.has_value());
+    const Vec3 n = hit->shading.n, s = hit->shading.s;
+    expectNear(s, normalize(Vec3(0, 1, 0) - n * n.y), 1e-5f);
+    if (previous) largestTurn = std::max(largestTurn, std::acos(std::min(1.0f, dot(*previous, s))));
+    previous = s;
+  }
+  EXPECT_LT(largestTurn, 0.02f);  // 0.02 apart on a unit sphere: the surface turns by about as much
+  warnings.clear();
+  const auto along = load(
+      "<shape type='obj'><string name='filename' value='sphere.obj'/>"
+      "<vector name='tangent_axis' x='1' y='0' z='0'/><bsdf type='barbulebsdf'/></shape>");
+  EXPECT_TRUE(warnings.empty());
+  const auto top = along->intersect(Ray{Vec3(0.01f, 0.02f, 3.0f), Vec3(0, 0, -1)});
+  ASSERT_TRUE(top.has_value());
+  EXPECT_GT(top->shading.s.x, 0.99f);
 }
 
 }  // namespace
